@@ -1,0 +1,89 @@
+#include "common/ConnectorError.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace connectors {
+
+std::string formatValue(double value)
+{
+    char buffer[32];
+    for (int precision = 6; precision <= 17; ++precision) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
+        if (std::isnan(value) || std::strtod(buffer, nullptr) == value) {
+            break;
+        }
+    }
+    return buffer;
+}
+
+ParameterError::ParameterError(const std::string& law, const std::string& name,
+                               double value, const std::string& unit,
+                               const std::string& allowed)
+    : ConnectorError(law + ": parameter " + name + " = " + formatValue(value)
+                     + " " + unit + " is out of range (allowed: " + allowed + ")")
+{
+}
+
+InputError::InputError(const std::string& law, const std::string& name,
+                       double value)
+    : ConnectorError(law + ": input " + name + " = " + formatValue(value)
+                     + " is not finite")
+{
+}
+
+void requireNonNegative(const std::string& law, const std::string& name,
+                        double value, const std::string& unit)
+{
+    if (!(std::isfinite(value) && value >= 0.0)) {
+        throw ParameterError(law, name, value, unit, "finite and >= 0");
+    }
+}
+
+void requireFinite(const std::string& law, const std::string& name,
+                   const Vector3& value, const std::string& unit)
+{
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(value[i])) {
+            throw ParameterError(law, name + "[" + std::to_string(i + 1) + "]",
+                                 value[i], unit, "finite");
+        }
+    }
+}
+
+namespace {
+
+void checkVector(const std::string& law, const std::string& name,
+                 const Vector3& value)
+{
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(value[i])) {
+            throw InputError(law, name + "[" + std::to_string(i + 1) + "]",
+                             value[i]);
+        }
+    }
+}
+
+} // namespace
+
+void requireFiniteInputs(const std::string& law, const std::string& body,
+                         const BodyKinematics& kinematics)
+{
+    checkVector(law, body + ".r", kinematics.p_WBo_W);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (!std::isfinite(kinematics.R_WB(i, j))) {
+                throw InputError(law,
+                                 body + ".R[" + std::to_string(i + 1) + ","
+                                     + std::to_string(j + 1) + "]",
+                                 kinematics.R_WB(i, j));
+            }
+        }
+    }
+    checkVector(law, body + ".v", kinematics.v_WBo_W);
+    checkVector(law, body + ".omega", kinematics.w_WB_W);
+}
+
+} // namespace connectors
