@@ -1,0 +1,161 @@
+// fmuImport: load an FMI 2.0 co-simulation FMU and drive its instances.
+//
+// Public interface, C++11 (it is included by OpenFOAM code built with
+// -std=c++11); the implementation is C++17. Every failure throws
+// fmuImport::Error with a message naming the FMU file and the variable,
+// function or archive entry involved.
+#ifndef FMUIMPORT_FMUIMPORT_HPP
+#define FMUIMPORT_FMUIMPORT_HPP
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fmuImport {
+
+class Error : public std::runtime_error
+{
+public:
+    using std::runtime_error::runtime_error;
+};
+
+enum class Causality { parameter, calculatedParameter, input, output, local, independent };
+enum class Variability { constant, fixed, tunable, discrete, continuous };
+enum class Type { Real, Integer, Boolean, String, Enumeration };
+
+// One <ScalarVariable> of modelDescription.xml.
+struct Variable
+{
+    std::string name;
+    unsigned int valueReference = 0;
+    Type type = Type::Real;
+    Causality causality = Causality::local;
+    Variability variability = Variability::continuous;
+    std::string unit;         // Real only; empty when not declared
+    std::string description;
+    bool hasStart = false;
+    double start = 0;         // numeric start (Real, Integer, Enumeration, Boolean as 0/1)
+    std::string startString;  // start exactly as written in the XML
+};
+
+struct ModelDescription
+{
+    std::string fmiVersion, modelName, guid, modelIdentifier, description, generationTool;
+    bool canHandleVariableCommunicationStepSize = false;
+    bool canGetAndSetFMUstate = false;
+    bool canSerializeFMUstate = false;
+    bool providesDirectionalDerivative = false;
+    bool hasDefaultExperiment = false;
+    double startTime = 0, stopTime = 0, stepSize = 0;  // <DefaultExperiment>, 0 when not given
+    std::vector<Variable> variables;                   // in the order of the XML
+};
+
+// Receives the FMU's log messages, formatted; status is an fmi2Status value
+// (0 OK, 1 Warning, 2 Discard, 3 Error, 4 Fatal, 5 Pending).
+using Logger = std::function<void(const std::string& instanceName, int status, const std::string& category,
+                                  const std::string& message)>;
+
+// An unpacked and loaded .fmu. Unpacks into a private temporary directory,
+// parses and checks modelDescription.xml (fmiVersion 2.0, <CoSimulation>),
+// loads binaries/linux64/<modelIdentifier>.so and resolves every fmi2
+// function. The directory is removed on failure and when the FMU and every
+// Instance made from it are gone (instances keep the binary loaded).
+class Fmu
+{
+public:
+    explicit Fmu(const std::string& fmuPath);
+    ~Fmu();
+    Fmu(Fmu&&) noexcept;
+    Fmu& operator=(Fmu&&) noexcept;
+    Fmu(const Fmu&) = delete;
+    Fmu& operator=(const Fmu&) = delete;
+
+    const std::string& path() const;
+    const ModelDescription& modelDescription() const;
+    bool hasVariable(const std::string& name) const;
+    const Variable& variable(const std::string& name) const;
+    std::string resourceLocation() const;  // file:// URI of the unpacked resources folder
+    std::string unpackDirectory() const;   // the temporary directory the FMU is unpacked in
+
+    struct Impl;
+
+private:
+    friend class Instance;
+    std::shared_ptr<Impl> impl_;
+};
+
+// One co-simulation fmi2Component. Every fmi2 call is checked: fmi2Error,
+// fmi2Fatal, fmi2Discard or fmi2Pending throw Error naming the FMU, the
+// instance and the function, with the last error the FMU logged appended;
+// fmi2Warning is reported to the logger and the call goes on.
+class Instance
+{
+public:
+    // The FMU's log messages go to logger, or to stderr when it is empty.
+    Instance(const Fmu& fmu, const std::string& instanceName, Logger logger = Logger(), bool loggingOn = false);
+    ~Instance();
+    Instance(Instance&&) noexcept;
+    Instance& operator=(Instance&&) noexcept;
+    Instance(const Instance&) = delete;
+    Instance& operator=(const Instance&) = delete;
+
+    const std::string& name() const;
+
+    void setupExperiment(double startTime, bool stopTimeDefined = false, double stopTime = 0);
+    void enterInitializationMode();
+    void exitInitializationMode();
+    void terminate();
+    void reset();
+
+    void setReal(const std::vector<unsigned int>& vrs, const std::vector<double>& values);
+    std::vector<double> getReal(const std::vector<unsigned int>& vrs);
+    void setInteger(const std::vector<unsigned int>& vrs, const std::vector<int>& values);
+    std::vector<int> getInteger(const std::vector<unsigned int>& vrs);
+    void setBoolean(const std::vector<unsigned int>& vrs, const std::vector<bool>& values);
+    std::vector<bool> getBoolean(const std::vector<unsigned int>& vrs);
+    void setString(const std::vector<unsigned int>& vrs, const std::vector<std::string>& values);
+    std::vector<std::string> getString(const std::vector<unsigned int>& vrs);
+
+    // Advances from currentTime to currentTime + stepSize; fmi2Discard throws.
+    void doStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint = false);
+
+    struct Impl;
+
+    // A saved FMU state, freed with fmi2FreeFMUstate when destroyed; it keeps
+    // its instance's fmi2Component alive.
+    class State
+    {
+    public:
+        State();
+        ~State();
+        State(State&&) noexcept;
+        State& operator=(State&&) noexcept;
+        State(const State&) = delete;
+        State& operator=(const State&) = delete;
+        bool valid() const;
+
+    private:
+        friend class Instance;
+        std::shared_ptr<Impl> owner_;
+        void* state_;
+        double time_;  // communication point when saved; NaN after deserializeState
+    };
+
+    State getState();
+    void setState(const State& state);  // restores time() too, when the state carries it
+    std::vector<char> serializeState(const State& state);
+    State deserializeState(const std::vector<char>& bytes);
+
+    // Current communication point: the start time, then currentTime +
+    // stepSize of the last successful doStep.
+    double time() const;
+
+private:
+    std::shared_ptr<Impl> impl_;
+};
+
+}  // namespace fmuImport
+
+#endif

@@ -1,0 +1,30 @@
+// What an Fmu and its instances share: the unpacked files, the description
+// and the loaded library. Members are destroyed in reverse order, so the
+// library is closed before the directory is removed.
+#ifndef FMUIMPORT_FMUIMPL_HPP
+#define FMUIMPORT_FMUIMPL_HPP
+
+#include "Library.hpp"
+#include "TempDir.hpp"
+#include "fmuImport/fmuImport.hpp"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace fmuImport {
+
+struct Fmu::Impl
+{
+    std::string path;
+    TempDir directory;
+    ModelDescription description;
+    std::map<std::string, std::size_t> index;  // variable name -> position in description.variables
+    std::unique_ptr<Library> library;
+
+    explicit Impl(const std::string& fmuPath);
+};
+
+}  // namespace fmuImport
+
+#endif

@@ -1,0 +1,176 @@
+// Loading FMUs: the description of the first-order lag fixture, and one
+// broken archive per failure the importer must name.
+#include "zipFixtures.hpp"
+
+#include "fmuImport/fmuImport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace {
+
+using fixtures::fmuPath;
+
+// Loads path expecting Error; the message must name the file and contain
+// every fragment; no unpacked files may stay behind.
+void expectLoadError(const std::string& path, const std::vector<std::string>& fragments)
+{
+    fixtures::PrivateTmpDir tmp;
+    try
+    {
+        fmuImport::Fmu fmu(path);
+        ADD_FAILURE() << "loading " << path << " did not throw";
+    }
+    catch (const fmuImport::Error& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("'" + path + "'"), std::string::npos) << message;
+        for (const std::string& fragment : fragments)
+            EXPECT_NE(message.find(fragment), std::string::npos) << "missing '" << fragment << "' in: " << message;
+    }
+    EXPECT_TRUE(tmp.contents().empty()) << "the importer left files in TMPDIR";
+}
+
+TEST(FmuLoad, ReadsTheModelDescription)
+{
+    const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
+    const fmuImport::ModelDescription& md = fmu.modelDescription();
+    EXPECT_EQ(md.fmiVersion, "2.0");
+    EXPECT_EQ(md.modelName, "firstOrderLag");
+    EXPECT_EQ(md.modelIdentifier, "firstOrderLag");
+    EXPECT_EQ(md.guid, "{6f1c2a7e-4b1d-4c55-9a0e-lag000000001}");
+    EXPECT_EQ(md.generationTool, "foamFmiConnectors test fixtures");
+    EXPECT_TRUE(md.canHandleVariableCommunicationStepSize);
+    EXPECT_TRUE(md.canGetAndSetFMUstate);
+    EXPECT_TRUE(md.canSerializeFMUstate);
+    EXPECT_FALSE(md.providesDirectionalDerivative);
+    ASSERT_TRUE(md.hasDefaultExperiment);
+    EXPECT_EQ(md.startTime, 0.0);
+    EXPECT_EQ(md.stopTime, 3.0);
+    EXPECT_EQ(md.stepSize, 0.01);
+    ASSERT_EQ(md.variables.size(), 7u);
+    EXPECT_EQ(md.variables[2].name, "u");
+}
+
+TEST(FmuLoad, LooksUpVariablesByName)
+{
+    const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
+    const fmuImport::Variable& T = fmu.variable("timeConstant");
+    EXPECT_EQ(T.valueReference, 0u);
+    EXPECT_EQ(T.type, fmuImport::Type::Real);
+    EXPECT_EQ(T.causality, fmuImport::Causality::parameter);
+    EXPECT_EQ(T.variability, fmuImport::Variability::fixed);
+    EXPECT_EQ(T.unit, "s");
+    EXPECT_EQ(T.description, "time constant T");
+    EXPECT_TRUE(T.hasStart);
+    EXPECT_EQ(T.start, 1.0);
+
+    const fmuImport::Variable& y = fmu.variable("y");
+    EXPECT_EQ(y.causality, fmuImport::Causality::output);
+    EXPECT_FALSE(y.hasStart);
+
+    const fmuImport::Variable& hold = fmu.variable("hold");
+    EXPECT_EQ(hold.type, fmuImport::Type::Boolean);
+    EXPECT_EQ(hold.variability, fmuImport::Variability::discrete);
+    EXPECT_EQ(hold.start, 0.0);
+    EXPECT_EQ(hold.startString, "false");
+
+    EXPECT_EQ(fmu.variable("label").startString, "lag");
+    EXPECT_EQ(fmu.variable("stepCount").type, fmuImport::Type::Integer);
+
+    EXPECT_TRUE(fmu.hasVariable("u"));
+    EXPECT_FALSE(fmu.hasVariable("A.F[1]"));
+    try
+    {
+        fmu.variable("A.F[1]");
+        ADD_FAILURE() << "no Error for an unknown variable";
+    }
+    catch (const fmuImport::Error& e)
+    {
+        EXPECT_EQ(std::string(e.what()), "FMU '" + fmuPath("firstOrderLag") + "' has no variable 'A.F[1]'");
+    }
+}
+
+TEST(FmuLoad, ResourceLocationIsAFileUriInTheUnpackDirectory)
+{
+    const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
+    EXPECT_EQ(fmu.resourceLocation(), "file://" + fmu.unpackDirectory() + "/resources");
+}
+
+TEST(FmuLoad, RemovesItsDirectoryWhenDestroyed)
+{
+    fixtures::PrivateTmpDir tmp;
+    std::string directory;
+    {
+        const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
+        directory = fmu.unpackDirectory();
+        EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(directory) / "modelDescription.xml"));
+        EXPECT_EQ(std::filesystem::path(directory).parent_path(), tmp.path());
+    }
+    EXPECT_FALSE(std::filesystem::exists(directory));
+    EXPECT_TRUE(tmp.contents().empty());
+}
+
+TEST(FmuLoad, MovedFmuKeepsItsFiles)
+{
+    fmuImport::Fmu first(fmuPath("firstOrderLag"));
+    const std::string directory = first.unpackDirectory();
+    fmuImport::Fmu second(std::move(first));
+    EXPECT_TRUE(std::filesystem::exists(directory));
+    EXPECT_EQ(second.modelDescription().modelIdentifier, "firstOrderLag");
+}
+
+TEST(FmuLoadError, MissingFile) { expectLoadError(fmuPath("doesNotExist"), {"does not exist"}); }
+
+TEST(FmuLoadError, NotAZip) { expectLoadError(fmuPath("notAZip"), {"cannot be opened as a zip archive"}); }
+
+TEST(FmuLoadError, NoModelDescription)
+{
+    expectLoadError(fmuPath("noModelDescription"), {"has no modelDescription.xml"});
+}
+
+TEST(FmuLoadError, NotWellFormedXml) { expectLoadError(fmuPath("badXml"), {"not well-formed XML"}); }
+
+TEST(FmuLoadError, WrongFmiVersion)
+{
+    expectLoadError(fmuPath("wrongFmiVersion"), {"fmiVersion is '1.0'", "only FMI 2.0"});
+}
+
+TEST(FmuLoadError, ModelExchangeOnly)
+{
+    expectLoadError(fmuPath("modelExchangeOnly"), {"no <CoSimulation> element"});
+}
+
+TEST(FmuLoadError, BinaryMissing)
+{
+    expectLoadError(fmuPath("binaryMissing"), {"has no binary binaries/linux64/firstOrderLag.so"});
+}
+
+TEST(FmuLoadError, MissingFmi2Function)
+{
+    expectLoadError(fmuPath("missingSymbol"), {"does not export fmi2GetStringStatus"});
+}
+
+TEST(FmuLoadError, EntryWithParentComponent)
+{
+    const std::string path = fmuPath("hostileParent");
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"resources/../../escaped.txt", "x", false}});
+    expectLoadError(path, {"archive entry 'resources/../../escaped.txt' has a '..' component"});
+}
+
+TEST(FmuLoadError, EntryWithAbsolutePath)
+{
+    const std::string path = fmuPath("hostileAbsolute");
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"/tmp/escaped.txt", "x", false}});
+    expectLoadError(path, {"archive entry '/tmp/escaped.txt' has an absolute path"});
+}
+
+TEST(FmuLoadError, SymbolicLinkEntry)
+{
+    const std::string path = fmuPath("hostileSymlink");
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"resources/passwd", "/etc/passwd", true}});
+    expectLoadError(path, {"archive entry 'resources/passwd' is a symbolic link"});
+}
+
+}  // namespace
