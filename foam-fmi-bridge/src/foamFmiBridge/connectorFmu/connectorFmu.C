@@ -1,0 +1,257 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "connectorFmu.H"
+#include "error.H"
+#include "messageStream.H"
+
+// * * * * * * * * * * * * * * * * * Kinematics  * * * * * * * * * * * * * * //
+
+Foam::connectorFmu::kinematics Foam::connectorFmu::kinematics::world()
+{
+    return kinematics{Zero, tensor::I, Zero, Zero};
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::string Foam::connectorFmu::where() const
+{
+    return "FMU " + file_ + " of restraint " + restraintName_ + ": ";
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::connectorFmu::connectorFmu
+(
+    const fileName& file,
+    const word& restraintName,
+    const dictionary& restraintDict,
+    const dictionary& parameters,
+    const scalar startTime
+)
+:
+    file_(file),
+    restraintName_(restraintName),
+    canRollback_(false),
+    initialised_(false),
+    stepStartTime_(startTime),
+    stepEndTime_(startTime - 1),
+    warnedNoRollback_(false)
+{
+    file_.expand();
+
+    try
+    {
+        fmu_.reset(new fmuImport::Fmu(file_));
+
+        const fmuImport::ModelDescription& md = fmu_->modelDescription();
+        canRollback_ = md.canGetAndSetFMUstate;
+
+        if (!md.canHandleVariableCommunicationStepSize)
+        {
+            FatalIOErrorInFunction(restraintDict)
+                << where() << "the FMU cannot handle a variable step size"
+                << " (canHandleVariableCommunicationStepSize is false)"
+                << exit(FatalIOError);
+        }
+
+        lookupVariables();
+
+        const word instanceName(restraintName_);
+        instance_.reset
+        (
+            new fmuImport::Instance
+            (
+                *fmu_,
+                instanceName,
+                [instanceName]
+                (
+                    const std::string&,
+                    int status,
+                    const std::string& category,
+                    const std::string& message
+                )
+                {
+                    // Errors reach the user through the exception that
+                    // follows them; warnings and information are logged
+                    if (status == 1)
+                    {
+                        WarningInFunction
+                            << "connector " << instanceName << " ("
+                            << category.c_str() << "): " << message.c_str()
+                            << endl;
+                    }
+                    else if (status == 0)
+                    {
+                        Info<< "connector " << instanceName << ": "
+                            << message.c_str() << endl;
+                    }
+                }
+            )
+        );
+
+        instance_->setupExperiment(startTime);
+        instance_->enterInitializationMode();
+        setParameters(parameters);
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalIOErrorInFunction(restraintDict)
+            << "restraint " << restraintName_ << ": " << err.what()
+            << exit(FatalIOError);
+    }
+
+    if (!canRollback_)
+    {
+        WarningInFunction
+            << where() << "the FMU cannot get and set its state: it is"
+            << " stepped once per time step, and repeated solves within a"
+            << " step only update its inputs" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::connectorFmu::~connectorFmu()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::connectorFmu::evaluate
+(
+    const scalar t,
+    const scalar deltaT,
+    const kinematics& A,
+    const kinematics& B
+)
+{
+    try
+    {
+        const bool newStep = (deltaT > 0 && t != stepEndTime_);
+
+        if (newStep && initialised_ && stepEndTime_ >= stepStartTime_)
+        {
+            // The previous step is complete: its end is the new start
+            stepStartTime_ = stepEndTime_;
+        }
+        if (newStep && initialised_ && canRollback_)
+        {
+            stepStartState_ = instance_->getState();
+        }
+
+        setInputs(A_, A);
+        if (declaresBodyB())
+        {
+            setInputs(B_, B);
+        }
+
+        if (!initialised_)
+        {
+            instance_->exitInitializationMode();
+            initialised_ = true;
+            if (newStep && canRollback_)
+            {
+                stepStartState_ = instance_->getState();
+            }
+        }
+
+        if (deltaT > 0)
+        {
+            if (newStep)
+            {
+                stepEndTime_ = t;
+                instance_->doStep(stepStartTime_, t - stepStartTime_);
+            }
+            else if (canRollback_)
+            {
+                instance_->setState(stepStartState_);
+                setInputs(A_, A);
+                if (declaresBodyB())
+                {
+                    setInputs(B_, B);
+                }
+                instance_->doStep(stepStartTime_, t - stepStartTime_);
+            }
+            else if (!warnedNoRollback_)
+            {
+                warnedNoRollback_ = true;
+                WarningInFunction
+                    << where() << "repeated solve at t = " << t
+                    << " without rollback: the FMU is not stepped again"
+                    << endl;
+            }
+        }
+
+        readOutputs();
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalErrorInFunction
+            << "restraint " << restraintName_ << " at t = " << t << ": "
+            << err.what() << exit(FatalError);
+    }
+}
+
+
+bool Foam::connectorFmu::canSerialize() const
+{
+    return fmu_->modelDescription().canSerializeFMUstate && canRollback_;
+}
+
+
+std::vector<char> Foam::connectorFmu::serialize(scalar& time) const
+{
+    time = stepEndTime_ >= stepStartTime_ ? stepEndTime_ : stepStartTime_;
+
+    try
+    {
+        return instance_->serializeState(instance_->getState());
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalErrorInFunction
+            << "restraint " << restraintName_ << ": " << err.what()
+            << exit(FatalError);
+    }
+    return std::vector<char>();
+}
+
+
+void Foam::connectorFmu::deserialize
+(
+    const std::vector<char>& bytes,
+    const scalar time
+)
+{
+    try
+    {
+        if (!initialised_)
+        {
+            instance_->exitInitializationMode();
+            initialised_ = true;
+        }
+        instance_->setState(instance_->deserializeState(bytes));
+        stepStartTime_ = time;
+        stepEndTime_ = time - 1;
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalErrorInFunction
+            << "restraint " << restraintName_ << ": cannot restore the"
+            << " state written at t = " << time << ": " << err.what()
+            << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,340 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Description
+    Variable handling of connectorFmu: lookup of the interface vocabulary,
+    parameters, inputs and outputs.
+
+\*---------------------------------------------------------------------------*/
+
+#include "connectorFmu.H"
+#include "error.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+std::string causalityName(const fmuImport::Causality c)
+{
+    switch (c)
+    {
+        case fmuImport::Causality::parameter: return "parameter";
+        case fmuImport::Causality::calculatedParameter:
+            return "calculatedParameter";
+        case fmuImport::Causality::input: return "input";
+        case fmuImport::Causality::output: return "output";
+        case fmuImport::Causality::local: return "local";
+        case fmuImport::Causality::independent: return "independent";
+    }
+    return "unknown";
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+std::vector<unsigned int> Foam::connectorFmu::vectorRefs
+(
+    const std::string& name,
+    const label n,
+    const std::string& causality
+) const
+{
+    std::vector<unsigned int> refs;
+
+    const bool matrix = (n == 9);
+    const label nRows = matrix ? 3 : n;
+    const label nCols = matrix ? 3 : 1;
+
+    for (label i = 1; i <= nRows; ++i)
+    {
+        for (label j = 1; j <= nCols; ++j)
+        {
+            const std::string element =
+                name + "[" + std::to_string(i)
+              + (matrix ? "," + std::to_string(j) : std::string()) + "]";
+
+            if (!fmu_->hasVariable(element))
+            {
+                if (refs.empty())
+                {
+                    return refs;
+                }
+                FatalErrorInFunction
+                    << where() << "declares " << refs.size()
+                    << " elements of " << name << " but not " << element
+                    << exit(FatalError);
+            }
+
+            const fmuImport::Variable& var = fmu_->variable(element);
+
+            if
+            (
+                var.type != fmuImport::Type::Real
+             || causalityName(var.causality) != causality
+            )
+            {
+                FatalErrorInFunction
+                    << where() << "variable " << element
+                    << " must be a Real " << causality
+                    << ", it is declared with causality "
+                    << causalityName(var.causality)
+                    << exit(FatalError);
+            }
+
+            refs.push_back(var.valueReference);
+        }
+    }
+
+    return refs;
+}
+
+
+void Foam::connectorFmu::lookupVariables()
+{
+    auto lookupBody = [this](const std::string& body, bodyVariables& vars)
+    {
+        vars.r = vectorRefs(body + ".r", 3, "input");
+        vars.R = vectorRefs(body + ".R", 9, "input");
+        vars.v = vectorRefs(body + ".v", 3, "input");
+        vars.omega = vectorRefs(body + ".omega", 3, "input");
+        vars.F = vectorRefs(body + ".F", 3, "output");
+        vars.M = vectorRefs(body + ".M", 3, "output");
+    };
+
+    lookupBody("A", A_);
+    lookupBody("B", B_);
+
+    // Required: the A inputs and loads; for a two-body connector the same
+    // for B (docs/connector-fmu-interface.md)
+    auto require = [this]
+    (
+        const std::vector<unsigned int>& refs,
+        const char* name,
+        const char* role
+    )
+    {
+        if (refs.empty())
+        {
+            FatalErrorInFunction
+                << where() << "the connector interface requires the "
+                << role << " " << name << " but the FMU does not declare it"
+                << exit(FatalError);
+        }
+    };
+
+    require(A_.r, "A.r[1..3]", "input");
+    require(A_.R, "A.R[1..3,1..3]", "input");
+    require(A_.F, "A.F[1..3]", "output");
+    require(A_.M, "A.M[1..3]", "output");
+
+    if (declaresBodyB())
+    {
+        require(B_.R, "B.R[1..3,1..3]", "input");
+        require(B_.F, "B.F[1..3]", "output");
+        require(B_.M, "B.M[1..3]", "output");
+    }
+
+    for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
+    {
+        if
+        (
+            var.causality == fmuImport::Causality::output
+         && var.type == fmuImport::Type::Real
+        )
+        {
+            outputNames_.append(word(var.name, false));
+            outputRefs_.push_back(var.valueReference);
+        }
+    }
+    outputs_.setSize(outputNames_.size(), Zero);
+
+    // Positions of the loads among the outputs
+    auto positions = [this](const std::vector<unsigned int>& refs)
+    {
+        std::vector<label> pos;
+        for (const unsigned int ref : refs)
+        {
+            pos.push_back
+            (
+                std::find(outputRefs_.begin(), outputRefs_.end(), ref)
+              - outputRefs_.begin()
+            );
+        }
+        return pos;
+    };
+
+    for (bodyVariables* vars : {&A_, &B_})
+    {
+        vars->Fout = positions(vars->F);
+        vars->Mout = positions(vars->M);
+    }
+}
+
+
+void Foam::connectorFmu::setParameters(const dictionary& parameters)
+{
+    for (const entry& e : parameters)
+    {
+        const std::string key(e.keyword());
+
+        // A scalar, or a vector/tensor given as a list for key[1..n]
+        if (fmu_->hasVariable(key))
+        {
+            const fmuImport::Variable& var = fmu_->variable(key);
+            if (var.causality != fmuImport::Causality::parameter)
+            {
+                FatalIOErrorInFunction(parameters)
+                    << where() << "entry '" << key << "' names a variable"
+                    << " of causality " << causalityName(var.causality)
+                    << "; only parameters can be set here"
+                    << exit(FatalIOError);
+            }
+
+            const scalar value = parameters.get<scalar>(e.keyword());
+            switch (var.type)
+            {
+                case fmuImport::Type::Real:
+                    instance_->setReal({var.valueReference}, {value});
+                    break;
+                case fmuImport::Type::Integer:
+                case fmuImport::Type::Enumeration:
+                    instance_->setInteger
+                    (
+                        {var.valueReference},
+                        {static_cast<int>(value)}
+                    );
+                    break;
+                case fmuImport::Type::Boolean:
+                    instance_->setBoolean({var.valueReference}, {value != 0});
+                    break;
+                case fmuImport::Type::String:
+                    FatalIOErrorInFunction(parameters)
+                        << where() << "string parameter '" << key
+                        << "' is not supported" << exit(FatalIOError);
+            }
+            continue;
+        }
+
+        const scalarList values(parameters.get<scalarList>(e.keyword()));
+        const std::vector<unsigned int> refs =
+            fmu_->hasVariable(key + "[1,1]")
+          ? vectorRefs(key, 9, "parameter")
+          : vectorRefs(key, values.size(), "parameter");
+
+        if (refs.empty())
+        {
+            wordList names;
+            for (const auto& var : fmu_->modelDescription().variables)
+            {
+                if (var.causality == fmuImport::Causality::parameter)
+                {
+                    names.append(word(var.name, false));
+                }
+            }
+            FatalIOErrorInFunction(parameters)
+                << where() << "parameter '" << key
+                << "' is not declared by the FMU; its parameters are "
+                << names << exit(FatalIOError);
+        }
+        if (label(refs.size()) != values.size())
+        {
+            FatalIOErrorInFunction(parameters)
+                << where() << "parameter '" << key << "' expects "
+                << refs.size() << " values, got " << values.size()
+                << exit(FatalIOError);
+        }
+        instance_->setReal(refs, std::vector<double>(values.begin(), values.end()));
+    }
+}
+
+
+void Foam::connectorFmu::setInputs
+(
+    const bodyVariables& vars,
+    const kinematics& k
+)
+{
+    std::vector<unsigned int> refs;
+    std::vector<double> values;
+
+    auto add = [&](const std::vector<unsigned int>& r, const double* v)
+    {
+        for (size_t i = 0; i < r.size(); ++i)
+        {
+            refs.push_back(r[i]);
+            values.push_back(v[i]);
+        }
+    };
+
+    // OpenFOAM's tensor stores its components row by row, as A.R[i,j] does
+    add(vars.r, k.r.cdata());
+    add(vars.R, k.R.cdata());
+    add(vars.v, k.v.cdata());
+    add(vars.omega, k.omega.cdata());
+
+    if (!refs.empty())
+    {
+        instance_->setReal(refs, values);
+    }
+}
+
+
+void Foam::connectorFmu::readOutputs()
+{
+    const std::vector<double> values = instance_->getReal(outputRefs_);
+
+    forAll(outputs_, i)
+    {
+        if (!std::isfinite(values[i]))
+        {
+            FatalErrorInFunction
+                << where() << "output " << outputNames_[i]
+                << " is not finite (" << values[i] << ") at t = "
+                << stepEndTime_ << exit(FatalError);
+        }
+        outputs_[i] = values[i];
+    }
+}
+
+
+Foam::connectorFmu::loads Foam::connectorFmu::loadsOf
+(
+    const bodyVariables& vars
+) const
+{
+    loads l{Zero, Zero};
+
+    for (size_t i = 0; i < vars.Fout.size(); ++i)
+    {
+        l.F[i] = outputs_[vars.Fout[i]];
+        l.M[i] = outputs_[vars.Mout[i]];
+    }
+
+    return l;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::connectorFmu::output
+(
+    const word& name,
+    const scalar deflt
+) const
+{
+    const label i = outputNames_.find(name);
+    return i < 0 ? deflt : outputs_[i];
+}
+
+
+// ************************************************************************* //

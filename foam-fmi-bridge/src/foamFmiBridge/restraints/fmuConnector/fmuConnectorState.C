@@ -1,0 +1,153 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fmuConnectorState.H"
+#include "Time.H"
+#include "IOstreams.H"
+
+#include <cstring>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(fmuConnectorState, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+const char* const hexDigits = "0123456789abcdef";
+
+Foam::string toHex(const std::vector<char>& bytes)
+{
+    std::string hex;
+    hex.reserve(2*bytes.size());
+    for (const char c : bytes)
+    {
+        const unsigned char u = static_cast<unsigned char>(c);
+        hex += hexDigits[u >> 4];
+        hex += hexDigits[u & 0xf];
+    }
+    return hex;
+}
+
+int hexValue(const char c)
+{
+    const char* p = std::strchr(hexDigits, c);
+    return (c && p) ? int(p - hexDigits) : -1;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fmuConnectorState::fmuConnectorState
+(
+    const word& name,
+    const objectRegistry& time,
+    connectorFmu& fmu
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            name,
+            time.time().timeName(),
+            "uniform/fmuConnectors",
+            time,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        )
+    ),
+    fmu_(fmu)
+{
+    if (headerOk())
+    {
+        readData(readStream(typeName));
+        close();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::fmuConnectorState::readData(Istream& is)
+{
+    const dictionary dict(is);
+
+    const scalar time = dict.get<scalar>("time");
+    const string hex = dict.get<string>("state");
+
+    if (hex.size() % 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'state' must hold an even number of hex digits"
+            << exit(FatalIOError);
+    }
+
+    std::vector<char> bytes(hex.size()/2);
+    for (size_t i = 0; i < bytes.size(); ++i)
+    {
+        const int hi = hexValue(hex[2*i]);
+        const int lo = hexValue(hex[2*i + 1]);
+        if (hi < 0 || lo < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'state' is not a hex string at character "
+                << 2*i << exit(FatalIOError);
+        }
+        bytes[i] = static_cast<char>(16*hi + lo);
+    }
+
+    fmu_.deserialize(bytes, time);
+
+    Info<< "Connector " << name() << ": FMU state restored at t = " << time
+        << " from " << objectPath() << endl;
+
+    return true;
+}
+
+
+bool Foam::fmuConnectorState::writeData(Ostream& os) const
+{
+    scalar time = 0;
+    const std::vector<char> bytes = fmu_.serialize(time);
+
+    os.writeEntry("fmu", fmu_.file());
+    os.writeEntry("time", time);
+    os.writeEntry("state", toHex(bytes));
+
+    return os.good();
+}
+
+
+bool Foam::fmuConnectorState::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    if (!Pstream::master() || !fmu_.canSerialize())
+    {
+        return true;
+    }
+
+    return regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
+}
+
+
+// ************************************************************************* //
