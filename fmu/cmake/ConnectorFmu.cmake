@@ -1,0 +1,68 @@
+# add_connector_fmu(NAME <modelIdentifier> SOURCES <model sources...>)
+#
+# Builds one connector FMU from a model source that defines
+# fmuExport::createModel():
+#   <name>          MODULE library <name>.so (no lib prefix, hidden
+#                   visibility; only the fmi2 functions are exported, the
+#                   static libraries linked into it stay hidden)
+#   <name>Generator writes modelDescription.xml and documentation/index.html
+#                   from the model's variable table
+#   <name>Fmu       (part of `all`) zips the staging directory
+#                   ${CMAKE_BINARY_DIR}/fmuStaging/<name>/ into
+#                   ${FOAMFMI_FMU_DIR}/<name>.fmu
+# The name is appended to the global property FOAMFMI_CONNECTOR_FMUS.
+function(add_connector_fmu)
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "NAME" "SOURCES")
+  if(NOT ARG_NAME OR NOT ARG_SOURCES)
+    message(FATAL_ERROR "add_connector_fmu: NAME and SOURCES are required")
+  endif()
+  set(name ${ARG_NAME})
+  set(staging ${CMAKE_BINARY_DIR}/fmuStaging/${name})
+  set(fmu ${FOAMFMI_FMU_DIR}/${name}.fmu)
+
+  add_library(${name}Model OBJECT ${ARG_SOURCES})
+  target_link_libraries(${name}Model PUBLIC fmuExport)
+  set_target_properties(${name}Model PROPERTIES
+    POSITION_INDEPENDENT_CODE ON
+    CXX_VISIBILITY_PRESET hidden
+    VISIBILITY_INLINES_HIDDEN ON)
+
+  add_library(${name} MODULE
+    $<TARGET_OBJECTS:${name}Model>
+    $<TARGET_OBJECTS:fmuExportEntryPoints>)
+  target_link_libraries(${name} PRIVATE fmuExport)
+  target_link_options(${name} PRIVATE
+    -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,--as-needed)
+  set_target_properties(${name} PROPERTIES
+    PREFIX ""
+    SUFFIX ".so"
+    LIBRARY_OUTPUT_DIRECTORY ${staging}/binaries/linux64
+    CXX_VISIBILITY_PRESET hidden
+    VISIBILITY_INLINES_HIDDEN ON)
+
+  add_executable(${name}Generator
+    $<TARGET_OBJECTS:${name}Model>
+    $<TARGET_OBJECTS:fmuExportGenerator>)
+  target_link_libraries(${name}Generator PRIVATE fmuExport)
+
+  add_custom_command(
+    OUTPUT ${staging}/modelDescription.xml ${staging}/documentation/index.html
+    COMMAND ${name}Generator ${staging}
+    DEPENDS ${name}Generator
+    COMMENT "Generating modelDescription.xml of ${name}")
+
+  add_custom_command(
+    OUTPUT ${fmu}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${FOAMFMI_FMU_DIR}
+    COMMAND ${CMAKE_COMMAND} -E rm -f ${fmu}
+    COMMAND ${CMAKE_COMMAND} -E tar cf ${fmu} --format=zip
+            modelDescription.xml binaries documentation
+    WORKING_DIRECTORY ${staging}
+    DEPENDS ${name}
+            ${staging}/modelDescription.xml
+            ${staging}/documentation/index.html
+    COMMENT "Packaging ${fmu}")
+  add_custom_target(${name}Fmu ALL DEPENDS ${fmu})
+
+  set_property(GLOBAL APPEND PROPERTY FOAMFMI_CONNECTOR_FMUS ${name})
+endfunction()

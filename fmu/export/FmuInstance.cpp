@@ -1,0 +1,269 @@
+#include "FmuInstance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ModelDescription.hpp"
+
+namespace fmuExport {
+
+FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
+                         const fmi2CallbackFunctions& callbacks, bool loggingOn)
+    : model_(std::move(model)),
+      instanceName_(std::move(instanceName)),
+      guid_(modelGuid(*model_)),
+      callbacks_(callbacks),
+      logCalls_(loggingOn)
+{
+    startValues();
+}
+
+void FmuInstance::log(fmi2Status status, const char* category,
+                      const std::string& message) const noexcept
+{
+    if (callbacks_.logger != nullptr) {
+        callbacks_.logger(callbacks_.componentEnvironment,
+                          instanceName_.c_str(), status, category, "%s",
+                          message.c_str());
+    }
+}
+
+void FmuInstance::logFailure(fmi2Status status, const char* function,
+                             const char* message) const noexcept
+{
+    try {
+        log(status, logCategoryError, std::string(function) + ": " + message);
+    } catch (...) {
+        log(status, logCategoryError, std::string());
+    }
+}
+
+void FmuInstance::startValues()
+{
+    const std::vector<ScalarVariable>& variables = model_->variables().variables();
+    values_.resize(variables.size());
+    for (const ScalarVariable& v : variables) {
+        values_[v.valueReference] = v.start;
+    }
+    time_ = 0.0;
+    outputsValid_ = false;
+}
+
+void FmuInstance::setDebugLogging(bool loggingOn, std::size_t nCategories,
+                                  const fmi2String categories[])
+{
+    bool calls = nCategories == 0;
+    for (std::size_t i = 0; i < nCategories; ++i) {
+        const std::string category = categories[i] ? categories[i] : "";
+        if (category == logCategoryCalls) {
+            calls = true;
+        } else if (category != logCategoryError) {
+            throw UsageError("unknown log category \"" + category
+                             + "\" (known: logStatusError, logCalls)");
+        }
+    }
+    if (calls) {
+        logCalls_ = loggingOn;
+    }
+}
+
+void FmuInstance::setupExperiment(double startTime)
+{
+    if (!std::isfinite(startTime)) {
+        throw UsageError("startTime is not finite");
+    }
+    time_ = startTime;
+}
+
+void FmuInstance::enterInitializationMode()
+{
+    state_ = initializationMode;
+}
+
+void FmuInstance::exitInitializationMode()
+{
+    model_->checkParameters(values_.data());
+    state_ = stepComplete;
+}
+
+void FmuInstance::terminate()
+{
+    state_ = terminated;
+}
+
+void FmuInstance::reset()
+{
+    startValues();
+    state_ = instantiated;
+}
+
+const std::string& FmuInstance::variableName(fmi2ValueReference vr) const
+{
+    return model_->variables().variables()[vr].name;
+}
+
+void FmuInstance::checkValueReference(fmi2ValueReference vr) const
+{
+    if (vr >= values_.size()) {
+        throw UsageError("value reference " + std::to_string(vr)
+                         + " is not a variable of "
+                         + model_->identity().modelIdentifier + " (0 to "
+                         + std::to_string(values_.size() - 1) + ")");
+    }
+}
+
+void FmuInstance::computeOutputs()
+{
+    model_->computeOutputs(values_.data());
+    outputsValid_ = true;
+}
+
+void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
+                          fmi2Real value[])
+{
+    bool needsOutputs = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        checkValueReference(vr[i]);
+        needsOutputs = needsOutputs
+                       || model_->variables().variables()[vr[i]].causality
+                              == Causality::output;
+    }
+    if (needsOutputs && !outputsValid_) {
+        computeOutputs();
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        value[i] = values_[vr[i]];
+    }
+}
+
+void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
+                          const fmi2Real value[])
+{
+    for (std::size_t i = 0; i < n; ++i) {
+        checkValueReference(vr[i]);
+        const ScalarVariable& v = model_->variables().variables()[vr[i]];
+        if (v.causality == Causality::output) {
+            throw UsageError("variable " + v.name + " (value reference "
+                             + std::to_string(vr[i])
+                             + ") is an output and cannot be set");
+        }
+        if (v.causality == Causality::parameter
+            && (state_ & (instantiated | initializationMode)) == 0) {
+            throw UsageError("parameter " + v.name + " (value reference "
+                             + std::to_string(vr[i])
+                             + ") is fixed: set it before "
+                               "fmi2ExitInitializationMode");
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        values_[vr[i]] = value[i];
+    }
+    outputsValid_ = outputsValid_ && n == 0;
+}
+
+void FmuInstance::rejectValueReferences(const char* type,
+                                        const fmi2ValueReference vr[],
+                                        std::size_t n) const
+{
+    if (n > 0) {
+        throw UsageError("value reference " + std::to_string(vr[0])
+                         + " is not a " + type + " variable: "
+                         + model_->identity().modelIdentifier
+                         + " has only Real variables");
+    }
+}
+
+void FmuInstance::doStep(double currentCommunicationPoint,
+                         double communicationStepSize)
+{
+    const double t = currentCommunicationPoint;
+    const double h = communicationStepSize;
+    if (!std::isfinite(h) || h <= 0.0) {
+        throw UsageError("communicationStepSize = " + formatDouble(h)
+                         + " must be finite and > 0");
+    }
+    if (!std::isfinite(t)
+        || std::abs(t - time_) > 1e-9 * std::max(1.0, std::abs(time_))) {
+        throw UsageError("currentCommunicationPoint = " + formatDouble(t)
+                         + " does not match the FMU time "
+                         + formatDouble(time_));
+    }
+    computeOutputs();
+    time_ = t + h;
+}
+
+SavedState& FmuInstance::ownedState(fmi2FMUstate state)
+{
+    for (const std::unique_ptr<SavedState>& s : savedStates_) {
+        if (s.get() == state) {
+            return *s;
+        }
+    }
+    throw UsageError("FMU state handle was not created by this instance or "
+                     "was already freed");
+}
+
+fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
+{
+    SavedState* target = nullptr;
+    if (reuse != nullptr) {
+        target = &ownedState(reuse);
+    } else {
+        savedStates_.push_back(std::make_unique<SavedState>());
+        target = savedStates_.back().get();
+    }
+    target->state = state_;
+    target->time = time_;
+    target->outputsValid = outputsValid_;
+    target->values = values_;
+    return target;
+}
+
+void FmuInstance::setState(fmi2FMUstate state)
+{
+    const SavedState& saved = ownedState(state);
+    values_ = saved.values;
+    time_ = saved.time;
+    outputsValid_ = saved.outputsValid;
+    state_ = saved.state;
+}
+
+void FmuInstance::freeState(fmi2FMUstate state)
+{
+    if (state == nullptr) {
+        return;
+    }
+    ownedState(state);
+    savedStates_.erase(std::find_if(
+        savedStates_.begin(), savedStates_.end(),
+        [state](const std::unique_ptr<SavedState>& s) { return s.get() == state; }));
+}
+
+std::size_t FmuInstance::serializedStateSize(fmi2FMUstate state)
+{
+    return serializedSize(ownedState(state).values.size());
+}
+
+void FmuInstance::serializeState(fmi2FMUstate state, fmi2Byte buffer[],
+                                 std::size_t size)
+{
+    if (buffer == nullptr) {
+        throw UsageError("serializedState buffer is NULL");
+    }
+    fmuExport::serializeState(ownedState(state), guid_, buffer, size);
+}
+
+fmi2FMUstate FmuInstance::deserializeState(const fmi2Byte bytes[],
+                                           std::size_t size, fmi2FMUstate reuse)
+{
+    SavedState state =
+        fmuExport::deserializeState(bytes, size, guid_, values_.size());
+    if (reuse != nullptr) {
+        ownedState(reuse) = std::move(state);
+        return reuse;
+    }
+    savedStates_.push_back(std::make_unique<SavedState>(std::move(state)));
+    return savedStates_.back().get();
+}
+
+} // namespace fmuExport

@@ -1,0 +1,122 @@
+// One FMU instance: value array, FMI 2.0 co-simulation state machine,
+// logging, saved states. Every fmi2 entry point runs its body through
+// call(), which checks the state and turns exceptions into status codes.
+#ifndef FMU_EXPORT_FMUINSTANCE_HPP
+#define FMU_EXPORT_FMUINSTANCE_HPP
+
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "FmuState.hpp"
+#include "Model.hpp"
+#include "fmi2FunctionTypes.h"
+
+namespace fmuExport {
+
+class FmuInstance {
+public:
+    FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
+                const fmi2CallbackFunctions& callbacks, bool loggingOn);
+
+    FmuInstance(const FmuInstance&) = delete;
+    FmuInstance& operator=(const FmuInstance&) = delete;
+
+    //- Runs body() if the instance is in one of the `allowed` states.
+    //  UsageError: fmi2Error, state unchanged. bad_alloc: fmi2Fatal, state
+    //  fatal. Any other exception: fmi2Error, state error. Every failure is
+    //  logged as "<function>: <message>" in category logStatusError.
+    template <class Body>
+    fmi2Status call(const char* function, unsigned allowed, Body&& body) noexcept;
+
+    //- Sends a message to the environment's logger; never throws
+    void log(fmi2Status status, const char* category,
+             const std::string& message) const noexcept;
+
+    void setDebugLogging(bool loggingOn, std::size_t nCategories,
+                         const fmi2String categories[]);
+    void setupExperiment(double startTime);
+    void enterInitializationMode();
+    void exitInitializationMode();
+    void terminate();
+    void reset();
+
+    void getReal(const fmi2ValueReference vr[], std::size_t n, fmi2Real value[]);
+    void setReal(const fmi2ValueReference vr[], std::size_t n,
+                 const fmi2Real value[]);
+    //- Integer, Boolean and String: the models declare none
+    void rejectValueReferences(const char* type, const fmi2ValueReference vr[],
+                               std::size_t n) const;
+
+    void doStep(double currentCommunicationPoint, double communicationStepSize);
+    double time() const { return time_; }
+
+    //- fmi2GetFMUstate: a new state, or `reuse` overwritten
+    fmi2FMUstate getState(fmi2FMUstate reuse);
+    void setState(fmi2FMUstate state);
+    void freeState(fmi2FMUstate state);
+    std::size_t serializedStateSize(fmi2FMUstate state);
+    void serializeState(fmi2FMUstate state, fmi2Byte buffer[], std::size_t size);
+    fmi2FMUstate deserializeState(const fmi2Byte bytes[], std::size_t size,
+                                  fmi2FMUstate reuse);
+
+private:
+    //- Logs "<function>: <message>" in category logStatusError
+    void logFailure(fmi2Status status, const char* function,
+                    const char* message) const noexcept;
+    //- The saved state behind a handle; UsageError if not one of ours
+    SavedState& ownedState(fmi2FMUstate state);
+    void startValues();
+    void checkValueReference(fmi2ValueReference vr) const;
+    void computeOutputs();
+    const std::string& variableName(fmi2ValueReference vr) const;
+
+    std::unique_ptr<Model> model_;
+    std::string instanceName_;
+    std::string guid_;
+    fmi2CallbackFunctions callbacks_;
+    bool logCalls_;
+    ModelState state_ = instantiated;
+    double time_ = 0.0;
+    bool outputsValid_ = false;
+    std::vector<double> values_;
+    std::vector<std::unique_ptr<SavedState>> savedStates_;
+};
+
+template <class Body>
+fmi2Status FmuInstance::call(const char* function, unsigned allowed,
+                             Body&& body) noexcept
+{
+    try {
+        if (logCalls_) {
+            log(fmi2OK, "logCalls", function);
+        }
+        if ((state_ & allowed) == 0) {
+            throw UsageError(std::string("not allowed in state ")
+                             + stateName(state_) + " (allowed in "
+                             + stateNames(allowed) + ")");
+        }
+        body();
+        return fmi2OK;
+    } catch (const UsageError& e) {
+        logFailure(fmi2Error, function, e.what());
+        return fmi2Error;
+    } catch (const std::bad_alloc&) {
+        state_ = fatal;
+        logFailure(fmi2Fatal, function, "out of memory");
+        return fmi2Fatal;
+    } catch (const std::exception& e) {
+        state_ = error;
+        logFailure(fmi2Error, function, e.what());
+        return fmi2Error;
+    } catch (...) {
+        state_ = error;
+        logFailure(fmi2Error, function, "unknown exception");
+        return fmi2Error;
+    }
+}
+
+} // namespace fmuExport
+
+#endif

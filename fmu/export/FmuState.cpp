@@ -1,0 +1,132 @@
+#include "FmuState.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace fmuExport {
+
+namespace {
+
+constexpr char magic[8] = {'F', 'O', 'A', 'M', 'F', 'M', 'I', '\0'};
+constexpr std::uint32_t formatVersion = 1;
+constexpr unsigned restorableStates =
+    instantiated | initializationMode | stepComplete | terminated;
+
+struct Header {
+    char magic[8];
+    std::uint32_t version;
+    std::uint32_t state;
+    char guid[48];
+    double time;
+    std::uint32_t outputsValid;
+    std::uint32_t valueCount;
+};
+static_assert(std::is_trivially_copyable_v<Header>);
+
+} // namespace
+
+const char* stateName(ModelState state)
+{
+    switch (state) {
+    case instantiated:
+        return "instantiated";
+    case initializationMode:
+        return "initializationMode";
+    case stepComplete:
+        return "stepComplete";
+    case terminated:
+        return "terminated";
+    case error:
+        return "error";
+    case fatal:
+        return "fatal";
+    }
+    return "unknown";
+}
+
+std::string stateNames(unsigned mask)
+{
+    std::string out;
+    for (unsigned bit = 1; bit <= fatal; bit <<= 1) {
+        if (mask & bit) {
+            out += (out.empty() ? "" : " or ")
+                   + std::string(stateName(ModelState(bit)));
+        }
+    }
+    return out.empty() ? "none" : out;
+}
+
+std::size_t serializedSize(std::size_t valueCount)
+{
+    return sizeof(Header) + valueCount * sizeof(double);
+}
+
+void serializeState(const SavedState& state, const std::string& guid,
+                    char* buffer, std::size_t size)
+{
+    if (size < serializedSize(state.values.size())) {
+        throw UsageError("buffer of " + std::to_string(size)
+                         + " bytes is too small, "
+                         + std::to_string(serializedSize(state.values.size()))
+                         + " bytes needed (fmi2SerializedFMUstateSize)");
+    }
+    Header header{};
+    std::memcpy(header.magic, magic, sizeof magic);
+    header.version = formatVersion;
+    header.state = state.state;
+    std::strncpy(header.guid, guid.c_str(), sizeof header.guid - 1);
+    header.time = state.time;
+    header.outputsValid = state.outputsValid ? 1 : 0;
+    header.valueCount = std::uint32_t(state.values.size());
+    std::memcpy(buffer, &header, sizeof header);
+    std::memcpy(buffer + sizeof header, state.values.data(),
+                state.values.size() * sizeof(double));
+}
+
+SavedState deserializeState(const char* bytes, std::size_t size,
+                            const std::string& guid, std::size_t valueCount)
+{
+    Header header{};
+    if (bytes == nullptr || size < sizeof header) {
+        throw UsageError("serialized state of " + std::to_string(size)
+                         + " bytes is shorter than its header ("
+                         + std::to_string(sizeof header) + " bytes)");
+    }
+    std::memcpy(&header, bytes, sizeof header);
+    if (std::memcmp(header.magic, magic, sizeof magic) != 0) {
+        throw UsageError("bytes are not a serialized state of this FMU "
+                         "(magic \"FOAMFMI\" not found)");
+    }
+    if (header.version != formatVersion) {
+        throw UsageError("serialized state has format version "
+                         + std::to_string(header.version) + ", expected "
+                         + std::to_string(formatVersion));
+    }
+    header.guid[sizeof header.guid - 1] = '\0';
+    if (guid != header.guid) {
+        throw UsageError("serialized state belongs to the FMU with GUID "
+                         + std::string(header.guid) + ", not " + guid);
+    }
+    if (header.valueCount != valueCount
+        || size != serializedSize(valueCount)) {
+        throw UsageError("serialized state has " + std::to_string(size)
+                         + " bytes, expected "
+                         + std::to_string(serializedSize(valueCount)));
+    }
+    if ((header.state & restorableStates) == 0
+        || (header.state & (header.state - 1)) != 0) {
+        throw UsageError("serialized state has an invalid instance state "
+                         + std::to_string(header.state));
+    }
+    SavedState state;
+    state.state = ModelState(header.state);
+    state.time = header.time;
+    state.outputsValid = header.outputsValid != 0;
+    state.values.resize(valueCount);
+    std::memcpy(state.values.data(), bytes + sizeof header,
+                valueCount * sizeof(double));
+    return state;
+}
+
+} // namespace fmuExport

@@ -1,0 +1,129 @@
+#include "VariableTable.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace fmuExport {
+
+std::size_t shapeSize(Shape shape)
+{
+    switch (shape) {
+    case Shape::scalar:
+        return 1;
+    case Shape::vector3:
+        return 3;
+    case Shape::matrix3:
+        return 9;
+    }
+    return 0;
+}
+
+namespace {
+
+std::string elementName(const std::string& name, Shape shape, std::size_t i)
+{
+    switch (shape) {
+    case Shape::scalar:
+        return name;
+    case Shape::vector3:
+        return name + "[" + std::to_string(i + 1) + "]";
+    case Shape::matrix3:
+        return name + "[" + std::to_string(i / 3 + 1) + ","
+               + std::to_string(i % 3 + 1) + "]";
+    }
+    return name;
+}
+
+std::string elementDescription(const std::string& description, Shape shape,
+                               std::size_t i)
+{
+    switch (shape) {
+    case Shape::scalar:
+        return description;
+    case Shape::vector3:
+        return description + ", component " + std::to_string(i + 1);
+    case Shape::matrix3:
+        return description + ", row " + std::to_string(i / 3 + 1)
+               + ", column " + std::to_string(i % 3 + 1);
+    }
+    return description;
+}
+
+} // namespace
+
+Block VariableTable::parameter(const std::string& name, Shape shape,
+                               const std::string& unit,
+                               const std::string& description,
+                               const std::vector<double>& start)
+{
+    return add(name, shape, Causality::parameter, unit, description, start, {});
+}
+
+Block VariableTable::input(const std::string& name, Shape shape,
+                           const std::string& unit,
+                           const std::string& description,
+                           const std::vector<double>& start)
+{
+    return add(name, shape, Causality::input, unit, description, start, {});
+}
+
+Block VariableTable::output(const std::string& name, Shape shape,
+                            const std::string& unit,
+                            const std::string& description,
+                            const std::vector<Block>& dependsOn)
+{
+    return add(name, shape, Causality::output, unit, description, {},
+               dependsOn);
+}
+
+Block VariableTable::add(const std::string& name, Shape shape,
+                         Causality causality, const std::string& unit,
+                         const std::string& description,
+                         const std::vector<double>& start,
+                         const std::vector<Block>& dependsOn)
+{
+    const std::size_t n = shapeSize(shape);
+    if (causality != Causality::output && start.size() != n) {
+        throw std::logic_error("variable " + name + ": " + std::to_string(n)
+                               + " start values expected, got "
+                               + std::to_string(start.size()));
+    }
+    std::vector<fmi2ValueReference> dependencies;
+    for (const Block& block : dependsOn) {
+        for (std::size_t i = 0; i < block.size; ++i) {
+            const fmi2ValueReference vr = block.first + fmi2ValueReference(i);
+            if (vr >= variables_.size()
+                || variables_[vr].causality == Causality::output) {
+                throw std::logic_error("output " + name
+                                       + " depends on a value reference that "
+                                         "is not a declared input or parameter");
+            }
+            dependencies.push_back(vr);
+        }
+    }
+    std::sort(dependencies.begin(), dependencies.end());
+    dependencies.erase(std::unique(dependencies.begin(), dependencies.end()),
+                       dependencies.end());
+
+    const Block block{fmi2ValueReference(variables_.size()), n};
+    for (std::size_t i = 0; i < n; ++i) {
+        ScalarVariable v;
+        v.name = elementName(name, shape, i);
+        v.valueReference = block.first + fmi2ValueReference(i);
+        v.causality = causality;
+        v.variability = causality == Causality::parameter
+                            ? Variability::fixed
+                            : Variability::continuous;
+        v.initial = causality == Causality::parameter ? Initial::exact
+                    : causality == Causality::output  ? Initial::calculated
+                                                      : Initial::none;
+        v.unit = unit;
+        v.description = elementDescription(description, shape, i);
+        v.start = causality == Causality::output ? 0.0 : start[i];
+        v.dependencies = dependencies;
+        variables_.push_back(v);
+    }
+    return block;
+}
+
+} // namespace fmuExport

@@ -1,0 +1,227 @@
+// The fmi2 C entry points of every connector FMU: FMU states, stepping,
+// status queries, and the functions a co-simulation FMU does not provide
+// (model exchange, directional derivatives, input interpolation), which
+// return fmi2Error with a logged reason.
+#include "EntryPoints.hpp"
+#include "fmi2Functions.h"
+
+namespace {
+
+using fmuExport::anyLiveState;
+using fmuExport::FmuInstance;
+using fmuExport::guarded;
+using fmuExport::savableState;
+using fmuExport::unsupported;
+using fmuExport::UsageError;
+
+constexpr const char* modelExchangeOnly =
+    "model exchange is not supported: this is a co-simulation FMU";
+
+FmuInstance& instance(fmi2Component c)
+{
+    return *static_cast<FmuInstance*>(c);
+}
+
+void requireNonNull(const void* pointer, const char* argument)
+{
+    if (pointer == nullptr) {
+        throw UsageError(std::string(argument) + " is NULL");
+    }
+}
+
+} // namespace
+
+extern "C" {
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate)
+{
+    return guarded(c, "fmi2GetFMUstate", savableState, [&] {
+        requireNonNull(FMUstate, "FMUstate");
+        *FMUstate = instance(c).getState(*FMUstate);
+    });
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
+{
+    return guarded(c, "fmi2SetFMUstate", anyLiveState,
+                   [&] { instance(c).setState(FMUstate); });
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate)
+{
+    return guarded(c, "fmi2FreeFMUstate", anyLiveState, [&] {
+        requireNonNull(FMUstate, "FMUstate");
+        instance(c).freeState(*FMUstate);
+        *FMUstate = nullptr;
+    });
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate,
+                                      size_t* size)
+{
+    return guarded(c, "fmi2SerializedFMUstateSize", anyLiveState, [&] {
+        requireNonNull(size, "size");
+        *size = instance(c).serializedStateSize(FMUstate);
+    });
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
+                                 fmi2Byte serializedState[], size_t size)
+{
+    return guarded(c, "fmi2SerializeFMUstate", anyLiveState, [&] {
+        instance(c).serializeState(FMUstate, serializedState, size);
+    });
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c,
+                                   const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate* FMUstate)
+{
+    return guarded(c, "fmi2DeSerializeFMUstate", anyLiveState, [&] {
+        requireNonNull(FMUstate, "FMUstate");
+        *FMUstate = instance(c).deserializeState(serializedState, size, *FMUstate);
+    });
+}
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint)
+{
+    (void)noSetFMUStatePriorToCurrentPoint;
+    return guarded(c, "fmi2DoStep", fmuExport::stepComplete, [&] {
+        instance(c).doStep(currentCommunicationPoint, communicationStepSize);
+    });
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c)
+{
+    return unsupported(c, "fmi2CancelStep",
+                       "fmi2DoStep runs synchronously and never returns "
+                       "fmi2Pending");
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind, fmi2Status*)
+{
+    return unsupported(c, "fmi2GetStatus",
+                       "fmi2DoStep runs synchronously and never returns "
+                       "fmi2Pending");
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
+                             fmi2Real* value)
+{
+    return guarded(c, "fmi2GetRealStatus", anyLiveState, [&] {
+        requireNonNull(value, "value");
+        if (s != fmi2LastSuccessfulTime) {
+            throw UsageError("only fmi2LastSuccessfulTime is available");
+        }
+        *value = instance(c).time();
+    });
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind,
+                                fmi2Integer*)
+{
+    return unsupported(c, "fmi2GetIntegerStatus",
+                       "no Integer status is defined in FMI 2.0");
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
+                                fmi2Boolean* value)
+{
+    return guarded(c, "fmi2GetBooleanStatus", anyLiveState, [&] {
+        requireNonNull(value, "value");
+        if (s != fmi2Terminated) {
+            throw UsageError("only fmi2Terminated is available");
+        }
+        *value = fmi2False;
+    });
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind,
+                               fmi2String*)
+{
+    return unsupported(c, "fmi2GetStringStatus",
+                       "fmi2DoStep runs synchronously and never returns "
+                       "fmi2Pending");
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c,
+                                       const fmi2ValueReference[], size_t,
+                                       const fmi2Integer[], const fmi2Real[])
+{
+    return unsupported(c, "fmi2SetRealInputDerivatives",
+                       "canInterpolateInputs is false");
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c,
+                                        const fmi2ValueReference[], size_t,
+                                        const fmi2Integer[], fmi2Real[])
+{
+    return unsupported(c, "fmi2GetRealOutputDerivatives",
+                       "maxOutputDerivativeOrder is 0");
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c,
+                                        const fmi2ValueReference[], size_t,
+                                        const fmi2ValueReference[], size_t,
+                                        const fmi2Real[], fmi2Real[])
+{
+    return unsupported(c, "fmi2GetDirectionalDerivative",
+                       "providesDirectionalDerivative is false");
+}
+
+fmi2Status fmi2EnterEventMode(fmi2Component c)
+{
+    return unsupported(c, "fmi2EnterEventMode", modelExchangeOnly);
+}
+
+fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo*)
+{
+    return unsupported(c, "fmi2NewDiscreteStates", modelExchangeOnly);
+}
+
+fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c)
+{
+    return unsupported(c, "fmi2EnterContinuousTimeMode", modelExchangeOnly);
+}
+
+fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean,
+                                       fmi2Boolean*, fmi2Boolean*)
+{
+    return unsupported(c, "fmi2CompletedIntegratorStep", modelExchangeOnly);
+}
+
+fmi2Status fmi2SetTime(fmi2Component c, fmi2Real)
+{
+    return unsupported(c, "fmi2SetTime", modelExchangeOnly);
+}
+
+fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real[], size_t)
+{
+    return unsupported(c, "fmi2SetContinuousStates", modelExchangeOnly);
+}
+
+fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real[], size_t)
+{
+    return unsupported(c, "fmi2GetDerivatives", modelExchangeOnly);
+}
+
+fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real[], size_t)
+{
+    return unsupported(c, "fmi2GetEventIndicators", modelExchangeOnly);
+}
+
+fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real[], size_t)
+{
+    return unsupported(c, "fmi2GetContinuousStates", modelExchangeOnly);
+}
+
+fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real[],
+                                             size_t)
+{
+    return unsupported(c, "fmi2GetNominalsOfContinuousStates",
+                       modelExchangeOnly);
+}
+
+} // extern "C"
