@@ -1,0 +1,272 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Application
+    rigidBodySim
+
+Description
+    Integrates a rigidBodyMotion model with no fluid: the bodies move under
+    gravity and their restraints (built-in ones and fmuConnector ones) only.
+    The model is the rigidBodyMotionCoeffs dictionary of
+    constant/dynamicMeshDict, so the rigid-body part of a CFD case can be run
+    on its own, or any dictionary given with -dict. Time control (startTime,
+    endTime, deltaT, writeControl) comes from system/controlDict as usual.
+
+    Each time step calls the model's solve nIter times (-nIter, default 1),
+    as the PIMPLE outer correctors of a CFD run do. At every write time the
+    rigid-body state is written to <time>/uniform/rigidBodyMotionState (the
+    file a CFD run restarts from), so a run restarts from any written time.
+
+    Output: postProcessing/rigidBodySim/<startTime>/bodies.dat with, per
+    time step and per body, the centre of mass, its velocity, the angular
+    velocity and the orientation tensor (global frame, row by row).
+
+Usage
+    rigidBodySim [-dict <file>] [-nIter <n>] [-case <dir>]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "rigidBodyMotion.H"
+#include "rigidBody.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The model dictionary: -dict <file>, or rigidBodyMotionCoeffs of
+//  constant/dynamicMeshDict
+dictionary modelDict(const argList& args, const Time& runTime)
+{
+    if (args.found("dict"))
+    {
+        const fileName file(args.get<fileName>("dict"));
+        IOobject io
+        (
+            file.name(),
+            file.path(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        return IOdictionary(io);
+    }
+
+    const IOdictionary dynamicMeshDict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    return dynamicMeshDict.subDict("rigidBodyMotionCoeffs");
+}
+
+
+//- The rigid-body state written at the start time, if there is one
+autoPtr<IOdictionary> startState(const Time& runTime)
+{
+    IOobject io
+    (
+        "rigidBodyMotionState",
+        runTime.timeName(),
+        "uniform",
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        return autoPtr<IOdictionary>(new IOdictionary(io));
+    }
+    return nullptr;
+}
+
+
+void writeHeader(OFstream& os, const RBD::rigidBodyMotion& motion)
+{
+    os  << "# Time";
+    for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
+    {
+        const word& name = motion.name(bodyID);
+        for (const char* c : {"x", "y", "z"})
+        {
+            os  << ' ' << name << ".c." << c;
+        }
+        for (const char* c : {"x", "y", "z"})
+        {
+            os  << ' ' << name << ".v." << c;
+        }
+        for (const char* c : {"x", "y", "z"})
+        {
+            os  << ' ' << name << ".omega." << c;
+        }
+        for (const char* c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
+        {
+            os  << ' ' << name << ".R." << c;
+        }
+    }
+    os  << nl;
+}
+
+
+void writeRow(OFstream& os, const scalar t, const RBD::rigidBodyMotion& motion)
+{
+    os  << t;
+    for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
+    {
+        // Centre of mass, body frame, and the body's transform
+        const vector c = motion.bodies()[bodyID].c();
+        const spatialTransform X0(motion.X0(bodyID));
+        const spatialVector vc(motion.v(bodyID, c));
+
+        const vector centre = X0.E().T() & c;
+        for (const vector& v : {centre + X0.r(), vc.l(), vc.w()})
+        {
+            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
+        }
+        const tensor R(X0.E().T());
+        for (direction i = 0; i < tensor::nComponents; ++i)
+        {
+            os  << ' ' << R[i];
+        }
+    }
+    os  << nl;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Integrate a rigidBodyMotion model without fluid"
+    );
+    argList::noParallel();
+    argList::addOption
+    (
+        "dict",
+        "file",
+        "Model dictionary (default: rigidBodyMotionCoeffs of"
+        " constant/dynamicMeshDict)"
+    );
+    argList::addOption
+    (
+        "nIter",
+        "n",
+        "Solves per time step, as PIMPLE outer correctors (default 1)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const label nIter = args.getOrDefault<label>("nIter", 1);
+    if (nIter < 1)
+    {
+        FatalErrorInFunction
+            << "-nIter must be at least 1, got " << nIter << exit(FatalError);
+    }
+
+    const dictionary dict(modelDict(args, runTime));
+    const autoPtr<IOdictionary> state(startState(runTime));
+
+    RBD::rigidBodyMotion motion
+    (
+        runTime,
+        dict,
+        state.valid() ? static_cast<const dictionary&>(*state) : dict
+    );
+
+    Info<< "Model with " << motion.nBodies() - 1 << " bodies, "
+        << motion.nDoF() << " degrees of freedom, " << nIter
+        << " solve(s) per time step" << nl << endl;
+
+    const fileName outputDir
+    (
+        runTime.path()/"postProcessing"/"rigidBodySim"/runTime.timeName()
+    );
+    mkDir(outputDir);
+    OFstream bodies(outputDir/"bodies.dat");
+    bodies.precision(17);
+    writeHeader(bodies, motion);
+    writeRow(bodies, runTime.value(), motion);
+
+    // No fluid: no joint forces and no external body forces
+    const scalarField tau(motion.nDoF(), Zero);
+    const Field<spatialVector> fx(motion.nBodies(), Zero);
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        motion.newTime();
+        for (label iter = 0; iter < nIter; ++iter)
+        {
+            motion.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
+        }
+
+        writeRow(bodies, runTime.value(), motion);
+
+        if (runTime.writeTime())
+        {
+            IOdictionary stateDict
+            (
+                IOobject
+                (
+                    "rigidBodyMotionState",
+                    runTime.timeName(),
+                    "uniform",
+                    runTime,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    false
+                )
+            );
+            motion.state().write(stateDict);
+            stateDict.regIOobject::writeObject
+            (
+                IOstream::ASCII,
+                IOstream::currentVersion,
+                IOstream::UNCOMPRESSED,
+                true
+            );
+        }
+        runTime.write();
+
+        if (motion.report())
+        {
+            for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
+            {
+                motion.status(bodyID);
+            }
+        }
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

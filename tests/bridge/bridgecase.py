@@ -1,0 +1,101 @@
+"""Build and run rigid-body cases with no fluid through rigidBodySim.
+
+Each test writes a throw-away OpenFOAM case (system/controlDict and
+constant/dynamicMeshDict) into a temporary directory, runs rigidBodySim on
+it and reads back the bodies' motion and the connectors' outputs.
+"""
+import os
+import shutil
+import subprocess
+import tempfile
+
+FOOTER = "\n// " + "*" * 73 + " //\n"
+
+
+def foam_file(object_name, body):
+    return (
+        "FoamFile\n{\n    version 2.0;\n    format ascii;\n"
+        f"    class dictionary;\n    object {object_name};\n}}\n\n"
+        + body + FOOTER
+    )
+
+
+class Case:
+    """A temporary case; removed when the test is done unless KEEP_CASES=1."""
+
+    def __init__(self, name, model, end_time, delta_t, write_interval=None):
+        self.dir = tempfile.mkdtemp(prefix=f"{name}.")
+        os.makedirs(os.path.join(self.dir, "system"))
+        os.makedirs(os.path.join(self.dir, "constant"))
+        self.set_time(0, end_time, delta_t, write_interval or end_time)
+        with open(os.path.join(self.dir, "constant", "dynamicMeshDict"), "w") as f:
+            f.write(foam_file("dynamicMeshDict", "rigidBodyMotionCoeffs\n{\n" + model + "\n}\n"))
+
+    def set_time(self, start_time, end_time, delta_t, write_interval):
+        control = (
+            "application rigidBodySim;\nlibs (\"libfoamFmiBridge.so\");\n"
+            f"startFrom startTime;\nstartTime {start_time};\n"
+            f"stopAt endTime;\nendTime {end_time};\ndeltaT {delta_t};\n"
+            "writeControl adjustable;\n"
+            f"writeInterval {write_interval};\n"
+            "purgeWrite 0;\nwriteFormat ascii;\nwritePrecision 17;\n"
+            "timePrecision 8;\nrunTimeModifiable false;\n"
+        )
+        with open(os.path.join(self.dir, "system", "controlDict"), "w") as f:
+            f.write(foam_file("controlDict", control))
+
+    def run(self, n_iter=1, expect_failure=False):
+        """Run rigidBodySim; return its log (stdout and stderr)."""
+        result = subprocess.run(
+            ["rigidBodySim", "-case", self.dir, "-nIter", str(n_iter)],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        )
+        if expect_failure:
+            if result.returncode == 0:
+                raise AssertionError(f"rigidBodySim succeeded on {self.dir}, expected a failure")
+        elif result.returncode != 0:
+            raise AssertionError(f"rigidBodySim failed on {self.dir}:\n{result.stdout[-3000:]}")
+        return result.stdout
+
+    def table(self, *path):
+        """Columns of a whitespace table whose last '#' line names them."""
+        names, rows = None, []
+        with open(os.path.join(self.dir, *path)) as f:
+            for line in f:
+                if line.startswith("#"):
+                    names = line[1:].split()
+                elif line.strip():
+                    rows.append([float(x) for x in line.split()])
+        return {name: [row[i] for row in rows] for i, name in enumerate(names)}
+
+    def bodies(self, start="0"):
+        return self.table("postProcessing", "rigidBodySim", start, "bodies.dat")
+
+    def connector(self, name, start="0"):
+        return self.table("postProcessing", "fmuConnectors", start, name + ".dat")
+
+    def cleanup(self):
+        if os.environ.get("KEEP_CASES") != "1":
+            shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def fmu_path(name):
+    path = os.path.join(os.environ["FOAMFMI_FMU_DIR"], name + ".fmu")
+    if not os.path.isfile(path):
+        raise SystemExit(f"{path} is missing: build the FMUs first (./Allwmake)")
+    return path
+
+
+def rigid_body(name, mass, inertia, origin, joint, parent="root"):
+    """A body whose frame origin is its centre of mass."""
+    return (
+        f"    {name}\n    {{\n        type rigidBody;\n        parent {parent};\n"
+        f"        mass {mass};\n        centreOfMass (0 0 0);\n"
+        f"        inertia ({inertia} 0 0 {inertia} 0 {inertia});\n"
+        f"        transform (1 0 0 0 1 0 0 0 1) ({origin[0]} {origin[1]} {origin[2]});\n"
+        f"        joint {{ type {joint}; }}\n    }}\n"
+    )
+
+
+def vec(v):
+    return "(" + " ".join(repr(float(x)) for x in v) + ")"
