@@ -21,9 +21,11 @@ Foam::connectorFmu::kinematics Foam::connectorFmu::kinematics::world()
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::string Foam::connectorFmu::where() const
+std::string Foam::connectorFmu::where() const
 {
-    return "FMU " + file_ + " of restraint " + restraintName_ + ": ";
+    return
+        "FMU " + std::string(file_) + " of restraint "
+      + std::string(restraintName_) + ": ";
 }
 
 
@@ -58,7 +60,7 @@ Foam::connectorFmu::connectorFmu
         if (!md.canHandleVariableCommunicationStepSize)
         {
             FatalIOErrorInFunction(restraintDict)
-                << where() << "the FMU cannot handle a variable step size"
+                << where().c_str() << "the FMU cannot handle a variable step size"
                 << " (canHandleVariableCommunicationStepSize is false)"
                 << exit(FatalIOError);
         }
@@ -112,7 +114,7 @@ Foam::connectorFmu::connectorFmu
     if (!canRollback_)
     {
         WarningInFunction
-            << where() << "the FMU cannot get and set its state: it is"
+            << where().c_str() << "the FMU cannot get and set its state: it is"
             << " stepped once per time step, and repeated solves within a"
             << " step only update its inputs" << endl;
     }
@@ -186,7 +188,7 @@ void Foam::connectorFmu::evaluate
             {
                 warnedNoRollback_ = true;
                 WarningInFunction
-                    << where() << "repeated solve at t = " << t
+                    << where().c_str() << "repeated solve at t = " << t
                     << " without rollback: the FMU is not stepped again"
                     << endl;
             }

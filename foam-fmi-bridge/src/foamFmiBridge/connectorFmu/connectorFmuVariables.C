@@ -70,8 +70,8 @@ std::vector<unsigned int> Foam::connectorFmu::vectorRefs
                     return refs;
                 }
                 FatalErrorInFunction
-                    << where() << "declares " << refs.size()
-                    << " elements of " << name << " but not " << element
+                    << where().c_str() << "declares " << refs.size()
+                    << " elements of " << name.c_str() << " but not " << element.c_str()
                     << exit(FatalError);
             }
 
@@ -84,7 +84,7 @@ std::vector<unsigned int> Foam::connectorFmu::vectorRefs
             )
             {
                 FatalErrorInFunction
-                    << where() << "variable " << element
+                    << where().c_str() << "variable " << element.c_str()
                     << " must be a Real " << causality
                     << ", it is declared with causality "
                     << causalityName(var.causality)
@@ -126,7 +126,7 @@ void Foam::connectorFmu::lookupVariables()
         if (refs.empty())
         {
             FatalErrorInFunction
-                << where() << "the connector interface requires the "
+                << where().c_str() << "the connector interface requires the "
                 << role << " " << name << " but the FMU does not declare it"
                 << exit(FatalError);
         }
@@ -194,7 +194,7 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
             if (var.causality != fmuImport::Causality::parameter)
             {
                 FatalIOErrorInFunction(parameters)
-                    << where() << "entry '" << key << "' names a variable"
+                    << where().c_str() << "entry '" << key.c_str() << "' names a variable"
                     << " of causality " << causalityName(var.causality)
                     << "; only parameters can be set here"
                     << exit(FatalIOError);
@@ -219,19 +219,14 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
                     break;
                 case fmuImport::Type::String:
                     FatalIOErrorInFunction(parameters)
-                        << where() << "string parameter '" << key
+                        << where().c_str() << "string parameter '" << key.c_str()
                         << "' is not supported" << exit(FatalIOError);
             }
             continue;
         }
 
-        const scalarList values(parameters.get<scalarList>(e.keyword()));
-        const std::vector<unsigned int> refs =
-            fmu_->hasVariable(key + "[1,1]")
-          ? vectorRefs(key, 9, "parameter")
-          : vectorRefs(key, values.size(), "parameter");
-
-        if (refs.empty())
+        const bool isMatrix = fmu_->hasVariable(key + "[1,1]");
+        if (!isMatrix && !fmu_->hasVariable(key + "[1]"))
         {
             wordList names;
             for (const auto& var : fmu_->modelDescription().variables)
@@ -242,14 +237,28 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
                 }
             }
             FatalIOErrorInFunction(parameters)
-                << where() << "parameter '" << key
+                << where().c_str() << "parameter '" << key.c_str()
                 << "' is not declared by the FMU; its parameters are "
                 << names << exit(FatalIOError);
         }
+
+        const scalarList values(parameters.get<scalarList>(e.keyword()));
+        label nDeclared = 9;
+        if (!isMatrix)
+        {
+            nDeclared = 0;
+            while (fmu_->hasVariable(key + "[" + std::to_string(nDeclared + 1) + "]"))
+            {
+                ++nDeclared;
+            }
+        }
+        const std::vector<unsigned int> refs =
+            vectorRefs(key, nDeclared, "parameter");
+
         if (label(refs.size()) != values.size())
         {
             FatalIOErrorInFunction(parameters)
-                << where() << "parameter '" << key << "' expects "
+                << where().c_str() << "parameter '" << key.c_str() << "' expects "
                 << refs.size() << " values, got " << values.size()
                 << exit(FatalIOError);
         }
@@ -298,7 +307,7 @@ void Foam::connectorFmu::readOutputs()
         if (!std::isfinite(values[i]))
         {
             FatalErrorInFunction
-                << where() << "output " << outputNames_[i]
+                << where().c_str() << "output " << outputNames_[i]
                 << " is not finite (" << values[i] << ") at t = "
                 << stepEndTime_ << exit(FatalError);
         }

@@ -9,6 +9,7 @@ License
 
 #include "fmuConnector.H"
 #include "rigidBodyModel.H"
+#include "jointBody.H"
 #include "Time.H"
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
@@ -225,10 +226,14 @@ bool Foam::RBD::restraints::fmuConnector::read
 
     if (!bodyBName_.empty())
     {
-        wordList bodyNames(model_.nBodies() - 1);
-        forAll(bodyNames, i)
+        // The model's bodies, without those made for composite joints
+        wordList bodyNames;
+        for (label i = 1; i < model_.nBodies(); ++i)
         {
-            bodyNames[i] = model_.name(i + 1);
+            if (!isType<jointBody>(model_.bodies()[i]))
+            {
+                bodyNames.append(model_.name(i));
+            }
         }
         if (!bodyNames.found(bodyBName_))
         {

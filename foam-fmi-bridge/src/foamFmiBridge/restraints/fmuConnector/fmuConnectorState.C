@@ -10,6 +10,7 @@ License
 #include "fmuConnectorState.H"
 #include "Time.H"
 #include "IOstreams.H"
+#include "stringList.H"
 
 #include <cstring>
 
@@ -27,6 +28,9 @@ namespace
 {
 
 const char* const hexDigits = "0123456789abcdef";
+
+//- Hex digits per line of the written state
+const std::string::size_type hexLine = 64;
 
 Foam::string toHex(const std::vector<char>& bytes)
 {
@@ -88,7 +92,12 @@ bool Foam::fmuConnectorState::readData(Istream& is)
     const dictionary dict(is);
 
     const scalar time = dict.get<scalar>("time");
-    const string hex = dict.get<string>("state");
+    // Hex digits in lines: OpenFOAM limits a string to 1024 characters
+    string hex;
+    for (const string& line : dict.get<List<string>>("state"))
+    {
+        hex += line;
+    }
 
     if (hex.size() % 2)
     {
@@ -127,7 +136,13 @@ bool Foam::fmuConnectorState::writeData(Ostream& os) const
 
     os.writeEntry("fmu", fmu_.file());
     os.writeEntry("time", time);
-    os.writeEntry("state", toHex(bytes));
+    const string hex(toHex(bytes));
+    List<string> lines((hex.size() + hexLine - 1)/hexLine);
+    forAll(lines, i)
+    {
+        lines[i] = hex.substr(i*hexLine, hexLine);
+    }
+    os.writeEntry("state", lines);
 
     return os.good();
 }

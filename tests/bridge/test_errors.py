@@ -1,0 +1,76 @@
+"""Bad input to the fmuConnector restraint ends in a clear fatal error.
+
+Each variant of a one-body model with one mistake must make rigidBodySim
+fail, with a message naming the restraint and what is wrong, and must
+leave no time directory behind.
+"""
+import os
+import sys
+import tempfile
+
+from bridgecase import Case, fmu_path, rigid_body, vec
+
+
+def model(fmu, parameters, body_b=""):
+    return f"""
+    solver {{ type symplectic; }}
+    bodies
+    {{
+{rigid_body("hull", 2, 0.1, (0, 0, 0), "floating")}
+    }}
+    restraints
+    {{
+        mooring
+        {{
+            type fmuConnector;
+            body hull;
+            {body_b}
+            fmu "{fmu}";
+            parameters {{ {parameters} }}
+        }}
+    }}
+"""
+
+
+GOOD = f"stiffness 10; damping 0; restLength 1; A.p {vec((0, 0, 0))}; B.p {vec((0, 0, 2))};"
+
+
+def main():
+    spring = fmu_path("linearSpring")
+    not_a_zip = tempfile.NamedTemporaryFile(suffix=".fmu", delete=False)
+    not_a_zip.write(b"this is not a zip archive\n")
+    not_a_zip.close()
+
+    cases = {
+        "missing fmu file": (model("/nonexistent/spring.fmu", GOOD), ["mooring", "/nonexistent/spring.fmu"]),
+        "not a zip": (model(not_a_zip.name, GOOD), ["mooring", not_a_zip.name]),
+        "undeclared parameter": (
+            model(spring, GOOD + " stiffnes 3;"),
+            ["mooring", "stiffnes", "not declared"],
+        ),
+        "wrong vector size": (model(spring, GOOD.replace("A.p (0.0 0.0 0.0)", "A.p (1 2)")), ["A.p", "expects 3"]),
+        "unknown bodyB": (model(spring, GOOD, "bodyB barge;"), ["mooring", "barge", "hull"]),
+        "negative stiffness": (model(spring, GOOD.replace("stiffness 10", "stiffness -10")), ["mooring", "stiffness"]),
+    }
+
+    failures = 0
+    for name, (text, expected) in cases.items():
+        case = Case("errors", text, 0.1, 0.01)
+        print(f"-- {name}", flush=True)
+        log = case.run(expect_failure=True)
+        missing = [e for e in expected if e not in log]
+        written = [d for d in os.listdir(case.dir) if d not in ("system", "constant", "postProcessing")]
+        if missing or written:
+            failures += 1
+            print(f"FAIL {name}: message lacks {missing}, left {written}\n{log[-1500:]}")
+        else:
+            message = [line for line in log.splitlines() if any(e in line for e in expected)]
+            print(f"PASS {name}: {message[0].strip()[:150] if message else ''}")
+        case.cleanup()
+    os.unlink(not_a_zip.name)
+    print(f"{len(cases) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
