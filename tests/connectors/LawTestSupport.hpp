@@ -1,0 +1,95 @@
+// Helpers for the connector law tests: kinematics builders and the balance
+// checks that every two-point connector must satisfy.
+#ifndef TESTS_CONNECTORS_LAWTESTSUPPORT_HPP
+#define TESTS_CONNECTORS_LAWTESTSUPPORT_HPP
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <random>
+
+#include "common/Kinematics.hpp"
+
+namespace lawTest {
+
+using connectors::BodyKinematics;
+using connectors::ConnectorResult;
+using connectors::Matrix3;
+using connectors::Vector3;
+
+inline Matrix3 rotation(double angle, const Vector3& axis)
+{
+    return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+inline BodyKinematics body(const Vector3& r, const Matrix3& R = Matrix3::Identity(),
+                           const Vector3& v = Vector3::Zero(),
+                           const Vector3& omega = Vector3::Zero())
+{
+    BodyKinematics k;
+    k.p_WBo_W = r;
+    k.R_WB = R;
+    k.v_WBo_W = v;
+    k.w_WB_W = omega;
+    return k;
+}
+
+//- A body with random position, orientation and velocities (fixed seed)
+inline BodyKinematics randomBody(std::mt19937& rng)
+{
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    const Vector3 axis(u(rng), u(rng), u(rng));
+    return body(Vector3(u(rng), u(rng), u(rng)), rotation(u(rng), axis),
+                Vector3(u(rng), u(rng), u(rng)), Vector3(u(rng), u(rng), u(rng)));
+}
+
+//- Power delivered by the connector to both bodies [W]:
+//  f_A . v_Ao + m_A . w_A + f_B . v_Bo + m_B . w_B
+inline double powerIntoBodies(const ConnectorResult& r, const BodyKinematics& A,
+                              const BodyKinematics& B)
+{
+    return r.A.f_W.dot(A.v_WBo_W) + r.A.m_Bo_W.dot(A.w_WB_W)
+           + r.B.f_W.dot(B.v_WBo_W) + r.B.m_Bo_W.dot(B.w_WB_W);
+}
+
+//- Total moment of the loads on A and B about the global origin [N.m]
+inline Vector3 totalMomentAboutOrigin(const ConnectorResult& r,
+                                      const BodyKinematics& A,
+                                      const BodyKinematics& B)
+{
+    return A.p_WBo_W.cross(r.A.f_W) + r.A.m_Bo_W + B.p_WBo_W.cross(r.B.f_W)
+           + r.B.m_Bo_W;
+}
+
+inline void expectVectorNear(const Vector3& actual, const Vector3& expected,
+                             double tolerance)
+{
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(actual[i], expected[i], tolerance) << "component " << i;
+    }
+}
+
+inline void expectAllFinite(const ConnectorResult& r)
+{
+    EXPECT_TRUE(r.A.f_W.allFinite() && r.A.m_Bo_W.allFinite()
+                && r.B.f_W.allFinite() && r.B.m_Bo_W.allFinite());
+    EXPECT_TRUE(std::isfinite(r.length) && std::isfinite(r.lengthRate)
+                && std::isfinite(r.tension) && std::isfinite(r.potentialEnergy)
+                && std::isfinite(r.dissipatedPower));
+}
+
+//- Runs `call`, expects it to throw `Exception` with exactly `message`
+template <class Exception, class Call>
+void expectThrowWithMessage(Call&& call, const std::string& message)
+{
+    try {
+        call();
+        ADD_FAILURE() << "no exception, expected: " << message;
+    } catch (const Exception& e) {
+        EXPECT_EQ(std::string(e.what()), message);
+    }
+}
+
+} // namespace lawTest
+
+#endif
