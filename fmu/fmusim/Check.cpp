@@ -1,0 +1,164 @@
+#include "Check.hpp"
+
+#include "Args.hpp"
+#include "CheckProbes.hpp"
+#include "Errors.hpp"
+#include "Session.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+namespace fmusim {
+
+const char* checkUsage()
+{
+    return "fmusim check connector.fmu [--seed N] [--samples N] [--verbose]\n"
+           "  Validates a connector FMU against docs/connector-fmu-interface.md: required\n"
+           "  and optional variables (causality, variability, units), capabilities and\n"
+           "  parameter start values; then probes it: equal and opposite forces and zero\n"
+           "  total moment for random kinematics (--samples configurations drawn with\n"
+           "  --seed, default 20 and 1), zero load at a declared rest configuration, FMU\n"
+           "  state get/set and serialization, a repeated step after restoring the state,\n"
+           "  variable step sizes, and fmi2Error (never a non-finite output) for\n"
+           "  non-finite inputs. Prints 'PASS name', 'FAIL name: reason' or\n"
+           "  'SKIP name: reason' per check and 'N passed, M failed' at the end.\n"
+           "  --verbose prints the FMU's log messages.\n";
+}
+
+namespace {
+
+using fmuImport::Causality;
+using fmuImport::Variability;
+
+const char* causalityName(Causality c)
+{
+    static const char* const names[] = {"parameter", "calculatedParameter", "input", "output", "local", "independent"};
+    return names[static_cast<int>(c)];
+}
+
+const char* variabilityName(Variability v)
+{
+    static const char* const names[] = {"constant", "fixed", "tunable", "discrete", "continuous"};
+    return names[static_cast<int>(v)];
+}
+
+std::string joined(const std::vector<std::string>& problems)
+{
+    std::string text;
+    const std::size_t shown = std::min<std::size_t>(problems.size(), 6);
+    for (std::size_t i = 0; i < shown; ++i) text += (i ? "; " : "") + problems[i];
+    if (problems.size() > shown) text += "; and " + std::to_string(problems.size() - shown) + " more";
+    return text;
+}
+
+CheckResult verdict(const std::string& name, const std::vector<std::string>& problems)
+{
+    return problems.empty() ? CheckResult{name, CheckResult::pass, ""}
+                            : CheckResult{name, CheckResult::fail, joined(problems)};
+}
+
+// Problems of one declared component against its vocabulary entry.
+void compare(const fmuImport::Variable& v, const VocabularyEntry& e, std::vector<std::string>& problems)
+{
+    if (v.type != fmuImport::Type::Real) problems.push_back(v.name + " is not Real");
+    if (v.causality != e.causality)
+        problems.push_back(v.name + " has causality " + causalityName(v.causality) + ", expected " +
+                           causalityName(e.causality));
+    if (v.variability != e.variability)
+        problems.push_back(v.name + " has variability " + variabilityName(v.variability) + ", expected " +
+                           variabilityName(e.variability));
+}
+
+bool required(const VocabularyEntry& e, bool twoBody)
+{
+    return e.requirement == Requirement::always || (e.requirement == Requirement::twoBody && twoBody);
+}
+
+std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu, const Connector& connector)
+{
+    std::vector<std::string> missing, optional, units;
+    for (const VocabularyEntry& e : connectorVocabulary())
+    {
+        const std::vector<std::string> names = componentNames(e.base, e.shape);
+        const bool isRequired = required(e, connector.twoBody());
+        const auto declared = std::count_if(names.begin(), names.end(),
+                                            [&](const std::string& n) { return fmu.hasVariable(n); });
+        if (declared == 0 && !isRequired) continue;
+        std::vector<std::string>& problems = isRequired ? missing : optional;
+        for (const std::string& name : names)
+        {
+            if (!fmu.hasVariable(name))
+            {
+                problems.push_back(isRequired ? "missing " + name : name + " is missing while other components of " + e.base + " are declared");
+                continue;
+            }
+            const fmuImport::Variable& v = fmu.variable(name);
+            compare(v, e, problems);
+            if (std::find(e.units.begin(), e.units.end(), v.unit) == e.units.end())
+                units.push_back(name + " has unit '" + v.unit + "', expected '" + e.units.front() + "'");
+        }
+    }
+
+    std::vector<std::string> capabilities;
+    if (!fmu.modelDescription().canHandleVariableCommunicationStepSize)
+        capabilities.push_back("canHandleVariableCommunicationStepSize is not true");
+
+    std::vector<std::string> parameters;
+    for (const fmuImport::Variable& v : fmu.modelDescription().variables)
+    {
+        if (v.causality != Causality::parameter) continue;
+        if (!v.hasStart) parameters.push_back(v.name + " has no start value");
+        if (v.description.empty()) parameters.push_back(v.name + " has no description");
+    }
+
+    return {verdict("required-variables", missing), verdict("optional-variables", optional), verdict("units", units),
+            verdict("capabilities", capabilities), verdict("parameters", parameters)};
+}
+
+}  // namespace
+
+int checkCommand(const std::vector<std::string>& arguments)
+{
+    const Args args = parseArgs(arguments, {"seed", "samples"}, {"verbose"});
+    if (args.positional.size() != 1) throw UsageError("check needs exactly one FMU file");
+    ProbeOptions options;
+    if (const auto seed = args.number("seed"))
+    {
+        if (*seed < 0 || *seed != static_cast<unsigned int>(*seed)) throw UsageError("--seed must be a non-negative integer");
+        options.seed = static_cast<unsigned int>(*seed);
+    }
+    if (const auto samples = args.number("samples"))
+    {
+        if (*samples < 1 || *samples > 1e6 || *samples != static_cast<int>(*samples))
+            throw UsageError("--samples must be an integer from 1 to 1000000");
+        options.samples = static_cast<int>(*samples);
+    }
+    options.verbose = args.flag("verbose");
+
+    const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
+    const Connector connector(fmu);
+
+    int passed = 0, failed = 0;
+    auto report = [&](const CheckResult& r) {
+        if (r.outcome == CheckResult::pass)
+        {
+            ++passed;
+            std::cout << "PASS " << r.name << '\n';
+        }
+        else
+        {
+            failed += r.outcome == CheckResult::fail;
+            std::cout << (r.outcome == CheckResult::fail ? "FAIL " : "SKIP ") << r.name << ": " << r.reason << '\n';
+        }
+        std::cout.flush();
+    };
+    for (const CheckResult& r : interfaceChecks(fmu, connector)) report(r);
+    if (connector.missingRequired().empty())
+        runProbes(fmu, connector, options, report);
+    else
+        report({"probes", CheckResult::skip, "the required variables are not all declared"});
+    std::cout << passed << " passed, " << failed << " failed\n";
+    return failed ? exitCheckFailed : exitOk;
+}
+
+}  // namespace fmusim

@@ -1,0 +1,28 @@
+// The behavioural part of `fmusim check`: probes that drive instances of a
+// connector FMU with random and special kinematics.
+#ifndef FMUSIM_CHECKPROBES_HPP
+#define FMUSIM_CHECKPROBES_HPP
+
+#include "Check.hpp"
+#include "Connector.hpp"
+
+#include <functional>
+#include <random>
+
+namespace fmusim {
+
+struct ProbeOptions
+{
+    unsigned int seed = 1;
+    int samples = 20;      // random configurations
+    double stepSize = 1e-3;  // communication step of every probe [s]
+    bool verbose = false;  // print the FMU's log messages
+};
+
+// Runs every probe, handing each result to report as soon as it is known.
+void runProbes(const fmuImport::Fmu& fmu, const Connector& connector, const ProbeOptions& options,
+               const std::function<void(const CheckResult&)>& report);
+
+}  // namespace fmusim
+
+#endif

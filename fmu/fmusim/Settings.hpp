@@ -1,0 +1,44 @@
+// `name = value` settings from files (parameter files, twobody
+// configurations) and --set options, and applying them to FMU variables.
+#ifndef FMUSIM_SETTINGS_HPP
+#define FMUSIM_SETTINGS_HPP
+
+#include "fmuImport/fmuImport.hpp"
+
+#include <string>
+#include <vector>
+
+namespace fmusim {
+
+struct Setting
+{
+    std::string name;
+    std::string value;
+    std::string origin;  // "file:line", or "--set" for the command line
+    bool fromFile = false;
+};
+
+// One `name = value` per line; '#' starts a comment; blank lines are
+// skipped. FileError "file:line: problem" for a line without '=' or name.
+std::vector<Setting> readSettingsFile(const std::string& path);
+
+// Parses --set options "name=value"; UsageError otherwise.
+std::vector<Setting> parseSetOptions(const std::vector<std::string>& options);
+
+// The variable may be given a value before initialization: a parameter or
+// an input (or any tunable variable).
+bool isSettable(const fmuImport::Variable& v);
+
+// Sets each setting on the instance, converted to the variable's type.
+// Unknown or unsettable variables and values of the wrong type throw
+// FileError (settings from a file) or UsageError (from --set), naming the
+// origin.
+void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance, const std::vector<Setting>& settings);
+
+// The current values of the variables, as text for CSV output.
+std::vector<std::string> readValues(fmuImport::Instance& instance,
+                                    const std::vector<const fmuImport::Variable*>& variables);
+
+}  // namespace fmusim
+
+#endif

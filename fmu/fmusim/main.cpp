@@ -1,0 +1,104 @@
+// fmusim: run, check and couple FMI 2.0 co-simulation FMUs without CFD.
+#include "Check.hpp"
+#include "Errors.hpp"
+#include "Run.hpp"
+#include "TwoBody.hpp"
+
+#include "fmuImport/fmuImport.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const exitCodes =
+    "Exit codes:\n"
+    "  0  success\n"
+    "  1  check: at least one check failed\n"
+    "  2  usage error: unknown subcommand or option, missing or malformed value\n"
+    "  3  the FMU could not be loaded or instantiated\n"
+    "  4  bad file: input table, parameter or configuration file unreadable or\n"
+    "     malformed, or naming an unknown variable; output file not writable\n"
+    "  5  simulation error: an FMU call failed, the coupling did not converge or\n"
+    "     a body state became non-finite\n";
+
+void printHelp(std::ostream& out)
+{
+    out << "Usage: fmusim <subcommand> ... (fmusim <subcommand> --help for its options)\n\n"
+        << fmusim::runUsage() << '\n'
+        << fmusim::checkUsage() << '\n'
+        << fmusim::twoBodyUsage() << '\n'
+        << exitCodes;
+}
+
+bool wantsHelp(const std::vector<std::string>& args)
+{
+    for (const std::string& a : args)
+        if (a == "--help" || a == "-h") return true;
+    return false;
+}
+
+int dispatch(const std::string& command, const std::vector<std::string>& args)
+{
+    if (command == "run")
+    {
+        if (wantsHelp(args)) return std::cout << fmusim::runUsage() << '\n' << exitCodes, fmusim::exitOk;
+        return fmusim::runCommand(args);
+    }
+    if (command == "check")
+    {
+        if (wantsHelp(args)) return std::cout << fmusim::checkUsage() << '\n' << exitCodes, fmusim::exitOk;
+        return fmusim::checkCommand(args);
+    }
+    if (command == "twobody")
+    {
+        if (wantsHelp(args)) return std::cout << fmusim::twoBodyUsage() << '\n' << exitCodes, fmusim::exitOk;
+        return fmusim::twoBodyCommand(args);
+    }
+    throw fmusim::UsageError("unknown subcommand '" + command + "' (run, check or twobody)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
+    {
+        printHelp(argc < 2 ? std::cerr : std::cout);
+        return argc < 2 ? fmusim::exitUsage : fmusim::exitOk;
+    }
+    try
+    {
+        return dispatch(argv[1], args);
+    }
+    catch (const fmusim::UsageError& e)
+    {
+        std::cerr << "fmusim: usage error: " << e.what() << "\n(fmusim --help lists the options)\n";
+        return fmusim::exitUsage;
+    }
+    catch (const fmusim::LoadError& e)
+    {
+        std::cerr << "fmusim: cannot load the FMU: " << e.what() << '\n';
+        return fmusim::exitLoad;
+    }
+    catch (const fmusim::FileError& e)
+    {
+        std::cerr << "fmusim: bad file: " << e.what() << '\n';
+        return fmusim::exitFile;
+    }
+    catch (const fmusim::SimulationError& e)
+    {
+        std::cerr << "fmusim: simulation error: " << e.what() << '\n';
+        return fmusim::exitSimulation;
+    }
+    catch (const std::exception& e)
+    {
+        // fmuImport::Error after loading: an FMU call failed.
+        std::cerr << "fmusim: simulation error: " << e.what() << '\n';
+        return fmusim::exitSimulation;
+    }
+}
