@@ -1,0 +1,90 @@
+// Connector FMU inputs and parameters for the FMU tests, built from the
+// law library's structs so that FMU outputs can be compared with the law.
+#ifndef TESTS_FMU_CONNECTORINPUTS_HPP
+#define TESTS_FMU_CONNECTORINPUTS_HPP
+
+#include <Eigen/Geometry>
+#include <map>
+#include <string>
+
+#include "common/Kinematics.hpp"
+#include "FmuHarness.hpp"
+
+namespace fmuTest {
+
+using connectors::BodyKinematics;
+using connectors::Matrix3;
+using connectors::Vector3;
+
+inline void addVector(std::map<std::string, double>& m, const std::string& name,
+                      const Vector3& v)
+{
+    for (int i = 0; i < 3; ++i) {
+        m[name + "[" + std::to_string(i + 1) + "]"] = v[i];
+    }
+}
+
+//- FMU input values (A.r ... B.omega) for the given kinematics
+inline std::map<std::string, double> inputs(const BodyKinematics& A,
+                                            const BodyKinematics& B)
+{
+    std::map<std::string, double> m;
+    for (const auto& [prefix, k] : {std::pair<std::string, const BodyKinematics&>{"A", A},
+                                    std::pair<std::string, const BodyKinematics&>{"B", B}}) {
+        addVector(m, prefix + ".r", k.p_WBo_W);
+        addVector(m, prefix + ".v", k.v_WBo_W);
+        addVector(m, prefix + ".omega", k.w_WB_W);
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                m[prefix + ".R[" + std::to_string(i + 1) + "," + std::to_string(j + 1)
+                  + "]"] = k.R_WB(i, j);
+            }
+        }
+    }
+    return m;
+}
+
+inline BodyKinematics kinematics(const Vector3& r, double angle, const Vector3& axis,
+                                 const Vector3& v, const Vector3& omega)
+{
+    BodyKinematics k;
+    k.p_WBo_W = r;
+    k.R_WB = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    k.v_WBo_W = v;
+    k.w_WB_W = omega;
+    return k;
+}
+
+//- A generic, non-degenerate configuration: rotated, moving bodies
+inline BodyKinematics genericA()
+{
+    return kinematics(Vector3(0.2, -0.4, 1.1), 0.6, Vector3(1, -2, 0.5),
+                      Vector3(0.3, 0.1, -0.2), Vector3(0.05, -0.3, 0.2));
+}
+
+inline BodyKinematics genericB()
+{
+    return kinematics(Vector3(1.9, 0.7, 0.4), -1.3, Vector3(0.2, 1, 1),
+                      Vector3(-0.6, 0.4, 0.25), Vector3(-0.1, 0.2, 0.4));
+}
+
+//- Parameters of the FMU with non-zero, non-special values (only those
+//  the FMU declares)
+inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
+{
+    std::map<std::string, double> all = {{"stiffness", 250.0}, {"restLength", 0.7},
+                                         {"damping", 15.0}};
+    addVector(all, "A.p", Vector3(0.1, -0.2, 0.3));
+    addVector(all, "B.p", Vector3(-0.4, 0.05, 0.2));
+    std::map<std::string, double> declared;
+    for (const auto& [name, value] : all) {
+        if (fmu.vr.count(name)) {
+            declared[name] = value;
+        }
+    }
+    return declared;
+}
+
+} // namespace fmuTest
+
+#endif

@@ -1,0 +1,191 @@
+#include "FmuHarness.hpp"
+
+#include <dlfcn.h>
+#include <zip.h>
+
+#include <cstdarg>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace fmuTest {
+
+namespace {
+
+void unzip(const std::string& archive, const std::filesystem::path& target)
+{
+    int error = 0;
+    zip_t* zip = zip_open(archive.c_str(), ZIP_RDONLY, &error);
+    if (zip == nullptr) {
+        throw std::runtime_error("cannot open " + archive);
+    }
+    const zip_int64_t n = zip_get_num_entries(zip, 0);
+    for (zip_int64_t i = 0; i < n; ++i) {
+        const std::string name = zip_get_name(zip, zip_uint64_t(i), 0);
+        const std::filesystem::path path = target / name;
+        if (!name.empty() && name.back() == '/') {
+            std::filesystem::create_directories(path);
+            continue;
+        }
+        std::filesystem::create_directories(path.parent_path());
+        zip_file_t* file = zip_fopen_index(zip, zip_uint64_t(i), 0);
+        std::ofstream out(path, std::ios::binary);
+        char buffer[8192];
+        zip_int64_t got = 0;
+        while (file != nullptr && (got = zip_fread(file, buffer, sizeof buffer)) > 0) {
+            out.write(buffer, got);
+        }
+        if (file != nullptr) {
+            zip_fclose(file);
+        }
+    }
+    zip_close(zip);
+}
+
+void recordLog(fmi2ComponentEnvironment env, fmi2String, fmi2Status status,
+               fmi2String category, fmi2String format, ...)
+{
+    char buffer[2048];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_end(args);
+    static_cast<std::vector<LogRecord>*>(env)->push_back(
+        {status, category ? category : "", buffer});
+}
+
+} // namespace
+
+std::string fmuPath(const std::string& name)
+{
+    return std::string(FOAMFMI_FMU_DIR) + "/" + name + ".fmu";
+}
+
+LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
+{
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) {
+        throw std::runtime_error("mkdtemp failed");
+    }
+    directory = pattern;
+    unzip(fmuPath(name), directory);
+    const std::string xml = (directory / "modelDescription.xml").string();
+    if (!description.load_file(xml.c_str())) {
+        throw std::runtime_error("cannot parse " + xml);
+    }
+    const pugi::xml_node root = description.child("fmiModelDescription");
+    guid = root.attribute("guid").value();
+    for (const pugi::xml_node v : root.child("ModelVariables").children("ScalarVariable")) {
+        vr[v.attribute("name").value()] = v.attribute("valueReference").as_uint();
+    }
+    const std::string so = (directory / "binaries" / "linux64" / (name + ".so")).string();
+    library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (library_ == nullptr) {
+        throw std::runtime_error("dlopen " + so + ": " + dlerror());
+    }
+#define FMU_TEST_RESOLVE(function)                                             \
+    api.function = reinterpret_cast<fmi2##function##TYPE*>(                    \
+        dlsym(library_, "fmi2" #function));                                    \
+    if (api.function == nullptr) {                                             \
+        missing.push_back("fmi2" #function);                                   \
+    }
+    FMU_TEST_FMI2_FUNCTIONS(FMU_TEST_RESOLVE)
+#undef FMU_TEST_RESOLVE
+}
+
+LoadedFmu::~LoadedFmu()
+{
+    if (library_ != nullptr) {
+        dlclose(library_);
+    }
+    std::error_code ignored;
+    std::filesystem::remove_all(directory, ignored);
+}
+
+fmi2ValueReference LoadedFmu::ref(const std::string& variable) const
+{
+    const auto it = vr.find(variable);
+    if (it == vr.end()) {
+        throw std::runtime_error(name + " has no variable " + variable);
+    }
+    return it->second;
+}
+
+Instance::Instance(const LoadedFmu& fmu, const char* guid, fmi2Type type)
+    : fmu_(fmu)
+{
+    callbacks_.logger = recordLog;
+    callbacks_.allocateMemory = nullptr;
+    callbacks_.freeMemory = nullptr;
+    callbacks_.stepFinished = nullptr;
+    callbacks_.componentEnvironment = &log;
+    c = fmu.api.Instantiate("test", type, guid ? guid : fmu.guid.c_str(), "",
+                            &callbacks_, fmi2False, fmi2False);
+}
+
+Instance::~Instance()
+{
+    if (c != nullptr) {
+        fmu_.api.FreeInstance(c);
+    }
+}
+
+fmi2Status Instance::initialize(const std::map<std::string, double>& parameters)
+{
+    fmi2Status s = fmu_.api.SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
+    if (s == fmi2OK) {
+        s = fmu_.api.EnterInitializationMode(c);
+    }
+    if (s == fmi2OK) {
+        s = set(parameters);
+    }
+    return s == fmi2OK ? fmu_.api.ExitInitializationMode(c) : s;
+}
+
+fmi2Status Instance::set(const std::map<std::string, double>& values)
+{
+    std::vector<fmi2ValueReference> refs;
+    std::vector<double> v;
+    for (const auto& [name, value] : values) {
+        refs.push_back(fmu_.ref(name));
+        v.push_back(value);
+    }
+    return fmu_.api.SetReal(c, refs.data(), refs.size(), v.data());
+}
+
+fmi2Status Instance::get(const std::vector<std::string>& names,
+                         std::vector<double>& values)
+{
+    std::vector<fmi2ValueReference> refs;
+    for (const std::string& name : names) {
+        refs.push_back(fmu_.ref(name));
+    }
+    values.resize(names.size());
+    return fmu_.api.GetReal(c, refs.data(), refs.size(), values.data());
+}
+
+double Instance::get(const std::string& name)
+{
+    std::vector<double> v;
+    if (get({name}, v) != fmi2OK) {
+        throw std::runtime_error("fmi2GetReal(" + name + ") failed: " + lastMessage());
+    }
+    return v[0];
+}
+
+std::string Instance::lastMessage() const
+{
+    return log.empty() ? std::string() : log.back().message;
+}
+
+const std::vector<std::string>& connectorOutputs()
+{
+    static const std::vector<std::string> names = {
+        "A.F[1]", "A.F[2]", "A.F[3]", "A.M[1]", "A.M[2]", "A.M[3]",
+        "B.F[1]", "B.F[2]", "B.F[3]", "B.M[1]", "B.M[2]", "B.M[3]",
+        "length", "lengthRate", "tension", "potentialEnergy", "dissipatedPower"};
+    return names;
+}
+
+} // namespace fmuTest
