@@ -1,0 +1,226 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Smoke test of tutorials/coupledFloatingObjects: two floating cubes tied by
+# the linearSpring connector FMU (fmuConnector restraint, libfoamFmiBridge),
+# coarse mesh (mesh factor 0.5, 20 x 10 x 15 cells), 0.3 s. Runs the coupled
+# case in serial and on 2 processors and the uncoupled case for comparison,
+# then checks:
+#  - every run reaches its end time; each cube rotates about its fixed centre
+#    of mass and stays inside the tank;
+#  - the connector writes one row per time step with A.F = -B.F, and zero
+#    total moment about the origin (a central force between the attachments);
+#  - the spring obeys its law: tension = 100 N/m * (length - 0.2 m), and its
+#    length equals the distance between the attachment points (0.1 0 0.17)
+#    on A and (-0.1 0 0.17) on B as moved by the bodies' logged motion;
+#  - the spring limits the motion: each cube's largest pitch angle (rotation
+#    about y, the axis normal to the plane of the wave and of the spring) is
+#    at least 10 % smaller than in the uncoupled case over the same 0.3 s;
+#  - the parallel run matches the serial one (tolerance below);
+#  - the plots are written.
+# Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so and
+# build/fmus/linearSpring.fmu. Exits non-zero on the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+
+endTime=0.3
+stiffness=100
+restLength=0.2
+bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
+
+requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
+    "the bridge library (build it: ./Allwmake)"
+requireFile "$FOAMFMI_FMU_DIR/linearSpring.fmu" \
+    "the spring FMU (build it: cmake --build build)"
+
+makeWorkDir
+
+serial=$workDir/serial/coupledFloatingObjects
+uncoupled=$workDir/serial/uncoupledFloatingObjects
+parallel=$workDir/parallel/coupledFloatingObjects
+
+runTutorial uncoupledFloatingObjects "$uncoupled" -mesh-factor 0.5 \
+    -end-time $endTime -no-plot
+runTutorial coupledFloatingObjects "$serial" -mesh-factor 0.5 \
+    -end-time $endTime
+runTutorial coupledFloatingObjects "$parallel" -mesh-factor 0.5 \
+    -end-time $endTime -parallel -no-plot
+
+for c in "$uncoupled" "$serial" "$parallel"
+do
+    checkRanToEnd "$c" $endTime
+    # shellcheck disable=SC2086
+    checkBodies "$c" $bodies
+done
+
+
+# --- The connector's output --------------------------------------------------
+# columnOf FILE NAME: column of NAME in the "# Time ..." header line
+columnOf()
+{
+    sed -n '/^# *Time /{p;q}' "$1" \
+  | awk -v n="$2" '{ for (i = 2; i <= NF; i++) if ($i == n) { print i - 1; exit } }'
+}
+
+checkSpring()
+{
+    local caseDir="$1" dat nSteps cols name c
+    dat="$caseDir/postProcessing/fmuConnectors/0/spring.dat"
+    requireFile "$dat" "connector output"
+    nSteps=$(grep -c '^Time = ' "$caseDir/log.interFoam")
+
+    cols=""
+    for name in 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
+        'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' length tension
+    do
+        c=$(columnOf "$dat" "$name")
+        [ -n "$c" ] || fail "$dat: no column $name in the \"# Time ...\" header"
+        cols="$cols $c"
+    done
+
+    # Rows: one per time step, finite, A.F = -B.F, moments balance about the
+    # origin with the reference points (the fixed centres of mass), and the
+    # spring law. Tolerances: 1e-9 relative to the loads (the file has 12
+    # significant digits; the bridge adds B's loads as the FMU returns them);
+    # for the law also k times the rounding of the written length (1e-11 m).
+    awk -v cols="$cols" -v nSteps="$nSteps" -v k="$stiffness" -v L0="$restLength" '
+    function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
+    function abs(x) { return x < 0 ? -x : x }
+    BEGIN {
+        split(cols, c, " ")
+        split("-0.2 0.5 0.43", rA, " "); split("0.2 0.5 0.43", rB, " ")
+    }
+    /^#/ { next }
+    {
+        n++
+        for (i = 1; i <= NF; i++)
+            if ($i !~ /^[-+]?[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/) bad("t = " $1 ": not a finite number: " $i)
+        if (n > 1 && $1 <= tPrev) bad("t = " $1 " after t = " tPrev ": not one row per time step")
+        tPrev = $1
+        for (i = 1; i <= 3; i++)
+        {
+            FA[i] = $(c[i]); MA[i] = $(c[i + 3]); FB[i] = $(c[i + 6]); MB[i] = $(c[i + 9])
+        }
+        scale = 0
+        for (i = 1; i <= 3; i++) scale += abs(FA[i]) + abs(FB[i])
+        for (i = 1; i <= 3; i++)
+        {
+            e = abs(FA[i] + FB[i])
+            if (e > 1e-9*scale + 1e-14) bad(sprintf("t = %s: A.F[%d] = %.12g but B.F[%d] = %.12g", $1, i, FA[i], i, FB[i]))
+            if (e > worstF) worstF = e
+        }
+        # Total moment about the global origin: M + r x F summed over A and B
+        m[1] = MA[1] + rA[2]*FA[3] - rA[3]*FA[2] + MB[1] + rB[2]*FB[3] - rB[3]*FB[2]
+        m[2] = MA[2] + rA[3]*FA[1] - rA[1]*FA[3] + MB[2] + rB[3]*FB[1] - rB[1]*FB[3]
+        m[3] = MA[3] + rA[1]*FA[2] - rA[2]*FA[1] + MB[3] + rB[1]*FB[2] - rB[2]*FB[1]
+        for (i = 1; i <= 3; i++)
+        {
+            if (abs(m[i]) > 1e-9*scale + 1e-14) bad(sprintf("t = %s: total moment about the origin %.3g N.m, component %d", $1, m[i], i))
+            if (abs(m[i]) > worstM) worstM = abs(m[i])
+        }
+        L = $(c[13]); T = $(c[14])
+        e = abs(T - k*(L - L0))
+        if (e > 1e-9*abs(T) + k*1e-11) bad(sprintf("t = %s: tension %.12g N, k (length - L0) = %.12g N", $1, T, k*(L - L0)))
+        if (abs(T) > maxT) maxT = abs(T)
+    }
+    END {
+        if (failed) exit 1
+        if (n != nSteps) bad(n " rows for " nSteps " time steps")
+        if (maxT < 1e-3) bad("the spring is slack all the time: largest tension " maxT " N")
+        printf("%d rows, |A.F + B.F| <= %.2g N, |total moment| <= %.2g N.m, largest tension %.3g N\n", n, worstF, worstM, maxT)
+    }' "$dat" > "$workDir/check.out" || fail "$dat: see above"
+    pass "${caseDir#$workDir/} spring: $(cat "$workDir/check.out")"
+
+    # Length against the bodies' logged motion. The connector is evaluated
+    # inside the rigid-body solve, at the state the last outer corrector
+    # solves for; the logged state is the one it ends with. They differ by a
+    # small part of one step's motion, so the tolerance is a tenth of the
+    # largest change of length in one step (1e-6 m at the 0.3 s smoke run).
+    awk -v lengthCol="$(columnOf "$dat" length)" '
+    function abs(x) { return x < 0 ? -x : x }
+    function rotate(rx, ry, rz, p, out,    th, kx, ky, kz, c, s, d, cx, cy, cz)
+    {
+        rx *= deg; ry *= deg; rz *= deg
+        th = sqrt(rx*rx + ry*ry + rz*rz)
+        if (th < 1e-300) { out[1] = p[1]; out[2] = p[2]; out[3] = p[3]; return }
+        kx = rx/th; ky = ry/th; kz = rz/th; c = cos(th); s = sin(th)
+        d = kx*p[1] + ky*p[2] + kz*p[3]
+        cx = ky*p[3] - kz*p[2]; cy = kz*p[1] - kx*p[3]; cz = kx*p[2] - ky*p[1]
+        out[1] = p[1]*c + cx*s + kx*d*(1 - c)
+        out[2] = p[2]*c + cy*s + ky*d*(1 - c)
+        out[3] = p[3]*c + cz*s + kz*d*(1 - c)
+    }
+    BEGIN { deg = atan2(1, 1)/45; split("0.1 0 0.17", pA, " "); split("-0.1 0 0.17", pB, " ") }
+    FNR == 1 { f++ }
+    /^#/ { next }
+    f == 1 { nA++; tA[nA] = $1; for (i = 2; i <= 8; i++) A[nA, i] = $i; next }
+    f == 2 { nB++; for (i = 2; i <= 8; i++) B[nB, i] = $i; next }
+    {
+        n++
+        if (abs($1 - tA[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tA[n] > "/dev/stderr"; exit 1 }
+        rotate(A[n, 6], A[n, 7], A[n, 8], pA, qA)
+        rotate(B[n, 6], B[n, 7], B[n, 8], pB, qB)
+        dx = A[n, 2] + qA[1] - B[n, 2] - qB[1]
+        dy = A[n, 3] + qA[2] - B[n, 3] - qB[2]
+        dz = A[n, 4] + qA[3] - B[n, 4] - qB[3]
+        L[n] = $lengthCol
+        e = abs(sqrt(dx*dx + dy*dy + dz*dz) - L[n])
+        if (e > worst) { worst = e; tWorst = $1 }
+        if (n > 1 && abs(L[n] - L[n - 1]) > maxStep) maxStep = abs(L[n] - L[n - 1])
+    }
+    END {
+        if (n != nA || n != nB) { print n " connector rows, " nA " and " nB " body rows" > "/dev/stderr"; exit 1 }
+        if (worst > 0.1*maxStep) { printf("length differs from the attachment points by %.3g m at t = %s (tolerance %.3g m)\n", worst, tWorst, 0.1*maxStep) > "/dev/stderr"; exit 1 }
+        printf("length = distance between the attachment points within %.2g m (tolerance %.2g m)\n", worst, 0.1*maxStep)
+    }' "$caseDir/postProcessing/rigidBodyMotion/floatingObject1.dat" \
+       "$caseDir/postProcessing/rigidBodyMotion/floatingObject2.dat" \
+       "$dat" > "$workDir/check.out" || fail "$dat: length against the body motion"
+    pass "${caseDir#$workDir/} spring: $(cat "$workDir/check.out")"
+}
+
+checkSpring "$serial"
+checkSpring "$parallel"
+
+
+# --- The spring limits the motion --------------------------------------------
+for body in floatingObject1 floatingObject2
+do
+    coupledPitch=$(maxAbsColumn "$serial/postProcessing/rigidBodyMotion/$body.dat" 7)
+    uncoupledPitch=$(maxAbsColumn "$uncoupled/postProcessing/rigidBodyMotion/$body.dat" 7)
+    awk -v c="$coupledPitch" -v u="$uncoupledPitch" 'BEGIN { exit !(c <= 0.9*u) }' \
+        || fail "$body: largest pitch $coupledPitch deg with the spring," \
+            "$uncoupledPitch deg without: not 10 % smaller"
+    pass "$body: largest pitch $coupledPitch deg with the spring," \
+        "$uncoupledPitch deg without"
+done
+
+
+# --- Parallel against serial -------------------------------------------------
+# The decomposition changes only how the linear solvers converge (GAMG
+# agglomeration and smoothing per processor, sums in another order); the
+# discretisation is the same, and so is the time-step sequence up to
+# round-off. Differences stay near the solver tolerances: about 1e-5 of the
+# peak values in 0.4 s runs. The tolerance, 1 % of each quantity's peak over
+# the run (plus 1e-4 deg or 1e-6 N), leaves room for their growth over the
+# run, and still fails for any parallel error in the coupling: a load applied
+# on every rank, or a body's force not summed over the processors, changes
+# the motion by tens of percent.
+for body in floatingObject1 floatingObject2
+do
+    compareSeries "$serial/postProcessing/rigidBodyMotion/$body.dat" \
+        "$parallel/postProcessing/rigidBodyMotion/$body.dat" "6 7 8" 0.01 1e-4 \
+        "$body rotation, parallel against serial"
+done
+dat=postProcessing/fmuConnectors/0/spring.dat
+compareSeries "$serial/$dat" "$parallel/$dat" \
+    "$(columnOf "$serial/$dat" 'A.F[1]') $(columnOf "$serial/$dat" 'A.F[2]') $(columnOf "$serial/$dat" 'A.F[3]')" \
+    0.01 1e-6 "spring force on A, parallel against serial"
+
+
+# --- Plots -------------------------------------------------------------------
+for png in rotation displacement connector_spring
+do
+    f="$serial/plots/$png.png"
+    requireFile "$f" "plot"
+    [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
+done
+pass "plots: rotation.png, displacement.png, connector_spring.png"
