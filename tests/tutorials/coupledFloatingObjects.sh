@@ -14,7 +14,9 @@
 #    on A and (-0.1 0 0.17) on B as moved by the bodies' logged motion;
 #  - the spring limits the motion: each cube's largest pitch angle (rotation
 #    about y, the axis normal to the plane of the wave and of the spring) is
-#    at least 10 % smaller than in the uncoupled case over the same 0.3 s;
+#    at least 10 % smaller than in the uncoupled case over the same 0.3 s,
+#    and the distance between the attachment points changes at least 25 %
+#    less;
 #  - the parallel run matches the serial one (tolerance below);
 #  - the plots are written.
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so and
@@ -26,6 +28,8 @@ endTime=0.3
 stiffness=100
 restLength=0.2
 bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
+attachmentA="0.1 0 0.17"
+attachmentB="-0.1 0 0.17"
 
 requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
     "the bridge library (build it: ./Allwmake)"
@@ -135,45 +139,30 @@ checkSpring()
     # solves for; the logged state is the one it ends with. They differ by a
     # small part of one step's motion, so the tolerance is a tenth of the
     # largest change of length in one step (1e-6 m at the 0.3 s smoke run).
+    attachmentDistance \
+        "$caseDir/postProcessing/rigidBodyMotion/floatingObject1.dat" \
+        "$caseDir/postProcessing/rigidBodyMotion/floatingObject2.dat" \
+        "$attachmentA" "$attachmentB" > "$workDir/distance.dat" \
+        || fail "$caseDir: attachment points from the body motion"
     awk -v lengthCol="$(columnOf "$dat" length)" '
     function abs(x) { return x < 0 ? -x : x }
-    function rotate(rx, ry, rz, p, out,    th, kx, ky, kz, c, s, d, cx, cy, cz)
-    {
-        rx *= deg; ry *= deg; rz *= deg
-        th = sqrt(rx*rx + ry*ry + rz*rz)
-        if (th < 1e-300) { out[1] = p[1]; out[2] = p[2]; out[3] = p[3]; return }
-        kx = rx/th; ky = ry/th; kz = rz/th; c = cos(th); s = sin(th)
-        d = kx*p[1] + ky*p[2] + kz*p[3]
-        cx = ky*p[3] - kz*p[2]; cy = kz*p[1] - kx*p[3]; cz = kx*p[2] - ky*p[1]
-        out[1] = p[1]*c + cx*s + kx*d*(1 - c)
-        out[2] = p[2]*c + cy*s + ky*d*(1 - c)
-        out[3] = p[3]*c + cz*s + kz*d*(1 - c)
-    }
-    BEGIN { deg = atan2(1, 1)/45; split("0.1 0 0.17", pA, " "); split("-0.1 0 0.17", pB, " ") }
     FNR == 1 { f++ }
     /^#/ { next }
-    f == 1 { nA++; tA[nA] = $1; for (i = 2; i <= 8; i++) A[nA, i] = $i; next }
-    f == 2 { nB++; for (i = 2; i <= 8; i++) B[nB, i] = $i; next }
+    f == 1 { nD++; tD[nD] = $1; D[nD] = $2; next }
     {
         n++
-        if (abs($1 - tA[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tA[n] > "/dev/stderr"; exit 1 }
-        rotate(A[n, 6], A[n, 7], A[n, 8], pA, qA)
-        rotate(B[n, 6], B[n, 7], B[n, 8], pB, qB)
-        dx = A[n, 2] + qA[1] - B[n, 2] - qB[1]
-        dy = A[n, 3] + qA[2] - B[n, 3] - qB[2]
-        dz = A[n, 4] + qA[3] - B[n, 4] - qB[3]
+        if (abs($1 - tD[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tD[n] > "/dev/stderr"; exit 1 }
         L[n] = $lengthCol
-        e = abs(sqrt(dx*dx + dy*dy + dz*dz) - L[n])
+        e = abs(D[n] - L[n])
         if (e > worst) { worst = e; tWorst = $1 }
         if (n > 1 && abs(L[n] - L[n - 1]) > maxStep) maxStep = abs(L[n] - L[n - 1])
     }
     END {
-        if (n != nA || n != nB) { print n " connector rows, " nA " and " nB " body rows" > "/dev/stderr"; exit 1 }
+        if (n != nD) { print n " connector rows, " nD " body rows" > "/dev/stderr"; exit 1 }
         if (worst > 0.1*maxStep) { printf("length differs from the attachment points by %.3g m at t = %s (tolerance %.3g m)\n", worst, tWorst, 0.1*maxStep) > "/dev/stderr"; exit 1 }
         printf("length = distance between the attachment points within %.2g m (tolerance %.2g m)\n", worst, 0.1*maxStep)
-    }' "$caseDir/postProcessing/rigidBodyMotion/floatingObject1.dat" \
-       "$caseDir/postProcessing/rigidBodyMotion/floatingObject2.dat" \
-       "$dat" > "$workDir/check.out" || fail "$dat: length against the body motion"
+    }' "$workDir/distance.dat" "$dat" > "$workDir/check.out" \
+        || fail "$dat: length against the body motion"
     pass "${caseDir#$workDir/} spring: $(cat "$workDir/check.out")"
 }
 
@@ -192,6 +181,31 @@ do
     pass "$body: largest pitch $coupledPitch deg with the spring," \
         "$uncoupledPitch deg without"
 done
+
+
+# The distance between the attachment points changes less with the spring:
+# at least 25 % less than the distance between the same points without it
+# (about half as much in the smoke run)
+for c in "$uncoupled" "$serial"
+do
+    attachmentDistance \
+        "$c/postProcessing/rigidBodyMotion/floatingObject1.dat" \
+        "$c/postProcessing/rigidBodyMotion/floatingObject2.dat" \
+        "$attachmentA" "$attachmentB" > "$c/attachmentDistance.dat" \
+        || fail "$c: attachment points from the body motion"
+done
+change()
+{
+    awk -v L0=$restLength '{ d = $2 - L0; if (d < 0) d = -d; if (d > m) m = d } END { printf("%.6g\n", m) }' "$1"
+}
+coupledChange=$(change "$serial/attachmentDistance.dat")
+uncoupledChange=$(change "$uncoupled/attachmentDistance.dat")
+awk -v c="$coupledChange" -v u="$uncoupledChange" 'BEGIN { exit !(c <= 0.75*u) }' \
+    || fail "distance between the attachment points changes by up to" \
+        "$coupledChange m with the spring, $uncoupledChange m without:" \
+        "not 25 % less"
+pass "distance between the attachment points changes by up to" \
+    "$coupledChange m with the spring, $uncoupledChange m without"
 
 
 # --- Parallel against serial -------------------------------------------------
