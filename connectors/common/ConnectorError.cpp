@@ -34,20 +34,22 @@ InputError::InputError(const std::string& law, const std::string& name,
 {
 }
 
-void requireNonNegative(const std::string& law, const std::string& name,
-                        double value, const std::string& unit)
+void requireNonNegative(const char* law, const char* name, double value,
+                        const char* unit)
 {
     if (!(std::isfinite(value) && value >= 0.0)) {
         throw ParameterError(law, name, value, unit, "finite and >= 0");
     }
 }
 
-void requireFinite(const std::string& law, const std::string& name,
-                   const Vector3& value, const std::string& unit)
+void requireFinite(const char* law, const char* name, const Vector3& value,
+                   const char* unit)
 {
     for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(value[i])) {
-            throw ParameterError(law, name + "[" + std::to_string(i + 1) + "]",
+            throw ParameterError(law,
+                                 std::string(name) + "[" + std::to_string(i + 1)
+                                     + "]",
                                  value[i], unit, "finite");
         }
     }
@@ -55,12 +57,14 @@ void requireFinite(const std::string& law, const std::string& name,
 
 namespace {
 
-void checkVector(const std::string& law, const std::string& name,
+void checkVector(const char* law, const char* body, const char* name,
                  const Vector3& value)
 {
     for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(value[i])) {
-            throw InputError(law, name + "[" + std::to_string(i + 1) + "]",
+            throw InputError(law,
+                             std::string(body) + "." + name + "["
+                                 + std::to_string(i + 1) + "]",
                              value[i]);
         }
     }
@@ -68,22 +72,22 @@ void checkVector(const std::string& law, const std::string& name,
 
 } // namespace
 
-void requireFiniteInputs(const std::string& law, const std::string& body,
+void requireFiniteInputs(const char* law, const char* body,
                          const BodyKinematics& kinematics)
 {
-    checkVector(law, body + ".r", kinematics.p_WBo_W);
+    checkVector(law, body, "r", kinematics.p_WBo_W);
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
             if (!std::isfinite(kinematics.R_WB(i, j))) {
                 throw InputError(law,
-                                 body + ".R[" + std::to_string(i + 1) + ","
-                                     + std::to_string(j + 1) + "]",
+                                 std::string(body) + ".R[" + std::to_string(i + 1)
+                                     + "," + std::to_string(j + 1) + "]",
                                  kinematics.R_WB(i, j));
             }
         }
     }
-    checkVector(law, body + ".v", kinematics.v_WBo_W);
-    checkVector(law, body + ".omega", kinematics.w_WB_W);
+    checkVector(law, body, "v", kinematics.v_WBo_W);
+    checkVector(law, body, "omega", kinematics.w_WB_W);
 }
 
 } // namespace connectors

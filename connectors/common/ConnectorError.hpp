@@ -39,17 +39,20 @@ public:
 //- Shortest printable form of a double that reads back exactly ("-1", "0.5")
 std::string formatValue(double value);
 
+// The checks below build no string unless they throw: they run on every
+// evaluation.
+
 //- Throws ParameterError unless value is finite and >= 0
-void requireNonNegative(const std::string& law, const std::string& name,
-                        double value, const std::string& unit);
+void requireNonNegative(const char* law, const char* name, double value,
+                        const char* unit);
 
 //- Throws ParameterError naming "<name>[i]" unless every component is finite
-void requireFinite(const std::string& law, const std::string& name,
-                   const Vector3& value, const std::string& unit);
+void requireFinite(const char* law, const char* name, const Vector3& value,
+                   const char* unit);
 
 //- Throws InputError naming e.g. "A.R[2,3]" for the first non-finite input
 //  of body `body` ("A" or "B")
-void requireFiniteInputs(const std::string& law, const std::string& body,
+void requireFiniteInputs(const char* law, const char* body,
                          const BodyKinematics& kinematics);
 
 } // namespace connectors
