@@ -1,0 +1,233 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Description
+    The Newton iterations of implicitNewmark: trial states, residual,
+    finite-difference Jacobian.
+
+\*---------------------------------------------------------------------------*/
+
+#include "implicitNewmark.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Largest magnitude of a field, 0 for an empty one
+Foam::scalar normInf(const Foam::scalarField& f)
+{
+    Foam::scalar n = 0;
+    for (const Foam::scalar x : f)
+    {
+        n = Foam::max(n, Foam::mag(x));
+    }
+    return n;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::RBD::rigidBodySolvers::implicitNewmark::setTrialState
+(
+    const scalarField& a
+)
+{
+    const scalar h = deltaT();
+
+    aBar_ = ((1 - alphaF_)*a + alphaF_*a0_ - alphaM_*aBar0_)/(1 - alphaM_);
+
+    qDot() = qDot0() + h*((1 - gamma_)*aBar0_ + gamma_*aBar_);
+    q() = q0() + h*qDot0() + sqr(h)*((0.5 - beta_)*aBar0_ + beta_*aBar_);
+
+    // q - q0 of a quaternion joint is its rotation vector: rotate q0 by it
+    correctQuaternionJoints();
+}
+
+
+void Foam::RBD::rigidBodySolvers::implicitNewmark::residual
+(
+    const scalarField& a,
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    const scalarField& qDdotPrev,
+    scalarField& R
+)
+{
+    setTrialState(a);
+
+    // Body kinematics of the trial state, for the restraints
+    qDdot() = qDdotPrev;
+    model_.forwardDynamicsCorrection(state());
+
+    scalarField rtau(tau);
+    Field<spatialVector> rfx(fx);
+    model_.applyRestraints(rtau, rfx, state());
+
+    // Accelerations, relaxed towards qDdotPrev as the model specifies
+    model_.forwardDynamics(state(), rtau, rfx);
+    ++nEvaluations_;
+
+    R = a - qDdot();
+}
+
+
+bool Foam::RBD::rigidBodySolvers::implicitNewmark::updateJacobian
+(
+    const scalarField& a,
+    const scalarField& R,
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    const scalarField& qDdotPrev,
+    const scalar aScale
+)
+{
+    const label n = a.size();
+    jacobian_ = scalarSquareMatrix(n, Zero);
+
+    scalarField ap(a);
+    scalarField Rp(n);
+
+    // One column per degree of freedom: a_j moves q_j and qDot_j together
+    for (label j = 0; j < n; ++j)
+    {
+        ap[j] = a[j] + fdStep_*max(mag(a[j]), aScale);
+        const scalar da = ap[j] - a[j];
+
+        residual(ap, tau, fx, qDdotPrev, Rp);
+
+        for (label i = 0; i < n; ++i)
+        {
+            jacobian_(i, j) = (Rp[i] - R[i])/da;
+        }
+        ap[j] = a[j];
+    }
+
+    scalar maxCoeff = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            maxCoeff = max(maxCoeff, mag(jacobian_(i, j)));
+        }
+    }
+    if (!(maxCoeff > 0) || !std::isfinite(maxCoeff))
+    {
+        return false;
+    }
+
+    LUDecompose(jacobian_, pivots_);
+    ++nJacobians_;
+    jacobianDeltaT_ = deltaT();
+
+    for (label i = 0; i < n; ++i)
+    {
+        if (!(mag(jacobian_(i, i)) > SMALL*maxCoeff))
+        {
+            jacobianDeltaT_ = 0;
+            return false;
+        }
+    }
+
+    return true;
+}
+
+
+bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
+(
+    scalarField& a,
+    const scalarField& tau,
+    const Field<spatialVector>& fx,
+    const scalarField& qDdotPrev,
+    scalar& residualNorm,
+    label& nIter
+)
+{
+    const label n = a.size();
+    const scalar gScale = mag(model_.g());
+
+    scalarField R(n);
+    residual(a, tau, fx, qDdotPrev, R);
+
+    // Acceleration scale of the convergence test and of the FD step
+    auto scale = [&]()
+    {
+        return max
+        (
+            max(max(normInf(a), normInf(a - R)), max(normInf(a0_), gScale)),
+            ROOTVSMALL
+        );
+    };
+
+    residualNorm = normInf(R);
+    nIter = 0;
+
+    while (true)
+    {
+        if (!std::isfinite(residualNorm))
+        {
+            FatalErrorInFunction
+                << "Non-finite residual " << residualNorm << " at t = "
+                << state().t() << " after " << nIter << " Newton iterations:"
+                << " a restraint or the dynamics returned a non-finite load"
+                << " at the trial state q = " << q() << ", qDot = " << qDot()
+                << exit(FatalError);
+        }
+
+        if (residualNorm <= tolerance_*scale() || nIter >= maxIter_)
+        {
+            break;
+        }
+
+        // Rebuild the Jacobian for a new time step or when the last
+        // iteration did not contract
+        bool fresh = false;
+        if (jacobianDeltaT_ != deltaT() || jacobian_.m() != n)
+        {
+            if (!updateJacobian(a, R, tau, fx, qDdotPrev, scale()))
+            {
+                FatalErrorInFunction
+                    << "Singular Newton matrix dR/da at t = " << state().t()
+                    << " (finite-difference step " << fdStep_ << "): check"
+                    << " that every degree of freedom has inertia"
+                    << exit(FatalError);
+            }
+            fresh = true;
+        }
+
+        scalarField da(-R);
+        LUBacksubstitute(jacobian_, pivots_, da);
+
+        const scalarField R0(R);
+        a += da;
+        residual(a, tau, fx, qDdotPrev, R);
+        ++nIter;
+
+        const scalar newNorm = normInf(R);
+
+        if (std::isfinite(newNorm) && newNorm > residualNorm && !fresh)
+        {
+            // A stale Jacobian made things worse: undo and rebuild
+            a -= da;
+            R = R0;
+            jacobianDeltaT_ = 0;
+            continue;
+        }
+        if (!(newNorm <= 0.1*residualNorm))
+        {
+            jacobianDeltaT_ = 0;
+        }
+        residualNorm = newNorm;
+    }
+
+    return residualNorm <= tolerance_*scale();
+}
+
+
+// ************************************************************************* //
