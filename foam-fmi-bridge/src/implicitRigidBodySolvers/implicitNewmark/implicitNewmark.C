@@ -191,7 +191,8 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::solve
     const Field<spatialVector>& fx
 )
 {
-    if (state().t() != tSolve_)
+    const bool firstSolve = (state().t() != tSolve_);
+    if (firstSolve)
     {
         newStep(tau, fx);
     }
@@ -200,8 +201,24 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::solve
     // Base of the model's acceleration relaxation: the previous solve
     const scalarField qDdotPrev(qDdot());
 
-    // Start from the previous solve's acceleration when it converged
-    scalarField a(converged_ ? qDdotPrev : a0_);
+    // Start from the previous solve of this step when it converged, else
+    // from the acceleration that keeps the bodies at q0: the first trial
+    // state is then the old configuration, where every restraint is known
+    // to be defined. Predictors that move the bodies (a = a0, or constant
+    // velocity) overshoot by (omega h)^2 or omega h with a stiff restraint
+    // and can leave the basin of the solution of a geometrically nonlinear
+    // one (a spring pushed through its anchor has a second root).
+    scalarField a(qDdotPrev);
+    if (!converged_ || firstSolve)
+    {
+        const scalarField aBarPredicted
+        (
+            -(qDot0()/deltaT() + (0.5 - beta_)*aBar0_)/beta_
+        );
+        a =
+            ((1 - alphaM_)*aBarPredicted + alphaM_*aBar0_ - alphaF_*a0_)
+           /(1 - alphaF_);
+    }
 
     scalar residualNorm = 0;
     label nIter = 0;

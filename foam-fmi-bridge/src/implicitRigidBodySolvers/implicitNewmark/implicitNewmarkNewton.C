@@ -122,6 +122,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::updateJacobian
         return false;
     }
 
+    pivots_.setSize(n);
     LUDecompose(jacobian_, pivots_);
     ++nJacobians_;
     jacobianDeltaT_ = deltaT();
