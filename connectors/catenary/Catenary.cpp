@@ -1,0 +1,97 @@
+#include "catenary/Catenary.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "common/AxialGeometry.hpp"
+#include "common/ConnectorError.hpp"
+
+namespace connectors {
+
+namespace {
+
+const char* const lawName = "catenary";
+
+void requirePositive(const char* name, double value, const char* unit)
+{
+    if (!(std::isfinite(value) && value > 0.0)) {
+        throw ParameterError(lawName, name, value, unit, "finite and > 0");
+    }
+}
+
+} // namespace
+
+Catenary::Catenary(const CatenaryParameters& parameters)
+    : parameters_(parameters)
+{
+    requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
+    requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
+    requirePositive("unstretchedLength", parameters.line.length, "m");
+    requirePositive("EA", parameters.line.EA, "N");
+    if (!std::isfinite(parameters.line.weight)) {
+        throw ParameterError(lawName, "weight", parameters.line.weight, "N/m",
+                             "finite");
+    }
+    requireNonNegative(lawName, "seabedFriction",
+                       parameters.line.seabedFriction, "1");
+}
+
+ConnectorResult Catenary::evaluate(const BodyKinematics& A,
+                                   const BodyKinematics& B) const
+{
+    return evaluate(A, B, nullptr, 0).loads;
+}
+
+CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
+                                  const BodyKinematics& B,
+                                  const CatenaryGuess* guess, int shapePoints,
+                                  const CatenaryOptions& options) const
+{
+    requireFiniteInputs(lawName, "A", A);
+    requireFiniteInputs(lawName, "B", B);
+    const CatenaryLine& line = parameters_.line;
+    const AxialGeometry g =
+        axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
+
+    // Profile plane: origin Q, e_h horizontal towards P, z up
+    const Vector3 p_QP_W = -g.p_PQ_W;
+    const Vector3 p_WQ_W = B.p_WBo_W + g.p_BoQ_W;
+    const Vector3 zHat = Vector3::UnitZ();
+    const Vector3 horizontal(p_QP_W[0], p_QP_W[1], 0.0);
+    const double x = horizontal.norm();
+    const double z = p_QP_W[2];
+    const Vector3 eH = x > 1e-12 * line.length ? Vector3(horizontal / x)
+                                                : Vector3::UnitX();
+
+    CatenaryOutput out;
+    out.solution = solveCatenary(line, x, z, guess, options);
+    const CatenarySolution& s = out.solution;
+    ConnectorResult& r = out.loads;
+    r.A.f_W = -s.H * eH - s.V * zHat;
+    r.B.f_W = s.HA * eH + s.VA * zHat;
+    r.A.m_Bo_W = g.p_AoP_W.cross(r.A.f_W);
+    r.B.m_Bo_W = g.p_BoQ_W.cross(r.B.f_W);
+    r.length = g.length;
+    r.lengthRate = g.lengthRate;
+    out.fairleadTension = std::hypot(s.H, s.V);
+    out.anchorTension = std::hypot(s.HA, s.VA);
+    r.tension = out.fairleadTension;
+    r.potentialEnergy =
+        catenaryEnergy(line, s, x, z) + line.weight * line.length * p_WQ_W[2];
+    r.dissipatedPower = 0.0;
+
+    if (shapePoints == 1 || shapePoints < 0) {
+        throw std::invalid_argument("catenary: shapePoints must be 0 or >= 2");
+    }
+    out.shape.resize(std::size_t(shapePoints));
+    for (int i = 0; i < shapePoints; ++i) {
+        const double sArc = line.length * (1.0 - double(i) / (shapePoints - 1));
+        const Eigen::Vector2d p = catenaryPoint(line, s, x, z, sArc);
+        out.shape[std::size_t(i)] = p_WQ_W + p[0] * eH + p[1] * zHat;
+    }
+    return out;
+}
+
+} // namespace connectors

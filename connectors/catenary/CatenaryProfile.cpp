@@ -1,0 +1,360 @@
+#include "catenary/CatenaryProfile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/ConnectorError.hpp"
+
+namespace connectors {
+
+namespace {
+
+//- asinh(d)/d, smooth through d = 0 (series error below 1e-25 there)
+double asinhOverX(double d)
+{
+    return std::abs(d) < 1e-6 ? 1.0 - d * d / 6.0 : std::asinh(d) / d;
+}
+
+//- r = (a sb - b sa)/(a - b) with sa = sqrt(1+a^2), sb = sqrt(1+b^2),
+//  without cancellation: asinh a - asinh b = asinh((a - b) r)
+double divided(double a, double b, double sa, double sb)
+{
+    if (a * b > 0.0) {
+        return (a + b) / (a * sb + b * sa);
+    }
+    if (a == b) {
+        return 1.0; // a = b = 0
+    }
+    return (a * sb - b * sa) / (a - b);
+}
+
+//- Span (x, z) and its Jacobian d(x, z)/d(H, V) at one iterate
+struct Span {
+    double x = 0.0, z = 0.0;
+    double xH = 0.0, xV = 0.0, zH = 0.0, zV = 0.0;
+};
+
+//- Suspended line of length s whose lower end carries vertical tension Va
+//  and horizontal tension H > 0 (upper end: Va + w s); any sign of w
+Span suspendedSpan(double s, double EA, double w, double H, double Va)
+{
+    const double V = Va + w * s;
+    const double a = V / H, b = Va / H;
+    const double sa = std::hypot(1.0, a), sb = std::hypot(1.0, b);
+    const double r = divided(a, b, sa, sb);
+    const double Q = r * asinhOverX(r * (a - b)); // (asinh a - asinh b)/(a-b)
+    const double g = r / (sa * sb);
+    const double p = -(a + b) / (sa * sb * (sa + sb));
+    Span out;
+    out.x = s * Q + H * s / EA;
+    out.z = s * (a + b) / (sa + sb) + (Va * s + 0.5 * w * s * s) / EA;
+    out.xH = (s / H) * (Q - g) + s / EA;
+    out.xV = (s / H) * p;
+    out.zH = (s / H) * p;
+    out.zV = (s / H) * g + s / EA;
+    return out;
+}
+
+//- Anchored line with a grounded part (w > 0, V < wL)
+Span touchdownSpan(const CatenaryLine& line, double H, double V)
+{
+    const double L = line.length, EA = line.EA, w = line.weight;
+    const double Ls = V / w, Lb = L - Ls, a = V / H;
+    const double sa = std::hypot(1.0, a);
+    Span out;
+    out.x = Lb + Ls * asinhOverX(a) + H * L / EA;
+    out.z = Ls * a / (sa + 1.0) + V * V / (2.0 * EA * w);
+    out.xH = (std::asinh(a) - a / sa) / w + L / EA;
+    out.xV = -(1.0 - 1.0 / sa) / w;
+    out.zH = (1.0 / sa - 1.0) / w;
+    out.zV = (a / sa) / w + V / (EA * w);
+    const double CB = line.seabedFriction;
+    if (CB > 0.0) {
+        const double c = CB * w, u = Lb - H / c, mu = std::max(u, 0.0);
+        out.x += c / (2.0 * EA) * (-Lb * Lb + u * mu);
+        out.xH += -mu / EA;
+        out.xV += CB / EA * (Lb - mu);
+    }
+    return out;
+}
+
+bool grounded(const CatenaryLine& line, double V)
+{
+    return line.seabedContact && line.weight > 0.0
+           && V < line.weight * line.length;
+}
+
+Span span(const CatenaryLine& line, double H, double V)
+{
+    if (grounded(line, V)) {
+        return touchdownSpan(line, H, V);
+    }
+    return suspendedSpan(line.length, line.EA, line.weight, H,
+                         V - line.weight * line.length);
+}
+
+//- Unstretched length hanging vertically from the seabed to height z
+//  (z = Ls + w Ls^2/(2EA)), w > 0, z >= 0
+double verticalHangLength(const CatenaryLine& line, double z)
+{
+    return 2.0 * z / (1.0 + std::sqrt(1.0 + 2.0 * line.weight * z / line.EA));
+}
+
+//- First Newton iterate without a previous solution (after MoorDyn's
+//  Catenary routine, mirrored for a buoyant line)
+CatenaryGuess coldGuess(const CatenaryLine& line, double x, double z)
+{
+    const double L = line.length, w = line.weight;
+    const double chord = std::hypot(x, z);
+    const double sign = w < 0.0 ? -1.0 : 1.0;
+    const double W = std::abs(w), Z = sign * z;
+    CatenaryGuess g;
+    if (chord >= L || W == 0.0) {
+        const double T = line.EA * std::max(chord / L - 1.0, 1e-6) + W * L;
+        g.H = T * x / chord;
+        g.V = T * z / chord + 0.5 * w * L;
+        return g;
+    }
+    const double lambda =
+        std::sqrt(3.0 * std::max((L * L - Z * Z) / (x * x) - 1.0, 1e-12));
+    g.H = std::max(0.5 * W * x / lambda, 1e-6 * W * L);
+    g.V = sign * 0.5 * W * (Z / std::tanh(lambda) + L);
+    return g;
+}
+
+void fillEnds(const CatenaryLine& line, CatenarySolution& s)
+{
+    const double w = line.weight, L = line.length;
+    if (s.regime == CatenaryRegime::touchdown) {
+        s.groundedLength = std::clamp(L - s.V / w, 0.0, L);
+        s.HA = std::max(s.H - line.seabedFriction * w * s.groundedLength, 0.0);
+        s.VA = 0.0;
+    } else {
+        s.groundedLength = 0.0;
+        s.HA = s.H;
+        s.VA = s.V - w * L;
+    }
+}
+
+std::string describe(double x, double z, double H, double V)
+{
+    return "horizontal span " + formatValue(x) + " m, vertical span "
+           + formatValue(z) + " m, H = " + formatValue(H) + " N, V = "
+           + formatValue(V) + " N";
+}
+
+CatenarySolution newton(const CatenaryLine& line, double x, double z,
+                        CatenaryGuess start, const CatenaryOptions& options)
+{
+    const double scale = std::max(line.length, std::hypot(x, z));
+    const double Hmin = 1e-200;
+    double H = std::max(start.H, Hmin), V = start.V;
+    Span f = span(line, H, V);
+    double rx = f.x - x, rz = f.z - z, norm = std::hypot(rx, rz);
+    int iteration = 0;
+    while (!(norm <= options.tolerance * scale)) {
+        if (iteration == options.maxIterations || !std::isfinite(norm)) {
+            throw UndefinedStateError(
+                "catenary: Newton did not converge in "
+                + std::to_string(iteration) + " iterations (regime "
+                + regimeName(grounded(line, V) ? CatenaryRegime::touchdown
+                                               : CatenaryRegime::suspended)
+                + ", residual " + formatValue(norm) + " m, "
+                + describe(x, z, H, V) + ")");
+        }
+        ++iteration;
+        const double det = f.xH * f.zV - f.xV * f.zH;
+        const double dH = (-rx * f.zV + rz * f.xV) / det;
+        const double dV = (-rz * f.xH + rx * f.zH) / det;
+        double lambda = 1.0;
+        for (int halving = 0;; ++halving) {
+            const double Hn = std::max(H + lambda * dH, 0.1 * H);
+            const double Vn = V + lambda * dV;
+            const Span fn = span(line, std::max(Hn, Hmin), Vn);
+            const double nn = std::hypot(fn.x - x, fn.z - z);
+            if ((std::isfinite(nn) && nn <= (1.0 - 1e-4 * lambda) * norm)
+                || halving == 30) {
+                if (!std::isfinite(nn)) {
+                    break; // leaves the iterate; reported above
+                }
+                H = std::max(Hn, Hmin);
+                V = Vn;
+                f = fn;
+                rx = fn.x - x;
+                rz = fn.z - z;
+                norm = nn;
+                break;
+            }
+            lambda *= 0.5;
+        }
+    }
+    CatenarySolution s;
+    s.regime = grounded(line, V) ? CatenaryRegime::touchdown
+                                 : CatenaryRegime::suspended;
+    s.H = H;
+    s.V = V;
+    s.iterations = iteration;
+    s.residual = norm;
+    fillEnds(line, s);
+    return s;
+}
+
+} // namespace
+
+const char* regimeName(CatenaryRegime regime)
+{
+    switch (regime) {
+    case CatenaryRegime::suspended:
+        return "suspended";
+    case CatenaryRegime::touchdown:
+        return "touchdown";
+    case CatenaryRegime::slackOnSeabed:
+        return "slackOnSeabed";
+    case CatenaryRegime::vertical:
+        return "vertical";
+    case CatenaryRegime::slackWeightless:
+        return "slackWeightless";
+    }
+    return "unknown";
+}
+
+CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
+                               const CatenaryGuess* guess,
+                               const CatenaryOptions& options)
+{
+    const double L = line.length, EA = line.EA, w = line.weight;
+    const double tiny = 1e-12 * L;
+    CatenarySolution s;
+    if (line.seabedContact) {
+        if (z < -tiny) {
+            throw UndefinedStateError("catenary: the fairlead is "
+                                      + formatValue(-z)
+                                      + " m below the seabed (the anchor's "
+                                        "height): "
+                                      + describe(x, z, 0, 0));
+        }
+        z = std::max(z, 0.0);
+    }
+    if (w == 0.0 && std::hypot(x, z) <= L) {
+        s.regime = CatenaryRegime::slackWeightless;
+        return s;
+    }
+    if (line.seabedContact && w > 0.0) {
+        const double Ls = verticalHangLength(line, z);
+        if (Ls < L && x <= L - Ls) {
+            s.regime = CatenaryRegime::slackOnSeabed;
+            s.V = w * Ls;
+            s.groundedLength = L - Ls;
+            return s;
+        }
+    }
+    if (x <= tiny) {
+        // Taut and vertical: H = 0, z = +-L + (V L - w L^2/2)/EA
+        const double sign = z > 0.0 ? 1.0 : -1.0;
+        s.regime = CatenaryRegime::vertical;
+        s.V = (z - sign * L) * EA / L + 0.5 * w * L;
+        s.VA = s.V - w * L;
+        if (z == 0.0 || std::min(sign * s.V, sign * s.VA) < 0.0) {
+            throw UndefinedStateError(
+                "catenary: slack line with both ends on one vertical (regime "
+                "vertical, " + describe(x, z, 0, s.V)
+                + "): its shape is undefined (the line would fold)");
+        }
+        return s;
+    }
+    const CatenaryGuess start =
+        guess != nullptr && guess->H > 0.0 && std::isfinite(guess->H)
+                && std::isfinite(guess->V)
+            ? *guess
+            : coldGuess(line, x, z);
+    return newton(line, x, z, start, options);
+}
+
+Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
+                              const CatenarySolution& sol, double x, double z,
+                              double s)
+{
+    const double L = line.length, EA = line.EA, w = line.weight, H = sol.H;
+    s = std::clamp(s, 0.0, L);
+    switch (sol.regime) {
+    case CatenaryRegime::slackWeightless:
+        return Eigen::Vector2d(x, z) * (s / L);
+    case CatenaryRegime::vertical: {
+        const double sign = z > 0.0 ? 1.0 : -1.0;
+        return {0.0, sign * s + (sol.VA * s + 0.5 * w * s * s) / EA};
+    }
+    case CatenaryRegime::suspended: {
+        const Span f = suspendedSpan(s, EA, w, H, sol.VA);
+        return {s == 0.0 ? 0.0 : f.x, s == 0.0 ? 0.0 : f.z};
+    }
+    case CatenaryRegime::touchdown:
+    case CatenaryRegime::slackOnSeabed:
+        break;
+    }
+    const double Lb = sol.groundedLength;
+    const bool heap = sol.regime == CatenaryRegime::slackOnSeabed;
+    const double sg = std::min(s, Lb);
+    double xg = heap ? std::min(sg, x) : sg + H * sg / EA;
+    const double CB = line.seabedFriction;
+    if (!heap && CB > 0.0) {
+        const double c = CB * w, s0 = std::max(Lb - H / c, 0.0);
+        xg = sg
+             + (sg <= s0 ? 0.0
+                         : (H * (sg - s0)
+                            - 0.5 * c * ((Lb - s0) * (Lb - s0) - (Lb - sg) * (Lb - sg)))
+                               / EA);
+    }
+    if (s <= Lb) {
+        return {xg, 0.0};
+    }
+    const double sl = s - Lb;
+    if (heap) {
+        return {x, sl + 0.5 * w * sl * sl / EA};
+    }
+    const double a = w * sl / H;
+    return {xg + sl * asinhOverX(a) + H * sl / EA,
+            sl * a / (std::hypot(1.0, a) + 1.0) + 0.5 * w * sl * sl / EA};
+}
+
+double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
+                      double x, double z)
+{
+    const double L = line.length, EA = line.EA, w = line.weight, H = sol.H;
+    if (sol.regime == CatenaryRegime::slackWeightless) {
+        return 0.0;
+    }
+    const double Lb = sol.groundedLength, Ls = L - Lb;
+    // Suspended part: T^2 = H^2 + (VA' + w s)^2, VA' the vertical tension
+    // at its lower end (0 at the touchdown point)
+    const double Va = Lb > 0.0 ? 0.0 : sol.VA, V = sol.V;
+    double strain = H * H * Ls + Ls * (Va * Va + Va * V + V * V) / 3.0;
+    if (Lb > 0.0 && sol.regime == CatenaryRegime::touchdown) {
+        // Grounded part: T rises linearly to H at the touchdown point
+        const double c = line.seabedFriction * w;
+        const double s0 = c > 0.0 ? std::max(Lb - H / c, 0.0) : 0.0;
+        const double T0 = c > 0.0 ? H - c * (Lb - s0) : H;
+        strain += (Lb - s0) * (T0 * T0 + T0 * H + H * H) / 3.0;
+    }
+    strain /= 2.0 * EA;
+    // Weight: w times the integral of z over the suspended part, composite
+    // 5-point Gauss-Legendre on 8 panels (z(s) is analytic there)
+    static const double node[5] = {0.0, 0.5384693101056831, -0.5384693101056831,
+                                   0.9061798459386640, -0.9061798459386640};
+    static const double weightOf[5] = {0.5688888888888889, 0.4786286704993665,
+                                       0.4786286704993665, 0.2369268850561891,
+                                       0.2369268850561891};
+    const int panels = 8;
+    const double h = Ls / panels;
+    double zIntegral = 0.0;
+    for (int k = 0; k < panels; ++k) {
+        const double mid = Lb + (k + 0.5) * h;
+        for (int i = 0; i < 5; ++i) {
+            zIntegral += weightOf[i] * 0.5 * h
+                         * catenaryPoint(line, sol, x, z, mid + 0.5 * h * node[i])[1];
+        }
+    }
+    return strain + w * zIntegral;
+}
+
+} // namespace connectors

@@ -1,0 +1,121 @@
+// The elastic catenary in its vertical plane (Irvine, "Cable Structures",
+// 1981, ch. 2; the same relations as MAP++ and MoorDyn's Catenary routine).
+//
+// A line of unstretched length L [m], axial stiffness EA [N] and weight per
+// unstretched length w [N/m] (submerged weight; w < 0 for a buoyant line,
+// w = 0 for a weightless one) runs from its lower end, the anchor, at the
+// origin of the plane to the fairlead at horizontal span x >= 0 [m] and
+// vertical span z [m] (z up). Unknowns: H >= 0 [N], the horizontal tension
+// (constant along the suspended part), and V [N], the vertical tension at the
+// fairlead (the line pulls the fairlead down by V). With
+// a = V/H, b = (V - wL)/H:
+//
+//   suspended:  x = (H/w)(asinh a - asinh b) + H L/EA
+//               z = (H/w)(sqrt(1+a^2) - sqrt(1+b^2)) + (V L - w L^2/2)/EA
+//
+// With seabed contact (the anchor on the seabed, w > 0, V < wL) a length
+// Lb = L - V/w lies on the seabed, with Coulomb friction coefficient CB:
+//
+//   touchdown:  x = Lb + (H/w) asinh a + H L/EA
+//                   + CB w/(2EA) [-Lb^2 + (Lb - H/(CB w)) max(Lb - H/(CB w), 0)]
+//               z = (H/w)(sqrt(1+a^2) - 1) + V^2/(2 EA w)
+//
+// Both are evaluated in forms without 1/w cancellation (divided
+// differences), so w -> 0 and w < 0 use the same expressions. The two
+// unknowns are found with a damped Newton method (analytic Jacobian,
+// backtracking on the residual norm, H kept > 0), warm started from a
+// previous solution when one is given.
+//
+// Regimes handled in closed form, without Newton:
+//  - slackOnSeabed: anchor on the seabed, line so long that it hangs
+//    vertically below the fairlead and the rest lies on the seabed without
+//    horizontal tension (H = 0); the grounded part is drawn heaped at the
+//    touchdown point;
+//  - vertical: fairlead directly above (or below) the anchor, taut (H = 0);
+//  - slackWeightless: w = 0 and the chord shorter than L: no tension, the
+//    shape is undefined and drawn as the straight chord.
+// A slack line with both ends on one vertical and no seabed (it would fold)
+// and a fairlead below the seabed are UndefinedStateError; so is a Newton
+// failure, whose message gives the regime and the residual.
+#ifndef CONNECTORS_CATENARY_CATENARYPROFILE_HPP
+#define CONNECTORS_CATENARY_CATENARYPROFILE_HPP
+
+#include <Eigen/Core>
+
+namespace connectors {
+
+struct CatenaryLine {
+    //- Unstretched length L [m], > 0
+    double length = 1.0;
+    //- Axial stiffness EA [N], > 0
+    double EA = 1.0;
+    //- Weight per unstretched length w [N/m] (submerged; < 0: buoyant)
+    double weight = 0.0;
+    //- Seabed friction coefficient CB [-], >= 0 (with seabed contact only)
+    double seabedFriction = 0.0;
+    //- True when the anchor lies on the seabed (the plane through it)
+    bool seabedContact = false;
+};
+
+enum class CatenaryRegime {
+    suspended,
+    touchdown,
+    slackOnSeabed,
+    vertical,
+    slackWeightless
+};
+
+//- "suspended", "touchdown", ...
+const char* regimeName(CatenaryRegime regime);
+
+struct CatenarySolution {
+    CatenaryRegime regime = CatenaryRegime::suspended;
+    //- Horizontal tension at the fairlead [N]
+    double H = 0.0;
+    //- Vertical tension at the fairlead (pulls it down when > 0) [N]
+    double V = 0.0;
+    //- Horizontal tension at the anchor (pulls it towards the fairlead) [N]
+    double HA = 0.0;
+    //- Vertical tension at the anchor (pulls it up when > 0) [N]
+    double VA = 0.0;
+    //- Unstretched length lying on the seabed [m]
+    double groundedLength = 0.0;
+    //- Newton iterations taken (0 for the closed-form regimes)
+    int iterations = 0;
+    //- Final residual |(x, z) - (x(H,V), z(H,V))| [m]
+    double residual = 0.0;
+};
+
+//- Newton settings
+struct CatenaryOptions {
+    //- Converged when the residual is below tolerance * L [-]
+    double tolerance = 1e-10;
+    int maxIterations = 100;
+};
+
+//- H and V of a previous solution, used as the first Newton iterate
+struct CatenaryGuess {
+    double H = 0.0;
+    double V = 0.0;
+};
+
+//- Solves for the end tensions; `guess` may be null (cold start). Throws
+//  UndefinedStateError for the undefined cases listed above.
+CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
+                               const CatenaryGuess* guess = nullptr,
+                               const CatenaryOptions& options = {});
+
+//- Point of the line at unstretched arc length s in [0, L] from the anchor,
+//  as (horizontal, vertical) from the anchor [m]
+Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
+                              const CatenarySolution& solution, double x,
+                              double z, double s);
+
+//- Strain energy plus the weight's potential energy relative to the
+//  anchor's height: integral of T^2/(2EA) + w z(s) over s [J]
+double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& solution,
+                      double x, double z);
+
+} // namespace connectors
+
+#endif
