@@ -112,10 +112,20 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     HingeResult h;
     ConnectorResult& r = h.loads;
 
-    // Translation: a vector spring-damper between P and Q, defined at any
-    // gap (no direction needed).
-    const Vector3 f_A_W = p.stiffness * g.p_PQ_W + p.damping * g.v_PQ_W;
-    applyPointForce(g, f_A_W, r);
+    // Translation: a vector spring-damper, defined at any gap (no direction
+    // needed), acting on both bodies at the midpoint M of P and Q so that
+    // the pair carries no net moment. The damper acts on the relative
+    // velocity of the material points of A and B at M (frame-indifferent).
+    const Vector3 half_W = 0.5 * g.p_PQ_W;
+    const Vector3 p_AoM_W = g.p_AoP_W + half_W;
+    const Vector3 p_BoM_W = g.p_BoQ_W - half_W;
+    const Vector3 v_M_W = (B.v_WBo_W + B.w_WB_W.cross(p_BoM_W))
+                          - (A.v_WBo_W + A.w_WB_W.cross(p_AoM_W));
+    const Vector3 f_A_W = p.stiffness * g.p_PQ_W + p.damping * v_M_W;
+    r.A.f_W = f_A_W;
+    r.A.m_Bo_W = p_AoM_W.cross(f_A_W);
+    r.B.f_W = -f_A_W;
+    r.B.m_Bo_W = p_BoM_W.cross(-f_A_W);
 
     // Alignment: turns a_B towards a_A about n = (a_B x a_A)/|a_B x a_A|.
     const Vector3 a_A_W = A.R_WB * axis_A_;
@@ -157,7 +167,7 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     r.potentialEnergy = 0.5 * p.stiffness * g.p_PQ_W.squaredNorm()
                         + 0.5 * p.rotationalStiffness * theta * theta
                         + 0.5 * p.ptoStiffness * twist * twist;
-    r.dissipatedPower = p.damping * g.v_PQ_W.squaredNorm()
+    r.dissipatedPower = p.damping * v_M_W.squaredNorm()
                         + p.rotationalDamping * wPerp_W.squaredNorm()
                         + p.ptoDamping * angleRate * angleRate;
 

@@ -5,8 +5,9 @@
 // hinge axes a_A, a_B and reference directions e_A, e_B perpendicular to
 // them (for the angle). In the global frame (subscript W dropped):
 //
-//   d = Q - P, gap = |d|, v_PQ = v_Q - v_P                    [m], [m/s]
-//   force on A at P:  f_A = k_t d + c_t v_PQ,  on B at Q: -f_A  [N]
+//   d = Q - P, gap = |d|, M = (P + Q)/2 the midpoint           [m]
+//   v_M = velocity of B's material point at M minus A's         [m/s]
+//   force on A at M:  f_A = k_t d + c_t v_M,  on B at M: -f_A   [N]
 //   u = a_B x a_A, misalignment theta = atan2(|u|, a_A . a_B)  [rad]
 //   w = w_B - w_A, w_perp = w - (w . a_A) a_A                  [rad/s]
 //   aligning moment on B: M_B = k_r theta n - c_r w_perp,
@@ -17,7 +18,7 @@
 //     moment on B: -tau a_A, on A: +tau a_A
 //   ptoPower = tau angleRate (absorbed from the bodies)        [W]
 //   potentialEnergy = k_t gap^2/2 + k_r theta^2/2 + k_p (phi - phi0)^2/2
-//   dissipatedPower = c_t |v_PQ|^2 + c_r |w_perp|^2 + c_p angleRate^2 >= 0
+//   dissipatedPower = c_t |v_M|^2 + c_r |w_perp|^2 + c_p angleRate^2 >= 0
 //
 // Every load vanishes when the constraint holds (d = 0, a_A = a_B, the
 // bodies moving as one rigid hinge) at any angle, unless the PTO acts.

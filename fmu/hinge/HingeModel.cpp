@@ -26,7 +26,8 @@ e<sub>B</sub> the angle reference directions (<code>A.ref</code>,
 <code>B.ref</code>, made perpendicular to the axis; zero: derived), all in the
 global frame; w = &omega;<sub>B</sub> - &omega;<sub>A</sub>:</p>
 <pre>
-A.F = stiffness (Q - P) + damping (v_Q - v_P)   (at P),  B.F = -A.F (at Q)
+A.F = stiffness (Q - P) + damping v_M,  B.F = -A.F, both at M = (P + Q)/2
+   v_M = velocity of B's material point at M minus that of A's
 misalignment theta = angle between a_A and a_B                   [rad]
 moment on B = rotationalStiffness theta n - rotationalDamping w_perp - ptoTorque a_A
    n = unit(a_B x a_A) (e_A when the axes are opposite),  moment on A = -that
