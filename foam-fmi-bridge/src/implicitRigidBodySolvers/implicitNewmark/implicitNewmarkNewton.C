@@ -166,6 +166,22 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
         );
     };
 
+    // Position change per unit change of a [s^2]
+    const scalar dqda = beta_*sqr(deltaT())*(1 - alphaF_)/(1 - alphaM_);
+
+    // Converged: the residual is small against the accelerations, or the
+    // last correction moved q by less than tolerance of max(|q|, 1) (m or
+    // rad). The second test ends the iterations at the round-off floor of
+    // a stiff restraint near rest, where |R| ~ eps k |x|/m need not be
+    // small against the net acceleration.
+    scalar correctionNorm = GREAT;
+    auto converged = [&]()
+    {
+        return
+            residualNorm <= tolerance_*scale()
+         || correctionNorm <= tolerance_*max(normInf(q()), scalar(1));
+    };
+
     residualNorm = normInf(R);
     nIter = 0;
 
@@ -181,7 +197,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
                 << exit(FatalError);
         }
 
-        if (residualNorm <= tolerance_*scale() || nIter >= maxIter_)
+        if (converged() || nIter >= maxIter_)
         {
             break;
         }
@@ -225,9 +241,10 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
             jacobianDeltaT_ = 0;
         }
         residualNorm = newNorm;
+        correctionNorm = dqda*normInf(da);
     }
 
-    return residualNorm <= tolerance_*scale();
+    return converged();
 }
 
 
