@@ -3,8 +3,8 @@
 # Builds one connector FMU from a model source that defines
 # fmuExport::createModel():
 #   <name>          MODULE library <name>.so (no lib prefix, hidden
-#                   visibility; only the fmi2 functions are exported, the
-#                   static libraries linked into it stay hidden)
+#                   visibility; a version script exports the fmi2 functions
+#                   and nothing else, the static libraries stay hidden)
 #   <name>Generator writes modelDescription.xml and documentation/index.html
 #                   from the model's variable table
 #   <name>Fmu       (part of `all`) zips the staging directory
@@ -31,12 +31,15 @@ function(add_connector_fmu)
     $<TARGET_OBJECTS:${name}Model>
     $<TARGET_OBJECTS:fmuExportEntryPoints>)
   target_link_libraries(${name} PRIVATE fmuExport)
+  set(exports ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/fmi2Exports.map)
   target_link_options(${name} PRIVATE
+    -Wl,--version-script=${exports}
     -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,--as-needed)
   set_target_properties(${name} PROPERTIES
     PREFIX ""
     SUFFIX ".so"
     LIBRARY_OUTPUT_DIRECTORY ${staging}/binaries/linux64
+    LINK_DEPENDS ${exports}
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
 
