@@ -52,7 +52,8 @@ struct ConnectorResult {
     double tension = 0.0;
     //- Energy stored in the connector [J]
     double potentialEnergy = 0.0;
-    //- Power removed from the bodies by the connector, >= 0 [W]
+    //- Power dissipated by the connector (removed from the bodies and not
+    //  stored), >= 0 [W]
     double dissipatedPower = 0.0;
 };
 

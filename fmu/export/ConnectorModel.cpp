@@ -50,6 +50,14 @@ ConnectorModel::ConnectorModel(ModelIdentity identity)
     B = declareBody(table(), "B", {1, 0, 0});
 }
 
+void ConnectorModel::declareStartAtRest()
+{
+    table().booleanConstant("inputsStartAtRest",
+                            "the start values of inputs and parameters are a "
+                            "configuration where the connector exerts no load",
+                            true);
+}
+
 void ConnectorModel::declareOutputs(const OutputDependencies& d)
 {
     VariableTable& t = table();
@@ -72,7 +80,8 @@ void ConnectorModel::declareOutputs(const OutputDependencies& d)
     t.output("potentialEnergy", Shape::scalar, "J",
              "energy stored in the connector", d.potentialEnergy);
     t.output("dissipatedPower", Shape::scalar, "W",
-             "power removed from the bodies by the connector, never negative",
+             "power dissipated by the connector (removed from the bodies and not "
+             "stored), never negative",
              d.dissipatedPower);
 }
 

@@ -33,6 +33,11 @@ protected:
     //  defined geometry
     explicit ConnectorModel(ModelIdentity identity);
 
+    //- Declares the Boolean constant inputsStartAtRest = true: the start
+    //  values of the inputs and parameters are a configuration without load
+    //  (docs/connector-fmu-interface.md, "Rest configuration")
+    void declareStartAtRest();
+
     //- Declares A.F, A.M, B.F, B.M and the five diagnostics
     void declareOutputs(const OutputDependencies& dependencies);
 

@@ -102,7 +102,8 @@ const std::string& FmuInstance::variableName(fmi2ValueReference vr) const
     return model_->variables().variables()[vr].name;
 }
 
-void FmuInstance::checkValueReference(fmi2ValueReference vr) const
+const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
+                                           Type type) const
 {
     if (vr >= values_.size()) {
         throw UsageError("value reference " + std::to_string(vr)
@@ -110,6 +111,13 @@ void FmuInstance::checkValueReference(fmi2ValueReference vr) const
                          + model_->identity().modelIdentifier + " (0 to "
                          + std::to_string(values_.size() - 1) + ")");
     }
+    const ScalarVariable& v = model_->variables().variables()[vr];
+    if (v.type != type) {
+        throw UsageError("value reference " + std::to_string(vr) + " ("
+                         + v.name + ") is not of type "
+                         + (type == Type::real ? "Real" : "Boolean"));
+    }
+    return v;
 }
 
 void FmuInstance::computeOutputs()
@@ -123,9 +131,8 @@ void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
 {
     bool needsOutputs = false;
     for (std::size_t i = 0; i < n; ++i) {
-        checkValueReference(vr[i]);
         needsOutputs = needsOutputs
-                       || model_->variables().variables()[vr[i]].causality
+                       || variable(vr[i], Type::real).causality
                               == Causality::output;
     }
     if (needsOutputs && !outputsValid_) {
@@ -140,8 +147,7 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
                           const fmi2Real value[])
 {
     for (std::size_t i = 0; i < n; ++i) {
-        checkValueReference(vr[i]);
-        const ScalarVariable& v = model_->variables().variables()[vr[i]];
+        const ScalarVariable& v = variable(vr[i], Type::real);
         if (v.causality == Causality::output) {
             throw UsageError("variable " + v.name + " (value reference "
                              + std::to_string(vr[i])
@@ -161,15 +167,34 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
     outputsValid_ = outputsValid_ && n == 0;
 }
 
+void FmuInstance::getBoolean(const fmi2ValueReference vr[], std::size_t n,
+                             fmi2Boolean value[])
+{
+    for (std::size_t i = 0; i < n; ++i) {
+        variable(vr[i], Type::boolean);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        value[i] = values_[vr[i]] != 0.0 ? fmi2True : fmi2False;
+    }
+}
+
+void FmuInstance::setBoolean(const fmi2ValueReference vr[], std::size_t n)
+{
+    for (std::size_t i = 0; i < n; ++i) {
+        throw UsageError("variable " + variable(vr[i], Type::boolean).name
+                         + " is a constant and cannot be set");
+    }
+}
+
 void FmuInstance::rejectValueReferences(const char* type,
                                         const fmi2ValueReference vr[],
                                         std::size_t n) const
 {
     if (n > 0) {
         throw UsageError("value reference " + std::to_string(vr[0])
-                         + " is not a " + type + " variable: "
+                         + " is not of type " + type + ": "
                          + model_->identity().modelIdentifier
-                         + " has only Real variables");
+                         + " has only Real and Boolean variables");
     }
 }
 

@@ -45,7 +45,11 @@ public:
     void getReal(const fmi2ValueReference vr[], std::size_t n, fmi2Real value[]);
     void setReal(const fmi2ValueReference vr[], std::size_t n,
                  const fmi2Real value[]);
-    //- Integer, Boolean and String: the models declare none
+    void getBoolean(const fmi2ValueReference vr[], std::size_t n,
+                    fmi2Boolean value[]);
+    //- Booleans are constants: any value reference is refused
+    void setBoolean(const fmi2ValueReference vr[], std::size_t n);
+    //- Integer and String: the models declare none
     void rejectValueReferences(const char* type, const fmi2ValueReference vr[],
                                std::size_t n) const;
 
@@ -68,7 +72,8 @@ private:
     //- The saved state behind a handle; UsageError if not one of ours
     SavedState& ownedState(fmi2FMUstate state);
     void startValues();
-    void checkValueReference(fmi2ValueReference vr) const;
+    //- The variable behind vr; UsageError if none or not of type `type`
+    const ScalarVariable& variable(fmi2ValueReference vr, Type type) const;
     void computeOutputs();
     const std::string& variableName(fmi2ValueReference vr) const;
 

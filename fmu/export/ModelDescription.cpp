@@ -21,13 +21,23 @@ const char* causalityName(Causality c)
         return "input";
     case Causality::output:
         return "output";
+    case Causality::local:
+        return "local";
     }
     return "";
 }
 
 const char* variabilityName(Variability v)
 {
-    return v == Variability::fixed ? "fixed" : "continuous";
+    switch (v) {
+    case Variability::constant:
+        return "constant";
+    case Variability::fixed:
+        return "fixed";
+    case Variability::continuous:
+        return "continuous";
+    }
+    return "";
 }
 
 const char* initialName(Initial i)
@@ -149,6 +159,7 @@ std::string modelGuid(const Model& model)
          << id.description << '\n';
     for (const ScalarVariable& v : model.variables().variables()) {
         text << v.name << '|' << v.valueReference << '|'
+             << (v.type == Type::real ? "Real" : "Boolean") << '|'
              << causalityName(v.causality) << '|'
              << variabilityName(v.variability) << '|'
              << initialName(v.initial) << '|' << v.unit << '|'
@@ -193,7 +204,9 @@ std::string modelDescriptionXml(const Model& model)
 
     std::set<std::string> used;
     for (const ScalarVariable& v : variables) {
-        used.insert(v.unit);
+        if (v.type == Type::real) {
+            used.insert(v.unit);
+        }
     }
     x << "  <UnitDefinitions>\n";
     for (const std::string& unit : used) {
@@ -222,9 +235,14 @@ std::string modelDescriptionXml(const Model& model)
         if (v.initial != Initial::none) {
             x << " initial=\"" << initialName(v.initial) << "\"";
         }
-        x << ">\n      <Real unit=\"" << escape(v.unit) << "\"";
-        if (v.initial != Initial::calculated) {
-            x << " start=\"" << formatDouble(v.start) << "\"";
+        if (v.type == Type::boolean) {
+            x << ">\n      <Boolean start=\"" << (v.start != 0.0 ? "true" : "false")
+              << "\"";
+        } else {
+            x << ">\n      <Real unit=\"" << escape(v.unit) << "\"";
+            if (v.initial != Initial::calculated) {
+                x << " start=\"" << formatDouble(v.start) << "\"";
+            }
         }
         x << "/>\n    </ScalarVariable>\n";
     }
@@ -271,7 +289,9 @@ std::string documentationHtml(const Model& model)
         h << "<tr><td><code>" << escape(v.name) << "</code></td><td>"
           << v.valueReference << "</td><td>" << causalityName(v.causality)
           << "</td><td>" << escape(v.unit) << "</td><td>"
-          << (v.initial == Initial::calculated ? "" : formatDouble(v.start))
+          << (v.initial == Initial::calculated ? std::string()
+              : v.type == Type::boolean ? std::string(v.start != 0.0 ? "true" : "false")
+                                        : formatDouble(v.start))
           << "</td><td>" << escape(v.description) << "</td></tr>\n";
     }
     h << "</table>\n</body>\n</html>\n";

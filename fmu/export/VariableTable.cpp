@@ -76,6 +76,23 @@ Block VariableTable::output(const std::string& name, Shape shape,
                dependsOn);
 }
 
+Block VariableTable::booleanConstant(const std::string& name,
+                                     const std::string& description,
+                                     bool value)
+{
+    ScalarVariable v;
+    v.name = name;
+    v.valueReference = fmi2ValueReference(variables_.size());
+    v.type = Type::boolean;
+    v.causality = Causality::local;
+    v.variability = Variability::constant;
+    v.initial = Initial::exact;
+    v.description = description;
+    v.start = value ? 1.0 : 0.0;
+    variables_.push_back(v);
+    return Block{v.valueReference, 1};
+}
+
 Block VariableTable::add(const std::string& name, Shape shape,
                          Causality causality, const std::string& unit,
                          const std::string& description,
@@ -93,7 +110,8 @@ Block VariableTable::add(const std::string& name, Shape shape,
         for (std::size_t i = 0; i < block.size; ++i) {
             const fmi2ValueReference vr = block.first + fmi2ValueReference(i);
             if (vr >= variables_.size()
-                || variables_[vr].causality == Causality::output) {
+                || (variables_[vr].causality != Causality::input
+                    && variables_[vr].causality != Causality::parameter)) {
                 throw std::logic_error("output " + name
                                        + " depends on a value reference that "
                                          "is not a declared input or parameter");

@@ -13,8 +13,10 @@
 
 namespace fmuExport {
 
-enum class Causality { parameter, input, output };
-enum class Variability { fixed, continuous };
+enum class Causality { parameter, input, output, local };
+enum class Variability { constant, fixed, continuous };
+//- FMI base type; a Boolean is stored as 0.0 or 1.0 in the value array
+enum class Type { real, boolean };
 //- `none` omits the attribute (required for inputs)
 enum class Initial { none, exact, calculated };
 //- Scalar "x", vector "x[1..3]", matrix "x[1..3,1..3]" (row, column)
@@ -29,6 +31,7 @@ struct Block {
 struct ScalarVariable {
     std::string name;
     fmi2ValueReference valueReference = 0;
+    Type type = Type::real;
     Causality causality = Causality::parameter;
     Variability variability = Variability::fixed;
     Initial initial = Initial::none;
@@ -57,6 +60,10 @@ public:
     Block output(const std::string& name, Shape shape, const std::string& unit,
                  const std::string& description,
                  const std::vector<Block>& dependsOn);
+
+    //- Boolean constant (causality local, variability constant)
+    Block booleanConstant(const std::string& name,
+                          const std::string& description, bool value);
 
     const std::vector<ScalarVariable>& variables() const { return variables_; }
 

@@ -148,10 +148,10 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[],
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[],
-                          size_t nvr, fmi2Boolean[])
+                          size_t nvr, fmi2Boolean value[])
 {
     return guarded(c, "fmi2GetBoolean", readableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("Boolean", vr, nvr);
+        static_cast<FmuInstance*>(c)->getBoolean(vr, nvr, value);
     });
 }
 
@@ -183,7 +183,7 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                           size_t nvr, const fmi2Boolean[])
 {
     return guarded(c, "fmi2SetBoolean", writableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("Boolean", vr, nvr);
+        static_cast<FmuInstance*>(c)->setBoolean(vr, nvr);
     });
 }
 

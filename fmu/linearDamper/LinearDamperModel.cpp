@@ -42,6 +42,7 @@ public:
         d.potentialEnergy = {};
         d.dissipatedPower = d.loads;
         declareOutputs(d);
+        declareStartAtRest();
     }
 
     void checkParameters(const double* values) const override

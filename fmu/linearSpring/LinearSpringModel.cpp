@@ -49,6 +49,7 @@ public:
         d.potentialEnergy = join(positions, {stiffness_, restLength_});
         d.dissipatedPower = join(motion, {damping_});
         declareOutputs(d);
+        declareStartAtRest();
     }
 
     void checkParameters(const double* values) const override

@@ -100,7 +100,7 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
     EXPECT_EQ(f.GetInteger(in.c, &p, 1, &integer), fmi2Error);
     EXPECT_EQ(in.lastMessage(), "fmi2GetInteger: value reference " + std::to_string(p)
                                     + " is not of type Integer: " + fmu->name
-                                    + " has only Real variables");
+                                    + " has only Real and Boolean variables");
     // The instance is still usable.
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
 }
@@ -220,6 +220,31 @@ TEST_P(FmuApi, DebugLoggingCategories)
     EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
     EXPECT_EQ(in.log.back().category, "logCalls");
     EXPECT_EQ(in.lastMessage(), "fmi2SetupExperiment");
+}
+
+TEST_P(FmuApi, RestConfigurationHasNoLoad)
+{
+    // inputsStartAtRest = true promises zero loads at the start values.
+    Instance in(*fmu);
+    const Fmi2Api& f = fmu->api;
+    ASSERT_EQ(in.initialize({}), fmi2OK);
+    const fmi2ValueReference rest = fmu->ref("inputsStartAtRest");
+    fmi2Boolean value = fmi2False;
+    ASSERT_EQ(f.GetBoolean(in.c, &rest, 1, &value), fmi2OK);
+    EXPECT_EQ(value, fmi2True);
+    ASSERT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
+    std::vector<double> out;
+    ASSERT_EQ(in.get(connectorOutputs(), out), fmi2OK);
+    for (std::size_t i = 0; i < 12; ++i) { // A.F, A.M, B.F, B.M
+        EXPECT_EQ(out[i], 0.0) << connectorOutputs()[i]; // exact: L = |(1,0,0)|
+    }
+    EXPECT_EQ(f.SetBoolean(in.c, &rest, 1, &value), fmi2Error);
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetBoolean: variable inputsStartAtRest is a constant and cannot be set");
+    double real = 0.0;
+    EXPECT_EQ(f.GetReal(in.c, &rest, 1, &real), fmi2Error);
+    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: value reference " + std::to_string(rest)
+                                    + " (inputsStartAtRest) is not of type Real");
 }
 
 FMU_TEST_INSTANTIATE(FmuApi);

@@ -63,6 +63,13 @@ TEST_P(ModelDescription, StartValuesUnitsAndDescriptions)
     for (const pugi::xml_node v : variables()) {
         const std::string name = v.attribute("name").value();
         const std::string causality = v.attribute("causality").value();
+        EXPECT_FALSE(std::string(v.attribute("description").value()).empty()) << name;
+        if (causality == "local") {
+            // Only constants: inputsStartAtRest (Boolean, with a start value)
+            EXPECT_EQ(std::string(v.attribute("variability").value()), "constant") << name;
+            EXPECT_TRUE(v.child("Boolean").attribute("start")) << name;
+            continue;
+        }
         const pugi::xml_node real = v.child("Real");
         ASSERT_TRUE(real) << name;
         if (causality == "input" || causality == "parameter") {
@@ -72,7 +79,6 @@ TEST_P(ModelDescription, StartValuesUnitsAndDescriptions)
             EXPECT_FALSE(real.attribute("start")) << name;
         }
         EXPECT_EQ(declared.count(real.attribute("unit").value()), 1u) << name;
-        EXPECT_FALSE(std::string(v.attribute("description").value()).empty()) << name;
     }
 }
 
