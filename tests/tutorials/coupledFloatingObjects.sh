@@ -70,7 +70,7 @@ checkSpring()
     local caseDir="$1" dat nSteps cols name c
     dat="$caseDir/postProcessing/fmuConnectors/0/spring.dat"
     requireFile "$dat" "connector output"
-    nSteps=$(grep -c '^Time = ' "$caseDir/log.interFoam")
+    nSteps=$(grep -c '^Time = ' "$(solverLog "$caseDir")")
 
     cols=""
     for name in 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
