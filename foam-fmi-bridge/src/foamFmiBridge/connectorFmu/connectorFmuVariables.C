@@ -46,7 +46,8 @@ std::vector<unsigned int> Foam::connectorFmu::vectorRefs
 (
     const std::string& name,
     const label n,
-    const std::string& causality
+    const std::string& causality,
+    const std::string& unit
 ) const
 {
     std::vector<unsigned int> refs;
@@ -91,6 +92,18 @@ std::vector<unsigned int> Foam::connectorFmu::vectorRefs
                     << exit(FatalError);
             }
 
+            // The interface fixes the units; an FMU in other units would
+            // put loads off by a factor without any other sign
+            if (!unit.empty() && var.unit != unit)
+            {
+                FatalErrorInFunction
+                    << where().c_str() << "variable " << element.c_str()
+                    << " has unit '" << var.unit.c_str()
+                    << "'; the connector interface expects '" << unit.c_str()
+                    << "' (docs/connector-fmu-interface.md)"
+                    << exit(FatalError);
+            }
+
             refs.push_back(var.valueReference);
         }
     }
@@ -103,12 +116,12 @@ void Foam::connectorFmu::lookupVariables()
 {
     auto lookupBody = [this](const std::string& body, bodyVariables& vars)
     {
-        vars.r = vectorRefs(body + ".r", 3, "input");
-        vars.R = vectorRefs(body + ".R", 9, "input");
-        vars.v = vectorRefs(body + ".v", 3, "input");
-        vars.omega = vectorRefs(body + ".omega", 3, "input");
-        vars.F = vectorRefs(body + ".F", 3, "output");
-        vars.M = vectorRefs(body + ".M", 3, "output");
+        vars.r = vectorRefs(body + ".r", 3, "input", "m");
+        vars.R = vectorRefs(body + ".R", 9, "input", "1");
+        vars.v = vectorRefs(body + ".v", 3, "input", "m/s");
+        vars.omega = vectorRefs(body + ".omega", 3, "input", "rad/s");
+        vars.F = vectorRefs(body + ".F", 3, "output", "N");
+        vars.M = vectorRefs(body + ".M", 3, "output", "N.m");
     };
 
     lookupBody("A", A_);
@@ -253,7 +266,7 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
             }
         }
         const std::vector<unsigned int> refs =
-            vectorRefs(key, nDeclared, "parameter");
+            vectorRefs(key, nDeclared, "parameter", "");
 
         if (label(refs.size()) != values.size())
         {
