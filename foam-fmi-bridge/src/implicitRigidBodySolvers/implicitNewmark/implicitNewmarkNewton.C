@@ -228,12 +228,22 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
 
         const scalar newNorm = normInf(R);
 
+        DebugInfo
+            << typeName << ": iteration " << nIter << ", residual "
+            << newNorm << ", correction " << dqda*normInf(da)
+            << (fresh ? ", new Jacobian" : "") << endl;
+
         if (std::isfinite(newNorm) && newNorm > residualNorm && !fresh)
         {
             // A stale Jacobian made things worse: undo and rebuild
             a -= da;
             R = R0;
             jacobianDeltaT_ = 0;
+            if (nIter >= maxIter_)
+            {
+                // Leave the restraints evaluated at the final iterate
+                residual(a, tau, fx, qDdotPrev, R);
+            }
             continue;
         }
         if (!(newNorm <= 0.1*residualNorm))
