@@ -53,7 +53,8 @@ double nanosecondsPerCycle(Body&& body)
     for (int i = 0; i < cycles; ++i) {
         body(i);
     }
-    const std::chrono::duration<double, std::nano> elapsed = Clock::now() - start;
+    const std::chrono::duration<double, std::nano> elapsed =
+        Clock::now() - start;
     return elapsed.count() / cycles;
 }
 
@@ -64,16 +65,20 @@ int main(int argc, char** argv)
     const std::string dir = argc > 1 ? argv[1] : FOAMFMI_STAGED_SPRING;
     pugi::xml_document xml;
     if (!xml.load_file((dir + "/modelDescription.xml").c_str())) {
-        std::fprintf(stderr, "fmuOverhead: cannot read %s/modelDescription.xml\n", dir.c_str());
+        std::fprintf(stderr,
+                     "fmuOverhead: cannot read %s/modelDescription.xml\n",
+                     dir.c_str());
         return 1;
     }
     const pugi::xml_node root = xml.child("fmiModelDescription");
     std::vector<fmi2ValueReference> in, out;
     std::vector<std::string> inputNames;
     std::map<std::string, fmi2ValueReference> vr;
-    for (const pugi::xml_node v : root.child("ModelVariables").children("ScalarVariable")) {
+    for (const pugi::xml_node v :
+         root.child("ModelVariables").children("ScalarVariable")) {
         const std::string causality = v.attribute("causality").value();
-        vr[v.attribute("name").value()] = v.attribute("valueReference").as_uint();
+        vr[v.attribute("name").value()] =
+            v.attribute("valueReference").as_uint();
         if (causality == "input") {
             in.push_back(v.attribute("valueReference").as_uint());
             inputNames.push_back(v.attribute("name").value());
@@ -82,14 +87,17 @@ int main(int argc, char** argv)
         }
     }
 
-    void* lib = dlopen((dir + "/binaries/linux64/linearSpring.so").c_str(), RTLD_NOW);
+    void* lib =
+        dlopen((dir + "/binaries/linux64/linearSpring.so").c_str(), RTLD_NOW);
     if (lib == nullptr) {
         std::fprintf(stderr, "fmuOverhead: %s\n", dlerror());
         return 1;
     }
     auto instantiate = symbol<fmi2InstantiateTYPE>(lib, "fmi2Instantiate");
-    auto enterInit = symbol<fmi2EnterInitializationModeTYPE>(lib, "fmi2EnterInitializationMode");
-    auto exitInit = symbol<fmi2ExitInitializationModeTYPE>(lib, "fmi2ExitInitializationMode");
+    auto enterInit = symbol<fmi2EnterInitializationModeTYPE>(
+        lib, "fmi2EnterInitializationMode");
+    auto exitInit = symbol<fmi2ExitInitializationModeTYPE>(
+        lib, "fmi2ExitInitializationMode");
     auto setReal = symbol<fmi2SetRealTYPE>(lib, "fmi2SetReal");
     auto getReal = symbol<fmi2GetRealTYPE>(lib, "fmi2GetReal");
     auto doStep = symbol<fmi2DoStepTYPE>(lib, "fmi2DoStep");
@@ -105,25 +113,28 @@ int main(int argc, char** argv)
     p.damping = 15.0;
     connectors::BodyKinematics A, B;
     A.p_WBo_W = {0.2, -0.4, 1.1};
-    A.R_WB = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+    A.R_WB = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, -2, 0.5).normalized())
+                 .toRotationMatrix();
     A.v_WBo_W = {0.3, 0.1, -0.2};
     A.w_WB_W = {0.05, -0.3, 0.2};
     B.p_WBo_W = {1.9, 0.7, 0.4};
-    B.R_WB = Eigen::AngleAxisd(-1.3, Eigen::Vector3d(0.2, 1, 1).normalized()).toRotationMatrix();
+    B.R_WB = Eigen::AngleAxisd(-1.3, Eigen::Vector3d(0.2, 1, 1).normalized())
+                 .toRotationMatrix();
     B.v_WBo_W = {-0.6, 0.4, 0.25};
     B.w_WB_W = {-0.1, 0.2, 0.4};
 
-    fmi2CallbackFunctions callbacks{quietLogger, nullptr, nullptr, nullptr, nullptr};
-    const fmi2Component c = instantiate("bench", fmi2CoSimulation,
-                                        root.attribute("guid").value(), "", &callbacks,
-                                        fmi2False, fmi2False);
+    fmi2CallbackFunctions callbacks{quietLogger, nullptr, nullptr, nullptr,
+                                    nullptr};
+    const fmi2Component c =
+        instantiate("bench", fmi2CoSimulation, root.attribute("guid").value(),
+                    "", &callbacks, fmi2False, fmi2False);
     if (c == nullptr || enterInit(c) != fmi2OK) {
         return 1;
     }
     const std::map<std::string, double> parameters = {
-        {"A.p[1]", 0.1}, {"A.p[2]", -0.2}, {"A.p[3]", 0.3}, {"B.p[1]", -0.4},
-        {"B.p[2]", 0.05}, {"B.p[3]", 0.2}, {"stiffness", 250.0},
-        {"restLength", 0.7}, {"damping", 15.0}};
+        {"A.p[1]", 0.1},      {"A.p[2]", -0.2},    {"A.p[3]", 0.3},
+        {"B.p[1]", -0.4},     {"B.p[2]", 0.05},    {"B.p[3]", 0.2},
+        {"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
     for (const auto& [name, value] : parameters) {
         setReal(c, &vr.at(name), 1, &value);
     }
@@ -131,7 +142,8 @@ int main(int argc, char** argv)
         return 1;
     }
 
-    // Input vector in the FMU's declaration order (A.r, A.R, A.v, A.omega, B...)
+    // Input vector in the FMU's declaration order (A.r, A.R, A.v, A.omega,
+    // B...)
     std::vector<double> inputs;
     for (const connectors::BodyKinematics* k : {&A, &B}) {
         inputs.insert(inputs.end(), k->p_WBo_W.data(), k->p_WBo_W.data() + 3);
@@ -181,9 +193,12 @@ int main(int argc, char** argv)
 
     std::printf("fmuOverhead: linearSpring, best of %d runs of %d cycles\n",
                 repetitions, cycles);
-    std::printf("  direct: LinearSpring::evaluate                    %8.1f ns\n", lawNs);
-    std::printf("  FMI:    SetReal(%zu) + DoStep + GetReal(%zu)        %8.1f ns\n",
-                in.size(), out.size(), fmiNs);
+    std::printf(
+        "  direct: LinearSpring::evaluate                    %8.1f ns\n",
+        lawNs);
+    std::printf(
+        "  FMI:    SetReal(%zu) + DoStep + GetReal(%zu)        %8.1f ns\n",
+        in.size(), out.size(), fmiNs);
     std::printf("  ratio FMI / direct                                %8.2f\n",
                 fmiNs / lawNs);
     std::printf("  (checksum %.6g)\n", checksum);

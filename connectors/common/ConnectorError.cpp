@@ -23,7 +23,8 @@ ParameterError::ParameterError(const std::string& law, const std::string& name,
                                double value, const std::string& unit,
                                const std::string& allowed)
     : ConnectorError(law + ": parameter " + name + " = " + formatValue(value)
-                     + " " + unit + " is out of range (allowed: " + allowed + ")")
+                     + " " + unit + " is out of range (allowed: " + allowed
+                     + ")")
 {
 }
 
@@ -47,10 +48,9 @@ void requireFinite(const char* law, const char* name, const Vector3& value,
 {
     for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(value[i])) {
-            throw ParameterError(law,
-                                 std::string(name) + "[" + std::to_string(i + 1)
-                                     + "]",
-                                 value[i], unit, "finite");
+            throw ParameterError(
+                law, std::string(name) + "[" + std::to_string(i + 1) + "]",
+                value[i], unit, "finite");
         }
     }
 }
@@ -80,8 +80,9 @@ void requireFiniteInputs(const char* law, const char* body,
         for (int j = 0; j < 3; ++j) {
             if (!std::isfinite(kinematics.R_WB(i, j))) {
                 throw InputError(law,
-                                 std::string(body) + ".R[" + std::to_string(i + 1)
-                                     + "," + std::to_string(j + 1) + "]",
+                                 std::string(body) + ".R["
+                                     + std::to_string(i + 1) + ","
+                                     + std::to_string(j + 1) + "]",
                                  kinematics.R_WB(i, j));
             }
         }

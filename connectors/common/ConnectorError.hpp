@@ -20,8 +20,9 @@ public:
 //- A parameter outside its allowed range
 class ParameterError : public ConnectorError {
 public:
-    ParameterError(const std::string& law, const std::string& name, double value,
-                   const std::string& unit, const std::string& allowed);
+    ParameterError(const std::string& law, const std::string& name,
+                   double value, const std::string& unit,
+                   const std::string& allowed);
 };
 
 //- A non-finite input

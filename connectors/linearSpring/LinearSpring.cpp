@@ -43,8 +43,8 @@ ConnectorResult LinearSpring::evaluate(const BodyKinematics& A,
 
     // Elastic part: k (L - L0) e, or the vector k p_PQ when L0 = 0, which
     // is the same force and stays defined at zero length.
-    const Vector3 elastic =
-        L0 == 0.0 ? Vector3(k * g.p_PQ_W) : Vector3(k * (g.length - L0) * g.e_W);
+    const Vector3 elastic = L0 == 0.0 ? Vector3(k * g.p_PQ_W)
+                                      : Vector3(k * (g.length - L0) * g.e_W);
     const double dampingTension = c * g.lengthRate;
 
     ConnectorResult result;

@@ -24,8 +24,8 @@ public:
 protected:
     //- For each output group, the input and parameter blocks it depends on
     struct OutputDependencies {
-        std::vector<Block> loads, length, lengthRate, tension,
-            potentialEnergy, dissipatedPower;
+        std::vector<Block> loads, length, lengthRate, tension, potentialEnergy,
+            dissipatedPower;
     };
 
     //- Declares the parameters A.p, B.p and the inputs of A and B, with B

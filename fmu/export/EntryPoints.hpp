@@ -9,22 +9,17 @@
 namespace fmuExport {
 
 constexpr unsigned anyLiveState =
-    instantiated | initializationMode
-    | stepComplete | terminated | error;
-constexpr unsigned savableState = instantiated
-                                  | initializationMode
-                                  | stepComplete
-                                  | terminated;
-constexpr unsigned readableState = initializationMode
-                                   | stepComplete
-                                   | terminated | error;
-constexpr unsigned writableState = instantiated
-                                   | initializationMode
-                                   | stepComplete;
+    instantiated | initializationMode | stepComplete | terminated | error;
+constexpr unsigned savableState =
+    instantiated | initializationMode | stepComplete | terminated;
+constexpr unsigned readableState =
+    initializationMode | stepComplete | terminated | error;
+constexpr unsigned writableState =
+    instantiated | initializationMode | stepComplete;
 
 template <class Body>
-inline fmi2Status guarded(fmi2Component c, const char* function, unsigned allowed,
-                   Body&& body)
+inline fmi2Status guarded(fmi2Component c, const char* function,
+                          unsigned allowed, Body&& body)
 {
     if (c == nullptr) {
         return fmi2Error;
@@ -34,11 +29,10 @@ inline fmi2Status guarded(fmi2Component c, const char* function, unsigned allowe
 
 //- Every function of the standard that a co-simulation FMU does not provide
 inline fmi2Status unsupported(fmi2Component c, const char* function,
-                       const char* reason)
+                              const char* reason)
 {
-    return guarded(c, function, anyLiveState | fatal, [&] {
-        throw UsageError(reason);
-    });
+    return guarded(c, function, anyLiveState | fatal,
+                   [&] { throw UsageError(reason); });
 }
 
 } // namespace fmuExport

@@ -9,11 +9,11 @@ namespace fmuExport {
 
 FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                          const fmi2CallbackFunctions& callbacks, bool loggingOn)
-    : model_(std::move(model)),
-      instanceName_(std::move(instanceName)),
-      guid_(modelGuid(*model_)),
-      callbacks_(callbacks),
-      logCalls_(loggingOn)
+    : model_(std::move(model))
+    , instanceName_(std::move(instanceName))
+    , guid_(modelGuid(*model_))
+    , callbacks_(callbacks)
+    , logCalls_(loggingOn)
 {
     startValues();
 }
@@ -40,7 +40,8 @@ void FmuInstance::logFailure(fmi2Status status, const char* function,
 
 void FmuInstance::startValues()
 {
-    const std::vector<ScalarVariable>& variables = model_->variables().variables();
+    const std::vector<ScalarVariable>& variables =
+        model_->variables().variables();
     values_.resize(variables.size());
     for (const ScalarVariable& v : variables) {
         values_[v.valueReference] = v.start;
@@ -103,7 +104,7 @@ const std::string& FmuInstance::variableName(fmi2ValueReference vr) const
 }
 
 const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
-                                           Type type) const
+                                            Type type) const
 {
     if (vr >= values_.size()) {
         throw UsageError("value reference " + std::to_string(vr)
@@ -113,8 +114,8 @@ const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
     }
     const ScalarVariable& v = model_->variables().variables()[vr];
     if (v.type != type) {
-        throw UsageError("value reference " + std::to_string(vr) + " ("
-                         + v.name + ") is not of type "
+        throw UsageError("value reference " + std::to_string(vr) + " (" + v.name
+                         + ") is not of type "
                          + (type == Type::real ? "Real" : "Boolean"));
     }
     return v;
@@ -131,9 +132,9 @@ void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
 {
     bool needsOutputs = false;
     for (std::size_t i = 0; i < n; ++i) {
-        needsOutputs = needsOutputs
-                       || variable(vr[i], Type::real).causality
-                              == Causality::output;
+        needsOutputs =
+            needsOutputs
+            || variable(vr[i], Type::real).causality == Causality::output;
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
@@ -259,9 +260,11 @@ void FmuInstance::freeState(fmi2FMUstate state)
         return;
     }
     ownedState(state);
-    savedStates_.erase(std::find_if(
-        savedStates_.begin(), savedStates_.end(),
-        [state](const std::unique_ptr<SavedState>& s) { return s.get() == state; }));
+    savedStates_.erase(
+        std::find_if(savedStates_.begin(), savedStates_.end(),
+                     [state](const std::unique_ptr<SavedState>& s) {
+                         return s.get() == state;
+                     }));
 }
 
 std::size_t FmuInstance::serializedStateSize(fmi2FMUstate state)

@@ -28,7 +28,8 @@ public:
     //  fatal. Any other exception: fmi2Error, state error. Every failure is
     //  logged as "<function>: <message>" in category logStatusError.
     template <class Body>
-    fmi2Status call(const char* function, unsigned allowed, Body&& body) noexcept;
+    fmi2Status call(const char* function, unsigned allowed,
+                    Body&& body) noexcept;
 
     //- Sends a message to the environment's logger; never throws
     void log(fmi2Status status, const char* category,
@@ -42,7 +43,8 @@ public:
     void terminate();
     void reset();
 
-    void getReal(const fmi2ValueReference vr[], std::size_t n, fmi2Real value[]);
+    void getReal(const fmi2ValueReference vr[], std::size_t n,
+                 fmi2Real value[]);
     void setReal(const fmi2ValueReference vr[], std::size_t n,
                  const fmi2Real value[]);
     void getBoolean(const fmi2ValueReference vr[], std::size_t n,
@@ -61,7 +63,8 @@ public:
     void setState(fmi2FMUstate state);
     void freeState(fmi2FMUstate state);
     std::size_t serializedStateSize(fmi2FMUstate state);
-    void serializeState(fmi2FMUstate state, fmi2Byte buffer[], std::size_t size);
+    void serializeState(fmi2FMUstate state, fmi2Byte buffer[],
+                        std::size_t size);
     fmi2FMUstate deserializeState(const fmi2Byte bytes[], std::size_t size,
                                   fmi2FMUstate reuse);
 

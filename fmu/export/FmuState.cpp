@@ -108,8 +108,7 @@ SavedState deserializeState(const char* bytes, std::size_t size,
         throw UsageError("serialized state belongs to the FMU with GUID "
                          + std::string(header.guid) + ", not " + guid);
     }
-    if (header.valueCount != valueCount
-        || size != serializedSize(valueCount)) {
+    if (header.valueCount != valueCount || size != serializedSize(valueCount)) {
         throw UsageError("serialized state has " + std::to_string(size)
                          + " bytes, expected "
                          + std::to_string(serializedSize(valueCount)));

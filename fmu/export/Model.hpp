@@ -39,7 +39,10 @@ public:
     virtual void computeOutputs(double* values) const = 0;
 
 protected:
-    explicit Model(ModelIdentity identity) : identity_(std::move(identity)) {}
+    explicit Model(ModelIdentity identity)
+        : identity_(std::move(identity))
+    {
+    }
 
     VariableTable& table() { return variables_; }
 

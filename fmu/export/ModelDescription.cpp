@@ -161,9 +161,9 @@ std::string modelGuid(const Model& model)
         text << v.name << '|' << v.valueReference << '|'
              << (v.type == Type::real ? "Real" : "Boolean") << '|'
              << causalityName(v.causality) << '|'
-             << variabilityName(v.variability) << '|'
-             << initialName(v.initial) << '|' << v.unit << '|'
-             << v.description << '|' << formatDouble(v.start) << '|';
+             << variabilityName(v.variability) << '|' << initialName(v.initial)
+             << '|' << v.unit << '|' << v.description << '|'
+             << formatDouble(v.start) << '|';
         for (fmi2ValueReference d : v.dependencies) {
             text << d << ' ';
         }
@@ -182,7 +182,8 @@ std::string modelGuid(const Model& model)
 std::string modelDescriptionXml(const Model& model)
 {
     const ModelIdentity& id = model.identity();
-    const std::vector<ScalarVariable>& variables = model.variables().variables();
+    const std::vector<ScalarVariable>& variables =
+        model.variables().variables();
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\""
@@ -236,8 +237,8 @@ std::string modelDescriptionXml(const Model& model)
             x << " initial=\"" << initialName(v.initial) << "\"";
         }
         if (v.type == Type::boolean) {
-            x << ">\n      <Boolean start=\"" << (v.start != 0.0 ? "true" : "false")
-              << "\"";
+            x << ">\n      <Boolean start=\""
+              << (v.start != 0.0 ? "true" : "false") << "\"";
         } else {
             x << ">\n      <Real unit=\"" << escape(v.unit) << "\"";
             if (v.initial != Initial::calculated) {
@@ -273,7 +274,8 @@ std::string documentationHtml(const Model& model)
 {
     const ModelIdentity& id = model.identity();
     std::ostringstream h;
-    h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta "
+         "charset=\"utf-8\">\n"
       << "<title>" << escape(id.modelIdentifier) << "</title>\n"
       << "<style>table{border-collapse:collapse}td,th{border:1px solid #999;"
          "padding:2px 6px}</style>\n</head>\n<body>\n"
@@ -290,8 +292,9 @@ std::string documentationHtml(const Model& model)
           << v.valueReference << "</td><td>" << causalityName(v.causality)
           << "</td><td>" << escape(v.unit) << "</td><td>"
           << (v.initial == Initial::calculated ? std::string()
-              : v.type == Type::boolean ? std::string(v.start != 0.0 ? "true" : "false")
-                                        : formatDouble(v.start))
+              : v.type == Type::boolean
+                  ? std::string(v.start != 0.0 ? "true" : "false")
+                  : formatDouble(v.start))
           << "</td><td>" << escape(v.description) << "</td></tr>\n";
     }
     h << "</table>\n</body>\n</html>\n";
@@ -299,4 +302,3 @@ std::string documentationHtml(const Model& model)
 }
 
 } // namespace fmuExport
-

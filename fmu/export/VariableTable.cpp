@@ -43,8 +43,8 @@ std::string elementDescription(const std::string& description, Shape shape,
     case Shape::vector3:
         return description + ", component " + std::to_string(i + 1);
     case Shape::matrix3:
-        return description + ", row " + std::to_string(i / 3 + 1)
-               + ", column " + std::to_string(i % 3 + 1);
+        return description + ", row " + std::to_string(i / 3 + 1) + ", column "
+               + std::to_string(i % 3 + 1);
     }
     return description;
 }
@@ -77,8 +77,7 @@ Block VariableTable::output(const std::string& name, Shape shape,
 }
 
 Block VariableTable::booleanConstant(const std::string& name,
-                                     const std::string& description,
-                                     bool value)
+                                     const std::string& description, bool value)
 {
     ScalarVariable v;
     v.name = name;
@@ -112,9 +111,10 @@ Block VariableTable::add(const std::string& name, Shape shape,
             if (vr >= variables_.size()
                 || (variables_[vr].causality != Causality::input
                     && variables_[vr].causality != Causality::parameter)) {
-                throw std::logic_error("output " + name
-                                       + " depends on a value reference that "
-                                         "is not a declared input or parameter");
+                throw std::logic_error(
+                    "output " + name
+                    + " depends on a value reference that "
+                      "is not a declared input or parameter");
             }
             dependencies.push_back(vr);
         }

@@ -74,12 +74,13 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c,
-                                   const fmi2Byte serializedState[], size_t size,
-                                   fmi2FMUstate* FMUstate)
+                                   const fmi2Byte serializedState[],
+                                   size_t size, fmi2FMUstate* FMUstate)
 {
     return guarded(c, "fmi2DeSerializeFMUstate", anyLiveState, [&] {
         requireNonNull(FMUstate, "FMUstate");
-        *FMUstate = instance(c).deserializeState(serializedState, size, *FMUstate);
+        *FMUstate =
+            instance(c).deserializeState(serializedState, size, *FMUstate);
     });
 }
 

@@ -12,9 +12,9 @@
 
 namespace {
 
+using fmuExport::anyLiveState;
 using fmuExport::FmuInstance;
 using fmuExport::guarded;
-using fmuExport::anyLiveState;
 using fmuExport::readableState;
 using fmuExport::writableState;
 
@@ -33,12 +33,19 @@ void logInstantiateError(const fmi2CallbackFunctions* functions,
 
 extern "C" {
 
-const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char* fmi2GetTypesPlatform(void)
+{
+    return fmi2TypesPlatform;
+}
 
-const char* fmi2GetVersion(void) { return fmi2Version; }
+const char* fmi2GetVersion(void)
+{
+    return fmi2Version;
+}
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn,
-                               size_t nCategories, const fmi2String categories[])
+                               size_t nCategories,
+                               const fmi2String categories[])
 {
     return guarded(c, "fmi2SetDebugLogging", anyLiveState, [&] {
         static_cast<FmuInstance*>(c)->setDebugLogging(loggingOn != fmi2False,
@@ -47,7 +54,8 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn,
 }
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
-                              fmi2String fmuGUID, fmi2String fmuResourceLocation,
+                              fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation,
                               const fmi2CallbackFunctions* functions,
                               fmi2Boolean visible, fmi2Boolean loggingOn)
 {
@@ -66,16 +74,17 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
         const std::string name = model->identity().modelIdentifier;
         if (fmuType != fmi2CoSimulation) {
             logInstantiateError(functions, instanceName,
-                                name + " supports co-simulation only "
-                                       "(fmuType fmi2CoSimulation)");
+                                name
+                                    + " supports co-simulation only "
+                                      "(fmuType fmi2CoSimulation)");
             return nullptr;
         }
         const std::string guid = fmuExport::modelGuid(*model);
         if (fmuGUID == nullptr || guid != fmuGUID) {
-            logInstantiateError(functions, instanceName,
-                                "GUID " + std::string(fmuGUID ? fmuGUID : "(null)")
-                                    + " does not match " + name + "'s GUID "
-                                    + guid);
+            logInstantiateError(
+                functions, instanceName,
+                "GUID " + std::string(fmuGUID ? fmuGUID : "(null)")
+                    + " does not match " + name + "'s GUID " + guid);
             return nullptr;
         }
         return new FmuInstance(std::move(model), instanceName, *functions,
@@ -108,15 +117,16 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
-    return guarded(c, "fmi2EnterInitializationMode", fmuExport::instantiated,
-                   [&] { static_cast<FmuInstance*>(c)->enterInitializationMode(); });
+    return guarded(
+        c, "fmi2EnterInitializationMode", fmuExport::instantiated,
+        [&] { static_cast<FmuInstance*>(c)->enterInitializationMode(); });
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
-    return guarded(c, "fmi2ExitInitializationMode",
-                   fmuExport::initializationMode,
-                   [&] { static_cast<FmuInstance*>(c)->exitInitializationMode(); });
+    return guarded(
+        c, "fmi2ExitInitializationMode", fmuExport::initializationMode,
+        [&] { static_cast<FmuInstance*>(c)->exitInitializationMode(); });
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
@@ -182,9 +192,8 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[],
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                           size_t nvr, const fmi2Boolean[])
 {
-    return guarded(c, "fmi2SetBoolean", writableState, [&] {
-        static_cast<FmuInstance*>(c)->setBoolean(vr, nvr);
-    });
+    return guarded(c, "fmi2SetBoolean", writableState,
+                   [&] { static_cast<FmuInstance*>(c)->setBoolean(vr, nvr); });
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[],

@@ -22,7 +22,8 @@ inline Matrix3 rotation(double angle, const Vector3& axis)
     return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
-inline BodyKinematics body(const Vector3& r, const Matrix3& R = Matrix3::Identity(),
+inline BodyKinematics body(const Vector3& r,
+                           const Matrix3& R = Matrix3::Identity(),
                            const Vector3& v = Vector3::Zero(),
                            const Vector3& omega = Vector3::Zero())
 {
@@ -40,7 +41,8 @@ inline BodyKinematics randomBody(std::mt19937& rng)
     std::uniform_real_distribution<double> u(-2.0, 2.0);
     const Vector3 axis(u(rng), u(rng), u(rng));
     return body(Vector3(u(rng), u(rng), u(rng)), rotation(u(rng), axis),
-                Vector3(u(rng), u(rng), u(rng)), Vector3(u(rng), u(rng), u(rng)));
+                Vector3(u(rng), u(rng), u(rng)),
+                Vector3(u(rng), u(rng), u(rng)));
 }
 
 //- Power delivered by the connector to both bodies [W]:

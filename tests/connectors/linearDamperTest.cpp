@@ -16,7 +16,8 @@ using connectors::LinearDamper;
 using connectors::LinearDamperParameters;
 using connectors::ParameterError;
 
-LinearDamperParameters damperParameters(double c, const Vector3& pA = Vector3::Zero(),
+LinearDamperParameters damperParameters(double c,
+                                        const Vector3& pA = Vector3::Zero(),
                                         const Vector3& pB = Vector3::Zero())
 {
     LinearDamperParameters p;
@@ -31,13 +32,15 @@ TEST(LinearDamper, AnalyticRotatedBodies)
     // A at the origin turned 90 deg about z, A.p = (1,0,0): arm (0,1,0),
     // P = (0,1,0); A spins at 1 rad/s about z: v_P = (0,0,1) x (0,1,0) =
     // (-1,0,0). B at (0,4,4), B.p = 0, v_B = (2,3,-1):
-    // p_PQ = (0,3,4), L = 5, e = (0,0.6,0.8), v_rel = (2,3,-1) - (-1,0,0) = (3,3,-1),
-    // dL/dt = 1.8 - 0.8 = 1, c = 6: T = 6 N, f_A = (0,3.6,4.8),
-    // m_A = (0,1,0) x f_A = (4.8,0,0), D = 6 W.
+    // p_PQ = (0,3,4), L = 5, e = (0,0.6,0.8), v_rel = (2,3,-1) - (-1,0,0) =
+    // (3,3,-1), dL/dt = 1.8 - 0.8 = 1, c = 6: T = 6 N, f_A = (0,3.6,4.8), m_A =
+    // (0,1,0) x f_A = (4.8,0,0), D = 6 W.
     const LinearDamper damper(damperParameters(6.0, Vector3(1, 0, 0)));
-    const BodyKinematics A = body(Vector3::Zero(), rotation(EIGEN_PI / 2, Vector3::UnitZ()),
-                                  Vector3::Zero(), Vector3(0, 0, 1));
-    const BodyKinematics B = body(Vector3(0, 4, 4), Matrix3::Identity(), Vector3(2, 3, -1));
+    const BodyKinematics A =
+        body(Vector3::Zero(), rotation(EIGEN_PI / 2, Vector3::UnitZ()),
+             Vector3::Zero(), Vector3(0, 0, 1));
+    const BodyKinematics B =
+        body(Vector3(0, 4, 4), Matrix3::Identity(), Vector3(2, 3, -1));
     const connectors::ConnectorResult r = damper.evaluate(A, B);
     // Tolerance: cos(pi/2) ~ 6e-17 in R_A perturbs the arm by ~1e-16 m;
     // with O(10) values the error is ~1e-15. 1e-12 leaves a wide margin.
@@ -58,7 +61,8 @@ TEST(LinearDamper, MotionAcrossTheAxisGivesNoForce)
     // B circles around A at fixed distance: v_rel is normal to the axis.
     const LinearDamper damper(damperParameters(50.0));
     const connectors::ConnectorResult r = damper.evaluate(
-        body(Vector3::Zero()), body(Vector3(2, 0, 0), Matrix3::Identity(), Vector3(0, 3, -1)));
+        body(Vector3::Zero()),
+        body(Vector3(2, 0, 0), Matrix3::Identity(), Vector3(0, 3, -1)));
     EXPECT_EQ(r.lengthRate, 0.0); // exact: e = (1,0,0)
     EXPECT_EQ(r.A.f_W, Vector3::Zero());
     EXPECT_EQ(r.dissipatedPower, 0.0);
@@ -81,7 +85,8 @@ TEST(LinearDamper, DissipatesAndBalances)
         EXPECT_NEAR(powerIntoBodies(r, A, B), -r.dissipatedPower, 1e-9);
         EXPECT_EQ(r.A.f_W + r.B.f_W, Vector3::Zero());
         // Tolerance: arms of O(4) m times forces up to ~1e3 N: ~1e-12 N.m.
-        expectVectorNear(totalMomentAboutOrigin(r, A, B), Vector3::Zero(), 1e-9);
+        expectVectorNear(totalMomentAboutOrigin(r, A, B), Vector3::Zero(),
+                         1e-9);
     }
 }
 
@@ -110,12 +115,14 @@ TEST(LinearDamperErrors, Messages)
             LinearDamper d(damperParameters(
                 1.0, Vector3(0, 0, std::numeric_limits<double>::infinity())));
         },
-        "linearDamper: parameter A.p[3] = inf m is out of range (allowed: finite)");
+        "linearDamper: parameter A.p[3] = inf m is out of range (allowed: "
+        "finite)");
     const LinearDamper damper(damperParameters(1.0));
     BodyKinematics B = body(Vector3(1, 0, 0));
     B.v_WBo_W[1] = std::numeric_limits<double>::quiet_NaN();
-    expectThrowWithMessage<InputError>([&] { damper.evaluate(body(Vector3::Zero()), B); },
-                                       "linearDamper: input B.v[2] = nan is not finite");
+    expectThrowWithMessage<InputError>(
+        [&] { damper.evaluate(body(Vector3::Zero()), B); },
+        "linearDamper: input B.v[2] = nan is not finite");
 }
 
 } // namespace

@@ -31,12 +31,14 @@ TEST(LinearSpring, ZeroForceAtRestLength)
     // placed exactly 1.5 m apart along a skew direction.
     const LinearSpring spring(springParameters(
         200.0, 1.5, 0.0, Vector3(0.1, -0.2, 0.3), Vector3(-0.4, 0.0, 0.2)));
-    const BodyKinematics A = body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 1, 0)));
+    const BodyKinematics A =
+        body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 1, 0)));
     const Vector3 p_WP = A.p_WBo_W + A.R_WB * spring.parameters().p_AoP_A;
     const Vector3 e = Vector3(2, -1, 2) / 3.0;
     const Matrix3 R_B = rotation(-1.1, Vector3(0, 1, 1));
     const Vector3 p_WQ = p_WP + 1.5 * e;
-    const BodyKinematics B = body(p_WQ - R_B * spring.parameters().p_BoQ_B, R_B);
+    const BodyKinematics B =
+        body(p_WQ - R_B * spring.parameters().p_BoQ_B, R_B);
     const ConnectorResult r = spring.evaluate(A, B);
     // Tolerance: the length is rebuilt from sums of O(1) m coordinates, so
     // L - L0 is exact only to a few ulps of 1.5 (~1e-15 m); k = 200 N/m
@@ -73,10 +75,12 @@ TEST(LinearSpring, RotatedBodiesWithOffsetAttachments)
     // p_PQ = (0,3,4), L = 5 m, e = (0,0.6,0.8); k = 10, L0 = 3: T = 20 N,
     // f_A = (0,12,16), f_B = -f_A, m_A = (0,1,0) x f_A = (16,0,0),
     // m_B = (0,0,-1) x f_B = (-12,0,0), V = 20 J.
-    const LinearSpring spring(springParameters(10.0, 3.0, 0.0, Vector3(1, 0, 0),
-                                               Vector3(0, -1, 0)));
-    const BodyKinematics A = body(Vector3(1, 2, 3), rotation(EIGEN_PI / 2, Vector3::UnitZ()));
-    const BodyKinematics B = body(Vector3(1, 6, 8), rotation(EIGEN_PI / 2, Vector3::UnitX()));
+    const LinearSpring spring(
+        springParameters(10.0, 3.0, 0.0, Vector3(1, 0, 0), Vector3(0, -1, 0)));
+    const BodyKinematics A =
+        body(Vector3(1, 2, 3), rotation(EIGEN_PI / 2, Vector3::UnitZ()));
+    const BodyKinematics B =
+        body(Vector3(1, 6, 8), rotation(EIGEN_PI / 2, Vector3::UnitX()));
     const ConnectorResult r = spring.evaluate(A, B);
     // Tolerance: cos(pi/2) = 6e-17 instead of 0 in the rotation matrices
     // perturbs the lever arms by ~1e-16 m; times forces of 20 N and a few
@@ -98,11 +102,12 @@ TEST(LinearSpring, DampingUsesTheVelocityOfTheAttachmentPoints)
     // at (1,5,0). e = (1,0,0), dL/dt = (1 - -2) = 3 m/s (the y velocity is
     // across the axis). k = 10, L0 = 1, c = 4: T = 10*2 + 4*3 = 32 N,
     // m_A = (0,1,0) x (32,0,0) = (0,0,-32), D = 4 * 9 = 36 W.
-    const LinearSpring spring(springParameters(10.0, 1.0, 4.0, Vector3(0, 1, 0)));
+    const LinearSpring spring(
+        springParameters(10.0, 1.0, 4.0, Vector3(0, 1, 0)));
     const BodyKinematics A = body(Vector3::Zero(), Matrix3::Identity(),
                                   Vector3::Zero(), Vector3(0, 0, 2));
-    const BodyKinematics B = body(Vector3(3, 1, 0), Matrix3::Identity(),
-                                  Vector3(1, 5, 0));
+    const BodyKinematics B =
+        body(Vector3(3, 1, 0), Matrix3::Identity(), Vector3(1, 5, 0));
     const ConnectorResult r = spring.evaluate(A, B);
     // Exact inputs, exact arithmetic: tolerance 0.
     EXPECT_EQ(r.lengthRate, 3.0);
@@ -126,7 +131,8 @@ TEST(LinearSpring, EqualAndOppositeForcesAndZeroTotalMoment)
         // Tolerance: moments are sums of products of O(4) m arms and
         // forces up to ~3e3 N; round-off ~1e-16 * 4 * 3e3 * a few terms
         // ~1e-11 N.m. 1e-9 N.m leaves a margin of 100.
-        expectVectorNear(totalMomentAboutOrigin(r, A, B), Vector3::Zero(), 1e-9);
+        expectVectorNear(totalMomentAboutOrigin(r, A, B), Vector3::Zero(),
+                         1e-9);
     }
 }
 
@@ -135,8 +141,8 @@ TEST(LinearSpring, PowerBalance)
     // Power into the bodies = -dV/dt - D with dV/dt = k (L - L0) dL/dt.
     std::mt19937 rng(777);
     const double k = 120.0, L0 = 0.6, c = 7.0;
-    const LinearSpring spring(springParameters(k, L0, c, Vector3(0.2, 0.1, -0.3),
-                                               Vector3(0.0, -0.5, 0.1)));
+    const LinearSpring spring(springParameters(
+        k, L0, c, Vector3(0.2, 0.1, -0.3), Vector3(0.0, -0.5, 0.1)));
     for (int i = 0; i < 200; ++i) {
         const BodyKinematics A = randomBody(rng);
         const BodyKinematics B = randomBody(rng);
@@ -154,7 +160,8 @@ struct Path {
     BodyKinematics A(double t) const
     {
         const Vector3 axis = Vector3(1, 2, 2) / 3.0;
-        return body(Vector3(0.3 * std::sin(t), 0.2 * t, 0.0), rotation(0.5 * t, axis),
+        return body(Vector3(0.3 * std::sin(t), 0.2 * t, 0.0),
+                    rotation(0.5 * t, axis),
                     Vector3(0.3 * std::cos(t), 0.2, 0.0), 0.5 * axis);
     }
     BodyKinematics B(double t) const
@@ -162,7 +169,8 @@ struct Path {
         const Vector3 axis = Vector3(0, 0.6, 0.8);
         return body(Vector3(2.0 + 0.5 * std::cos(2 * t), 1.0, 0.4 * t),
                     rotation(0.8 * std::sin(t), axis),
-                    Vector3(-std::sin(2 * t), 0.0, 0.4), 0.8 * std::cos(t) * axis);
+                    Vector3(-std::sin(2 * t), 0.0, 0.4),
+                    0.8 * std::cos(t) * axis);
     }
 };
 
