@@ -36,6 +36,8 @@ protected:
 #define FMU_TEST_INSTANTIATE(suite)                                            \
     INSTANTIATE_TEST_SUITE_P(                                                  \
         Connectors, suite, ::testing::ValuesIn(fmuTest::connectorFmuNames()),  \
-        [](const ::testing::TestParamInfo<std::string>& info) { return info.param; })
+        [](const ::testing::TestParamInfo<std::string>& info) {                \
+            return info.param;                                                 \
+        })
 
 #endif

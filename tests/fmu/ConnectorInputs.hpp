@@ -7,8 +7,8 @@
 #include <map>
 #include <string>
 
-#include "common/Kinematics.hpp"
 #include "FmuHarness.hpp"
+#include "common/Kinematics.hpp"
 
 namespace fmuTest {
 
@@ -29,23 +29,25 @@ inline std::map<std::string, double> inputs(const BodyKinematics& A,
                                             const BodyKinematics& B)
 {
     std::map<std::string, double> m;
-    for (const auto& [prefix, k] : {std::pair<std::string, const BodyKinematics&>{"A", A},
-                                    std::pair<std::string, const BodyKinematics&>{"B", B}}) {
+    for (const auto& [prefix, k] :
+         {std::pair<std::string, const BodyKinematics&>{"A", A},
+          std::pair<std::string, const BodyKinematics&>{"B", B}}) {
         addVector(m, prefix + ".r", k.p_WBo_W);
         addVector(m, prefix + ".v", k.v_WBo_W);
         addVector(m, prefix + ".omega", k.w_WB_W);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
-                m[prefix + ".R[" + std::to_string(i + 1) + "," + std::to_string(j + 1)
-                  + "]"] = k.R_WB(i, j);
+                m[prefix + ".R[" + std::to_string(i + 1) + ","
+                  + std::to_string(j + 1) + "]"] = k.R_WB(i, j);
             }
         }
     }
     return m;
 }
 
-inline BodyKinematics kinematics(const Vector3& r, double angle, const Vector3& axis,
-                                 const Vector3& v, const Vector3& omega)
+inline BodyKinematics kinematics(const Vector3& r, double angle,
+                                 const Vector3& axis, const Vector3& v,
+                                 const Vector3& omega)
 {
     BodyKinematics k;
     k.p_WBo_W = r;
@@ -72,8 +74,8 @@ inline BodyKinematics genericB()
 //  the FMU declares)
 inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
 {
-    std::map<std::string, double> all = {{"stiffness", 250.0}, {"restLength", 0.7},
-                                         {"damping", 15.0}};
+    std::map<std::string, double> all = {
+        {"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
     addVector(all, "A.p", Vector3(0.1, -0.2, 0.3));
     addVector(all, "B.p", Vector3(-0.4, 0.05, 0.2));
     std::map<std::string, double> declared;

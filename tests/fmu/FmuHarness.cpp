@@ -32,7 +32,8 @@ void unzip(const std::string& archive, const std::filesystem::path& target)
         std::ofstream out(path, std::ios::binary);
         char buffer[8192];
         zip_int64_t got = 0;
-        while (file != nullptr && (got = zip_fread(file, buffer, sizeof buffer)) > 0) {
+        while (file != nullptr
+               && (got = zip_fread(file, buffer, sizeof buffer)) > 0) {
             out.write(buffer, got);
         }
         if (file != nullptr) {
@@ -61,7 +62,8 @@ std::string fmuPath(const std::string& name)
     return std::string(FOAMFMI_FMU_DIR) + "/" + name + ".fmu";
 }
 
-LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
+LoadedFmu::LoadedFmu(const std::string& modelName)
+    : name(modelName)
 {
     std::string pattern =
         (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
@@ -76,10 +78,13 @@ LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
     }
     const pugi::xml_node root = description.child("fmiModelDescription");
     guid = root.attribute("guid").value();
-    for (const pugi::xml_node v : root.child("ModelVariables").children("ScalarVariable")) {
-        vr[v.attribute("name").value()] = v.attribute("valueReference").as_uint();
+    for (const pugi::xml_node v :
+         root.child("ModelVariables").children("ScalarVariable")) {
+        vr[v.attribute("name").value()] =
+            v.attribute("valueReference").as_uint();
     }
-    const std::string so = (directory / "binaries" / "linux64" / (name + ".so")).string();
+    const std::string so =
+        (directory / "binaries" / "linux64" / (name + ".so")).string();
     library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (library_ == nullptr) {
         throw std::runtime_error("dlopen " + so + ": " + dlerror());
@@ -133,7 +138,8 @@ Instance::~Instance()
 
 fmi2Status Instance::initialize(const std::map<std::string, double>& parameters)
 {
-    fmi2Status s = fmu_.api.SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
+    fmi2Status s =
+        fmu_.api.SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
     if (s == fmi2OK) {
         s = fmu_.api.EnterInitializationMode(c);
     }
@@ -169,7 +175,8 @@ double Instance::get(const std::string& name)
 {
     std::vector<double> v;
     if (get({name}, v) != fmi2OK) {
-        throw std::runtime_error("fmi2GetReal(" + name + ") failed: " + lastMessage());
+        throw std::runtime_error("fmi2GetReal(" + name
+                                 + ") failed: " + lastMessage());
     }
     return v[0];
 }
@@ -182,9 +189,10 @@ std::string Instance::lastMessage() const
 const std::vector<std::string>& connectorOutputs()
 {
     static const std::vector<std::string> names = {
-        "A.F[1]", "A.F[2]", "A.F[3]", "A.M[1]", "A.M[2]", "A.M[3]",
-        "B.F[1]", "B.F[2]", "B.F[3]", "B.M[1]", "B.M[2]", "B.M[3]",
-        "length", "lengthRate", "tension", "potentialEnergy", "dissipatedPower"};
+        "A.F[1]",          "A.F[2]",         "A.F[3]", "A.M[1]",     "A.M[2]",
+        "A.M[3]",          "B.F[1]",         "B.F[2]", "B.F[3]",     "B.M[1]",
+        "B.M[2]",          "B.M[3]",         "length", "lengthRate", "tension",
+        "potentialEnergy", "dissipatedPower"};
     return names;
 }
 

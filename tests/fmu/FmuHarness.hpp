@@ -15,21 +15,54 @@
 
 namespace fmuTest {
 
-// Every function of fmi2Functions.h, without the fmi2 prefix
-#define FMU_TEST_FMI2_FUNCTIONS(X)                                             \
-    X(GetTypesPlatform) X(GetVersion) X(SetDebugLogging) X(Instantiate)        \
-    X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode)              \
-    X(ExitInitializationMode) X(Terminate) X(Reset) X(GetReal) X(GetInteger)   \
-    X(GetBoolean) X(GetString) X(SetReal) X(SetInteger) X(SetBoolean)          \
-    X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                 \
-    X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)      \
-    X(GetDirectionalDerivative) X(EnterEventMode) X(NewDiscreteStates)         \
-    X(EnterContinuousTimeMode) X(CompletedIntegratorStep) X(SetTime)           \
-    X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators)             \
-    X(GetContinuousStates) X(GetNominalsOfContinuousStates)                    \
-    X(SetRealInputDerivatives) X(GetRealOutputDerivatives) X(DoStep)           \
-    X(CancelStep) X(GetStatus) X(GetRealStatus) X(GetIntegerStatus)            \
-    X(GetBooleanStatus) X(GetStringStatus)
+// Every function of fmi2Functions.h (44), without the fmi2 prefix
+// clang-format off
+#define FMU_TEST_FMI2_FUNCTIONS(X) \
+    X(GetTypesPlatform) \
+    X(GetVersion) \
+    X(SetDebugLogging) \
+    X(Instantiate) \
+    X(FreeInstance) \
+    X(SetupExperiment) \
+    X(EnterInitializationMode) \
+    X(ExitInitializationMode) \
+    X(Terminate) \
+    X(Reset) \
+    X(GetReal) \
+    X(GetInteger) \
+    X(GetBoolean) \
+    X(GetString) \
+    X(SetReal) \
+    X(SetInteger) \
+    X(SetBoolean) \
+    X(SetString) \
+    X(GetFMUstate) \
+    X(SetFMUstate) \
+    X(FreeFMUstate) \
+    X(SerializedFMUstateSize) \
+    X(SerializeFMUstate) \
+    X(DeSerializeFMUstate) \
+    X(GetDirectionalDerivative) \
+    X(EnterEventMode) \
+    X(NewDiscreteStates) \
+    X(EnterContinuousTimeMode) \
+    X(CompletedIntegratorStep) \
+    X(SetTime) \
+    X(SetContinuousStates) \
+    X(GetDerivatives) \
+    X(GetEventIndicators) \
+    X(GetContinuousStates) \
+    X(GetNominalsOfContinuousStates) \
+    X(SetRealInputDerivatives) \
+    X(GetRealOutputDerivatives) \
+    X(DoStep) \
+    X(CancelStep) \
+    X(GetStatus) \
+    X(GetRealStatus) \
+    X(GetIntegerStatus) \
+    X(GetBooleanStatus) \
+    X(GetStringStatus)
+// clang-format on
 
 struct Fmi2Api {
 #define FMU_TEST_DECLARE(name) fmi2##name##TYPE* name = nullptr;
@@ -86,7 +119,8 @@ public:
     //- Instantiated -> stepComplete, with parameters set in between
     fmi2Status initialize(const std::map<std::string, double>& parameters);
     fmi2Status set(const std::map<std::string, double>& values);
-    fmi2Status get(const std::vector<std::string>& names, std::vector<double>& values);
+    fmi2Status get(const std::vector<std::string>& names,
+                   std::vector<double>& values);
     double get(const std::string& name);
     //- Last logged message ("" if none)
     std::string lastMessage() const;

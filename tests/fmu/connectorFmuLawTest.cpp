@@ -16,10 +16,11 @@ using namespace fmuTest;
 
 std::vector<double> flatten(const connectors::ConnectorResult& r)
 {
-    return {r.A.f_W[0], r.A.f_W[1], r.A.f_W[2], r.A.m_Bo_W[0], r.A.m_Bo_W[1],
-            r.A.m_Bo_W[2], r.B.f_W[0], r.B.f_W[1], r.B.f_W[2], r.B.m_Bo_W[0],
-            r.B.m_Bo_W[1], r.B.m_Bo_W[2], r.length, r.lengthRate, r.tension,
-            r.potentialEnergy, r.dissipatedPower};
+    return {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+            r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+            r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+            r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
+            r.dissipatedPower};
 }
 
 void expectOutputs(Instance& in, const connectors::ConnectorResult& expected)
@@ -51,14 +52,16 @@ TEST(LinearSpringFmu, OutputsEqualTheLaw)
 {
     LoadedFmu fmu("linearSpring");
     Instance in(fmu);
-    ASSERT_EQ(in.initialize(genericParameters(fmu)), fmi2OK) << in.lastMessage();
+    ASSERT_EQ(in.initialize(genericParameters(fmu)), fmi2OK)
+        << in.lastMessage();
     const connectors::LinearSpring law(springParameters());
     ASSERT_EQ(in.set(inputs(genericA(), genericB())), fmi2OK);
     ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK);
     expectOutputs(in, law.evaluate(genericA(), genericB()));
     // A second configuration, read without a step (direct feedthrough).
-    const BodyKinematics A = kinematics(Vector3(-1, 0.5, 0.2), 2.0, Vector3(0, 1, 0),
-                                        Vector3(0, 0, 1), Vector3(1, 0, 0));
+    const BodyKinematics A =
+        kinematics(Vector3(-1, 0.5, 0.2), 2.0, Vector3(0, 1, 0),
+                   Vector3(0, 0, 1), Vector3(1, 0, 0));
     ASSERT_EQ(in.set(inputs(A, genericA())), fmi2OK);
     expectOutputs(in, law.evaluate(A, genericA()));
 }
@@ -67,19 +70,25 @@ TEST(LinearSpringFmu, BadParametersAreNamedAtExitInitializationMode)
 {
     LoadedFmu fmu("linearSpring");
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const std::vector<std::pair<std::pair<std::string, double>, std::string>> cases = {
-        {{"stiffness", -5.0}, "parameter stiffness = -5 N/m is out of range "
-                              "(allowed: finite and >= 0)"},
-        {{"restLength", -1.0}, "parameter restLength = -1 m is out of range "
-                               "(allowed: finite and >= 0)"},
-        {{"damping", -2.0}, "parameter damping = -2 N.s/m is out of range "
-                            "(allowed: finite and >= 0)"},
-        {{"A.p[3]", nan}, "parameter A.p[3] = nan m is out of range (allowed: finite)"},
-    };
+    const std::vector<std::pair<std::pair<std::string, double>, std::string>>
+        cases = {
+            {{"stiffness", -5.0},
+             "parameter stiffness = -5 N/m is out of range "
+             "(allowed: finite and >= 0)"},
+            {{"restLength", -1.0},
+             "parameter restLength = -1 m is out of range "
+             "(allowed: finite and >= 0)"},
+            {{"damping", -2.0},
+             "parameter damping = -2 N.s/m is out of range "
+             "(allowed: finite and >= 0)"},
+            {{"A.p[3]", nan},
+             "parameter A.p[3] = nan m is out of range (allowed: finite)"},
+        };
     for (const auto& [parameter, message] : cases) {
         Instance in(fmu);
         EXPECT_EQ(in.initialize({parameter}), fmi2Error);
-        EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: linearSpring: " + message);
+        EXPECT_EQ(in.lastMessage(),
+                  "fmi2ExitInitializationMode: linearSpring: " + message);
         EXPECT_EQ(in.log.back().category, "logStatusError");
         EXPECT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
     }
@@ -95,9 +104,10 @@ TEST(LinearSpringFmu, ZeroLengthLimit)
         ASSERT_EQ(in.initialize({}), fmi2OK);
         ASSERT_EQ(in.set(coincident), fmi2OK);
         EXPECT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
-        EXPECT_EQ(in.lastMessage(), "fmi2DoStep: linearSpring: length 0 m is below 1e-12 m "
-                                    "with restLength = 1 m > 0: the spring force "
-                                    "direction is undefined");
+        EXPECT_EQ(in.lastMessage(),
+                  "fmi2DoStep: linearSpring: length 0 m is below 1e-12 m "
+                  "with restLength = 1 m > 0: the spring force "
+                  "direction is undefined");
     }
     {
         // restLength = 0: a well-defined zero force.
@@ -117,19 +127,22 @@ TEST(LinearSpringFmu, OverflowIsAnErrorNotAnInfinity)
 {
     LoadedFmu fmu("linearSpring");
     Instance in(fmu);
-    ASSERT_EQ(in.initialize({{"stiffness", 1e300}, {"restLength", 0.0}}), fmi2OK);
+    ASSERT_EQ(in.initialize({{"stiffness", 1e300}, {"restLength", 0.0}}),
+              fmi2OK);
     ASSERT_EQ(in.set({{"B.r[1]", 1e300}}), fmi2OK);
     std::vector<double> out;
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: linearSpring: output A.F[1] = inf is not "
-                                "finite (inputs or parameters too large)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetReal: linearSpring: output A.F[1] = inf is not "
+              "finite (inputs or parameters too large)");
 }
 
 TEST(LinearDamperFmu, OutputsEqualTheLaw)
 {
     LoadedFmu fmu("linearDamper");
     Instance in(fmu);
-    ASSERT_EQ(in.initialize(genericParameters(fmu)), fmi2OK) << in.lastMessage();
+    ASSERT_EQ(in.initialize(genericParameters(fmu)), fmi2OK)
+        << in.lastMessage();
     connectors::LinearDamperParameters p;
     p.p_AoP_A = springParameters().p_AoP_A;
     p.p_BoQ_B = springParameters().p_BoQ_B;
@@ -148,9 +161,10 @@ TEST(LinearDamperFmu, NegativeDampingIsNamedAtExitInitializationMode)
     LoadedFmu fmu("linearDamper");
     Instance in(fmu);
     EXPECT_EQ(in.initialize({{"damping", -0.5}}), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: linearDamper: parameter "
-                                "damping = -0.5 N.s/m is out of range (allowed: finite "
-                                "and >= 0)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2ExitInitializationMode: linearDamper: parameter "
+              "damping = -0.5 N.s/m is out of range (allowed: finite "
+              "and >= 0)");
 }
 
 } // namespace

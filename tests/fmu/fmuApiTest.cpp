@@ -15,7 +15,8 @@ class FmuApi : public ConnectorFmu {};
 
 TEST_P(FmuApi, ExportsEveryFmi2Function)
 {
-    EXPECT_TRUE(fmu->missing.empty()) << "first missing: " << fmu->missing.front();
+    EXPECT_TRUE(fmu->missing.empty())
+        << "first missing: " << fmu->missing.front();
     EXPECT_STREQ(fmu->api.GetVersion(), "2.0");
     EXPECT_STREQ(fmu->api.GetTypesPlatform(), "default");
 }
@@ -28,9 +29,9 @@ TEST_P(FmuApi, WrongGuidIsRefused)
     ASSERT_EQ(instance.log.size(), 1u);
     EXPECT_EQ(instance.log[0].status, fmi2Error);
     EXPECT_EQ(instance.log[0].category, "logStatusError");
-    EXPECT_EQ(instance.log[0].message, "fmi2Instantiate: GUID " + std::string(wrong)
-                                           + " does not match " + fmu->name
-                                           + "'s GUID " + fmu->guid);
+    EXPECT_EQ(instance.log[0].message,
+              "fmi2Instantiate: GUID " + std::string(wrong) + " does not match "
+                  + fmu->name + "'s GUID " + fmu->guid);
 }
 
 TEST_P(FmuApi, ModelExchangeInstanceIsRefused)
@@ -48,27 +49,29 @@ TEST_P(FmuApi, CallsInTheWrongStateAreRejected)
     ASSERT_NE(in.c, nullptr);
     const Fmi2Api& f = fmu->api;
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
-    EXPECT_EQ(in.lastMessage(),
-              "fmi2DoStep: not allowed in state instantiated (allowed in stepComplete)");
+    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: not allowed in state instantiated "
+                                "(allowed in stepComplete)");
     EXPECT_EQ(in.log.back().category, "logStatusError");
     EXPECT_EQ(f.ExitInitializationMode(in.c), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: not allowed in state "
-                                "instantiated (allowed in initializationMode)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2ExitInitializationMode: not allowed in state "
+              "instantiated (allowed in initializationMode)");
     std::vector<double> v;
     EXPECT_EQ(in.get({"length"}, v), fmi2Error);
     EXPECT_EQ(f.Terminate(in.c), fmi2Error);
 
     // A rejected call leaves the state as it was.
     ASSERT_EQ(in.initialize({}), fmi2OK);
-    EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0), fmi2Error);
+    EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0),
+              fmi2Error);
     EXPECT_EQ(in.lastMessage(), "fmi2SetupExperiment: not allowed in state "
                                 "stepComplete (allowed in instantiated)");
     EXPECT_EQ(f.EnterInitializationMode(in.c), fmi2Error);
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
     EXPECT_EQ(f.Terminate(in.c), fmi2OK);
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2Error);
-    EXPECT_EQ(in.lastMessage(),
-              "fmi2DoStep: not allowed in state terminated (allowed in stepComplete)");
+    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: not allowed in state terminated "
+                                "(allowed in stepComplete)");
     EXPECT_EQ(in.set({{"A.r[1]", 1.0}}), fmi2Error);
     EXPECT_EQ(f.Reset(in.c), fmi2OK);
     EXPECT_EQ(in.initialize({}), fmi2OK);
@@ -82,9 +85,10 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
     const fmi2ValueReference bad = 100000;
     double value = 0.0;
     EXPECT_EQ(f.GetReal(in.c, &bad, 1, &value), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: value reference 100000 is not a variable of "
-                                    + fmu->name + " (0 to "
-                                    + std::to_string(fmu->vr.size() - 1) + ")");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetReal: value reference 100000 is not a variable of "
+                  + fmu->name + " (0 to " + std::to_string(fmu->vr.size() - 1)
+                  + ")");
     const fmi2ValueReference force = fmu->ref("A.F[1]");
     EXPECT_EQ(f.SetReal(in.c, &force, 1, &value), fmi2Error);
     EXPECT_EQ(in.lastMessage(), "fmi2SetReal: variable A.F[1] (value reference "
@@ -92,13 +96,15 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
                                     + ") is an output and cannot be set");
     const fmi2ValueReference p = fmu->ref("A.p[1]");
     EXPECT_EQ(f.SetReal(in.c, &p, 1, &value), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetReal: parameter A.p[1] (value reference "
-                                    + std::to_string(p)
-                                    + ") is fixed: set it before "
-                                      "fmi2ExitInitializationMode");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetReal: parameter A.p[1] (value reference "
+                  + std::to_string(p)
+                  + ") is fixed: set it before "
+                    "fmi2ExitInitializationMode");
     fmi2Integer integer = 0;
     EXPECT_EQ(f.GetInteger(in.c, &p, 1, &integer), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetInteger: value reference " + std::to_string(p)
+    EXPECT_EQ(in.lastMessage(), "fmi2GetInteger: value reference "
+                                    + std::to_string(p)
                                     + " is not of type Integer: " + fmu->name
                                     + " has only Real and Boolean variables");
     // The instance is still usable.
@@ -114,23 +120,32 @@ TEST_P(FmuApi, UnsupportedFunctionsReturnError)
     fmi2Boolean b = fmi2False;
     fmi2EventInfo info{};
     const std::vector<fmi2Status> statuses = {
-        f.SetTime(in.c, 1.0), f.EnterEventMode(in.c), f.NewDiscreteStates(in.c, &info),
-        f.EnterContinuousTimeMode(in.c), f.CompletedIntegratorStep(in.c, fmi2True, &b, &b),
-        f.SetContinuousStates(in.c, x, 0), f.GetDerivatives(in.c, x, 0),
-        f.GetEventIndicators(in.c, x, 0), f.GetContinuousStates(in.c, x, 0),
+        f.SetTime(in.c, 1.0),
+        f.EnterEventMode(in.c),
+        f.NewDiscreteStates(in.c, &info),
+        f.EnterContinuousTimeMode(in.c),
+        f.CompletedIntegratorStep(in.c, fmi2True, &b, &b),
+        f.SetContinuousStates(in.c, x, 0),
+        f.GetDerivatives(in.c, x, 0),
+        f.GetEventIndicators(in.c, x, 0),
+        f.GetContinuousStates(in.c, x, 0),
         f.GetNominalsOfContinuousStates(in.c, x, 0)};
     for (const fmi2Status s : statuses) {
         EXPECT_EQ(s, fmi2Error);
     }
     EXPECT_EQ(in.log.size(), statuses.size());
-    EXPECT_EQ(in.lastMessage(), "fmi2GetNominalsOfContinuousStates: model exchange is "
-                                "not supported: this is a co-simulation FMU");
-    EXPECT_EQ(f.GetDirectionalDerivative(in.c, nullptr, 0, nullptr, 0, nullptr, x),
-              fmi2Error);
     EXPECT_EQ(in.lastMessage(),
-              "fmi2GetDirectionalDerivative: providesDirectionalDerivative is false");
+              "fmi2GetNominalsOfContinuousStates: model exchange is "
+              "not supported: this is a co-simulation FMU");
+    EXPECT_EQ(
+        f.GetDirectionalDerivative(in.c, nullptr, 0, nullptr, 0, nullptr, x),
+        fmi2Error);
+    EXPECT_EQ(
+        in.lastMessage(),
+        "fmi2GetDirectionalDerivative: providesDirectionalDerivative is false");
     EXPECT_EQ(f.CancelStep(in.c), fmi2Error);
-    EXPECT_EQ(f.SetRealInputDerivatives(in.c, nullptr, 0, nullptr, nullptr), fmi2Error);
+    EXPECT_EQ(f.SetRealInputDerivatives(in.c, nullptr, 0, nullptr, nullptr),
+              fmi2Error);
     // None of them disturbed the instance.
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
 }
@@ -149,10 +164,11 @@ TEST_P(FmuApi, VariableStepSize)
     EXPECT_EQ(f.GetRealStatus(in.c, fmi2LastSuccessfulTime, &last), fmi2OK);
     EXPECT_EQ(last, t); // the FMU adds the same doubles in the same order
     EXPECT_EQ(f.DoStep(in.c, 5.0, 0.1, fmi2False), fmi2Error);
-    EXPECT_EQ(in.lastMessage().rfind("fmi2DoStep: currentCommunicationPoint = 5 does "
-                                     "not match the FMU time 2.3131",
-                                     0),
-              0u)
+    EXPECT_EQ(
+        in.lastMessage().rfind("fmi2DoStep: currentCommunicationPoint = 5 does "
+                               "not match the FMU time 2.3131",
+                               0),
+        0u)
         << in.lastMessage();
     EXPECT_EQ(f.DoStep(in.c, t, 0.0, fmi2False), fmi2Error);
     EXPECT_EQ(in.lastMessage(),
@@ -181,12 +197,13 @@ TEST_P(FmuApi, NonFiniteInputIsAnErrorNeverANaN)
     fmi2FMUstate saved = nullptr;
     ASSERT_EQ(f.GetFMUstate(in.c, &saved), fmi2OK);
 
-    ASSERT_EQ(in.set({{"A.v[2]", std::numeric_limits<double>::quiet_NaN()}}), fmi2OK);
+    ASSERT_EQ(in.set({{"A.v[2]", std::numeric_limits<double>::quiet_NaN()}}),
+              fmi2OK);
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2Error);
     EXPECT_EQ(in.log.back().status, fmi2Error);
     EXPECT_EQ(in.log.back().category, "logStatusError");
-    EXPECT_EQ(in.lastMessage(),
-              "fmi2DoStep: " + fmu->name + ": input A.v[2] = nan is not finite");
+    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: " + fmu->name
+                                    + ": input A.v[2] = nan is not finite");
     // In the error state outputs cannot be read, and nothing NaN comes out.
     std::vector<double> out(connectorOutputs().size(), 0.0);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
@@ -197,10 +214,11 @@ TEST_P(FmuApi, NonFiniteInputIsAnErrorNeverANaN)
 
     // Restoring a saved state recovers the instance.
     ASSERT_EQ(f.SetFMUstate(in.c, saved), fmi2OK);
-    ASSERT_EQ(in.set({{"A.R[3,1]", -std::numeric_limits<double>::infinity()}}), fmi2OK);
+    ASSERT_EQ(in.set({{"A.R[3,1]", -std::numeric_limits<double>::infinity()}}),
+              fmi2OK);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
-    EXPECT_EQ(in.lastMessage(),
-              "fmi2GetReal: " + fmu->name + ": input A.R[3,1] = -inf is not finite");
+    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: " + fmu->name
+                                    + ": input A.R[3,1] = -inf is not finite");
     ASSERT_EQ(f.SetFMUstate(in.c, saved), fmi2OK);
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2OK);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2OK);
@@ -213,8 +231,9 @@ TEST_P(FmuApi, DebugLoggingCategories)
     const Fmi2Api& f = fmu->api;
     const fmi2String unknown[] = {"logEverything"};
     EXPECT_EQ(f.SetDebugLogging(in.c, fmi2True, 1, unknown), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetDebugLogging: unknown log category "
-                                "\"logEverything\" (known: logStatusError, logCalls)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetDebugLogging: unknown log category "
+              "\"logEverything\" (known: logStatusError, logCalls)");
     const fmi2String calls[] = {"logCalls"};
     EXPECT_EQ(f.SetDebugLogging(in.c, fmi2True, 1, calls), fmi2OK);
     EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
@@ -227,6 +246,9 @@ TEST_P(FmuApi, RestConfigurationHasNoLoad)
     // inputsStartAtRest = true promises zero loads at the start values.
     Instance in(*fmu);
     const Fmi2Api& f = fmu->api;
+    if (fmu->vr.count("inputsStartAtRest") == 0) {
+        GTEST_SKIP() << fmu->name << " declares no rest configuration";
+    }
     ASSERT_EQ(in.initialize({}), fmi2OK);
     const fmi2ValueReference rest = fmu->ref("inputsStartAtRest");
     fmi2Boolean value = fmi2False;
@@ -235,16 +257,19 @@ TEST_P(FmuApi, RestConfigurationHasNoLoad)
     ASSERT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
     std::vector<double> out;
     ASSERT_EQ(in.get(connectorOutputs(), out), fmi2OK);
-    for (std::size_t i = 0; i < 12; ++i) { // A.F, A.M, B.F, B.M
-        EXPECT_EQ(out[i], 0.0) << connectorOutputs()[i]; // exact: L = |(1,0,0)|
+    for (std::size_t i = 0; i < 12; ++i) {               // A.F, A.M, B.F, B.M
+        // Tolerance: round-off of O(1) m geometry times stiffnesses up to
+        // ~1e3 N/m (linearSpring and linearDamper give exactly 0).
+        EXPECT_NEAR(out[i], 0.0, 1e-10) << connectorOutputs()[i];
     }
     EXPECT_EQ(f.SetBoolean(in.c, &rest, 1, &value), fmi2Error);
-    EXPECT_EQ(in.lastMessage(),
-              "fmi2SetBoolean: variable inputsStartAtRest is a constant and cannot be set");
+    EXPECT_EQ(in.lastMessage(), "fmi2SetBoolean: variable inputsStartAtRest is "
+                                "a constant and cannot be set");
     double real = 0.0;
     EXPECT_EQ(f.GetReal(in.c, &rest, 1, &real), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: value reference " + std::to_string(rest)
-                                    + " (inputsStartAtRest) is not of type Real");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetReal: value reference " + std::to_string(rest)
+                  + " (inputsStartAtRest) is not of type Real");
 }
 
 FMU_TEST_INSTANTIATE(FmuApi);

@@ -29,7 +29,8 @@ std::vector<double> outputs(Instance& in)
     return v;
 }
 
-std::vector<fmi2Byte> serialize(const LoadedFmu& fmu, Instance& in, fmi2FMUstate s)
+std::vector<fmi2Byte> serialize(const LoadedFmu& fmu, Instance& in,
+                                fmi2FMUstate s)
 {
     size_t size = 0;
     EXPECT_EQ(fmu.api.SerializedFMUstateSize(in.c, s, &size), fmi2OK);
@@ -66,8 +67,9 @@ TEST_P(FmuStates, GetSetStateRoundTrip)
     ASSERT_EQ(f.FreeFMUstate(in.c, &saved), fmi2OK);
     EXPECT_EQ(saved, nullptr);
     EXPECT_EQ(f.SetFMUstate(in.c, reused), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetFMUstate: FMU state handle was not created by "
-                                "this instance or was already freed");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetFMUstate: FMU state handle was not created by "
+              "this instance or was already freed");
 }
 
 TEST_P(FmuStates, SerializeRoundTripIntoAnotherInstance)
@@ -82,21 +84,23 @@ TEST_P(FmuStates, SerializeRoundTripIntoAnotherInstance)
 
     Instance other(*fmu); // fresh, in state instantiated
     fmi2FMUstate restored = nullptr;
-    ASSERT_EQ(f.DeSerializeFMUstate(other.c, bytes.data(), bytes.size(), &restored),
-              fmi2OK)
+    ASSERT_EQ(
+        f.DeSerializeFMUstate(other.c, bytes.data(), bytes.size(), &restored),
+        fmi2OK)
         << other.lastMessage();
     ASSERT_EQ(f.SetFMUstate(other.c, restored), fmi2OK);
     EXPECT_EQ(outputs(other), before);
-    EXPECT_EQ(f.DoStep(other.c, 0.5, 0.1, fmi2False), fmi2OK) << other.lastMessage();
+    EXPECT_EQ(f.DoStep(other.c, 0.5, 0.1, fmi2False), fmi2OK)
+        << other.lastMessage();
     EXPECT_EQ(serialize(*fmu, other, restored), bytes);
 
     std::vector<fmi2Byte> small(bytes.size() - 1);
-    EXPECT_EQ(f.SerializeFMUstate(in.c, saved, small.data(), small.size()), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SerializeFMUstate: buffer of "
-                                    + std::to_string(small.size())
-                                    + " bytes is too small, "
-                                    + std::to_string(bytes.size())
-                                    + " bytes needed (fmi2SerializedFMUstateSize)");
+    EXPECT_EQ(f.SerializeFMUstate(in.c, saved, small.data(), small.size()),
+              fmi2Error);
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SerializeFMUstate: buffer of " + std::to_string(small.size())
+                  + " bytes is too small, " + std::to_string(bytes.size())
+                  + " bytes needed (fmi2SerializedFMUstateSize)");
 }
 
 TEST_P(FmuStates, DeserializingGarbageFails)
@@ -114,27 +118,35 @@ TEST_P(FmuStates, DeserializingGarbageFails)
         b = fmi2Byte(rng());
     }
     fmi2FMUstate s = nullptr;
-    EXPECT_EQ(f.DeSerializeFMUstate(in.c, garbage.data(), garbage.size(), &s), fmi2Error);
+    EXPECT_EQ(f.DeSerializeFMUstate(in.c, garbage.data(), garbage.size(), &s),
+              fmi2Error);
     EXPECT_EQ(s, nullptr);
-    EXPECT_EQ(in.lastMessage(), "fmi2DeSerializeFMUstate: bytes are not a serialized "
-                                "state of this FMU (magic \"FOAMFMI\" not found)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2DeSerializeFMUstate: bytes are not a serialized "
+              "state of this FMU (magic \"FOAMFMI\" not found)");
 
     EXPECT_EQ(f.DeSerializeFMUstate(in.c, good.data(), 10, &s), fmi2Error);
-    EXPECT_NE(in.lastMessage().find("serialized state of 10 bytes is shorter than its header"),
+    EXPECT_NE(in.lastMessage().find(
+                  "serialized state of 10 bytes is shorter than its header"),
               std::string::npos)
         << in.lastMessage();
 
     std::vector<fmi2Byte> versioned = good;
     versioned[8] = 99; // first byte of the format version
-    EXPECT_EQ(f.DeSerializeFMUstate(in.c, versioned.data(), versioned.size(), &s), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has format "
-                                "version 99, expected 1");
+    EXPECT_EQ(
+        f.DeSerializeFMUstate(in.c, versioned.data(), versioned.size(), &s),
+        fmi2Error);
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2DeSerializeFMUstate: serialized state has format "
+              "version 99, expected 1");
 
     std::vector<fmi2Byte> longer = good;
     longer.push_back(0);
-    EXPECT_EQ(f.DeSerializeFMUstate(in.c, longer.data(), longer.size(), &s), fmi2Error);
+    EXPECT_EQ(f.DeSerializeFMUstate(in.c, longer.data(), longer.size(), &s),
+              fmi2Error);
     EXPECT_EQ(in.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
-                                    + std::to_string(longer.size()) + " bytes, expected "
+                                    + std::to_string(longer.size())
+                                    + " bytes, expected "
                                     + std::to_string(good.size()));
     EXPECT_EQ(s, nullptr);
     // The instance is untouched by the rejected calls.
@@ -154,11 +166,13 @@ TEST(FmuState, StateOfAnotherFmuIsRejected)
     const std::vector<fmi2Byte> bytes = serialize(spring, s, saved);
     Instance d(damper);
     fmi2FMUstate foreign = nullptr;
-    EXPECT_EQ(damper.api.DeSerializeFMUstate(d.c, bytes.data(), bytes.size(), &foreign),
+    EXPECT_EQ(damper.api.DeSerializeFMUstate(d.c, bytes.data(), bytes.size(),
+                                             &foreign),
               fmi2Error);
-    EXPECT_EQ(d.lastMessage(), "fmi2DeSerializeFMUstate: serialized state belongs to the "
-                               "FMU with GUID "
-                                   + spring.guid + ", not " + damper.guid);
+    EXPECT_EQ(d.lastMessage(),
+              "fmi2DeSerializeFMUstate: serialized state belongs to the "
+              "FMU with GUID "
+                  + spring.guid + ", not " + damper.guid);
     // A handle of another instance is not accepted either.
     EXPECT_EQ(damper.api.SetFMUstate(d.c, saved), fmi2Error);
 }
