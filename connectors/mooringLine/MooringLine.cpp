@@ -1,0 +1,335 @@
+#include "mooringLine/MooringLine.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "catenary/Catenary.hpp"
+#include "common/AxialGeometry.hpp"
+#include "common/ConnectorError.hpp"
+
+namespace connectors {
+
+namespace {
+
+const char* const lawName = "mooringLine";
+constexpr double pi = 3.14159265358979323846;
+const Vector3 zHat = Vector3::UnitZ();
+
+void requirePositive(const char* name, double value, const char* unit)
+{
+    if (!(std::isfinite(value) && value > 0.0)) {
+        throw ParameterError(lawName, name, value, unit, "finite and > 0");
+    }
+}
+
+//- Forces on every node for given node positions and velocities
+struct NodeForces {
+    //- Segment tensions [N] and unit vectors from node j to j+1
+    std::vector<double> T;
+    std::vector<Vector3> q;
+    //- Accelerations of the free nodes (index 1..N-1; 0 and N unused)
+    std::vector<Vector3> a;
+    double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
+    int groundedSegments = 0;
+};
+
+NodeForces nodeForces(const MooringLineParameters& p, double w,
+                      const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                      double zb)
+{
+    const int N = p.segments;
+    const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
+    const double area = 0.25 * pi * d * d;
+    NodeForces f;
+    f.T.resize(std::size_t(N));
+    f.q.resize(std::size_t(N));
+    f.a.assign(std::size_t(N + 1), Vector3::Zero());
+    for (int j = 0; j < N; ++j) {
+        const Vector3 dr = r[j + 1] - r[j];
+        const double stretched = dr.norm();
+        if (stretched < 1e-12 * l) {
+            f.q[j].setZero();
+            f.T[j] = 0.0;
+            continue;
+        }
+        f.q[j] = dr / stretched;
+        const double strain = stretched / l - 1.0;
+        const double strainRate = f.q[j].dot(v[j + 1] - v[j]) / l;
+        f.T[j] = p.EA * std::max(strain, 0.0) + p.axialDamping * strainRate;
+        f.strainEnergy += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
+        f.dissipatedPower += p.axialDamping * strainRate * strainRate * l;
+    }
+    std::vector<bool> onSeabed(std::size_t(N + 1), p.seabedContact);
+    for (int i = 1; i < N; ++i) {
+        Vector3 F = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] - w * l * zHat;
+        onSeabed[i] = p.seabedContact && r[i][2] <= zb;
+        if (onSeabed[i]) {
+            const double depth = zb - r[i][2];
+            const double push = std::max(
+                (p.seabedStiffness * depth - p.seabedDamping * v[i][2]) * d * l, 0.0);
+            F[2] += push;
+            f.seabedEnergy += 0.5 * p.seabedStiffness * depth * depth * d * l;
+            f.dissipatedPower += std::min(p.seabedDamping * v[i][2] * v[i][2] * d * l,
+                                          std::abs(push * v[i][2]));
+        }
+        Vector3 t = r[i + 1] - r[i - 1];
+        const double tn = t.norm();
+        t = tn > 0.0 ? Vector3(t / tn) : Vector3::Zero();
+        const Vector3 vRel = -v[i]; // still water
+        const Vector3 vt = vRel.dot(t) * t, vn = vRel - vt;
+        const Vector3 drag = 0.5 * rho * d * l * p.normalDrag * vn.norm() * vn
+                             + 0.5 * rho * pi * d * l * p.tangentialDrag * vt.norm() * vt;
+        F += drag;
+        f.dissipatedPower += -drag.dot(v[i]);
+        const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
+        const double mt = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
+        const Vector3 Ft = F.dot(t) * t;
+        f.a[i] = (F - Ft) / mn + Ft / mt;
+    }
+    for (int j = 0; j < N; ++j) {
+        f.groundedSegments += onSeabed[j] && onSeabed[j + 1];
+    }
+    return f;
+}
+
+void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,
+            std::vector<Vector3>& v)
+{
+    for (int i = 1; i < N; ++i) {
+        const double* y = nodes.data() + 6 * (i - 1);
+        r[i] = Vector3(y[0], y[1], y[2]);
+        v[i] = Vector3(y[3], y[4], y[5]);
+    }
+}
+
+} // namespace
+
+double MooringLineParameters::weight() const
+{
+    return (massPerLength - waterDensity * 0.25 * pi * diameter * diameter) * gravity;
+}
+
+std::vector<double> MooringLineState::serialize() const
+{
+    std::vector<double> out = {time, Q[0], Q[1], Q[2], P[0], P[1], P[2]};
+    out.insert(out.end(), nodes.begin(), nodes.end());
+    return out;
+}
+
+MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
+                                               int segments)
+{
+    const std::size_t expected = 7 + 6 * std::size_t(segments - 1);
+    if (data.size() != expected) {
+        throw std::invalid_argument(
+            "mooringLine: a saved state of " + std::to_string(data.size())
+            + " values does not fit a line of " + std::to_string(segments)
+            + " segments (" + std::to_string(expected) + " values)");
+    }
+    MooringLineState s;
+    s.time = data[0];
+    s.Q = Vector3(data[1], data[2], data[3]);
+    s.P = Vector3(data[4], data[5], data[6]);
+    s.nodes.assign(data.begin() + 7, data.end());
+    return s;
+}
+
+MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
+{
+    requireFinite(lawName, "A.p", p.p_AoP_A, "m");
+    requireFinite(lawName, "B.p", p.p_BoQ_B, "m");
+    requirePositive("unstretchedLength", p.length, "m");
+    requirePositive("EA", p.EA, "N");
+    requireNonNegative(lawName, "axialDamping", p.axialDamping, "N.s");
+    requirePositive("massPerLength", p.massPerLength, "kg/m");
+    requireNonNegative(lawName, "diameter", p.diameter, "m");
+    requireNonNegative(lawName, "waterDensity", p.waterDensity, "kg/m3");
+    requireNonNegative(lawName, "gravity", p.gravity, "m/s2");
+    requireNonNegative(lawName, "normalDrag", p.normalDrag, "1");
+    requireNonNegative(lawName, "tangentialDrag", p.tangentialDrag, "1");
+    requireNonNegative(lawName, "normalAddedMass", p.normalAddedMass, "1");
+    requireNonNegative(lawName, "tangentialAddedMass", p.tangentialAddedMass, "1");
+    requireNonNegative(lawName, "seabedStiffness", p.seabedStiffness, "Pa/m");
+    requireNonNegative(lawName, "seabedDamping", p.seabedDamping, "Pa.s/m");
+    if (p.segments < 2 || p.segments > 1000) {
+        throw ConnectorError("mooringLine: parameter segments = "
+                             + std::to_string(p.segments)
+                             + " is out of range (allowed: an integer from 2 to 1000)");
+    }
+    requirePositive("relativeTolerance", p.relativeTolerance, "1");
+    requirePositive("absoluteTolerance", p.absoluteTolerance, "1");
+    weight_ = p.weight();
+    CvodeBdf::Options options;
+    options.relativeTolerance = p.relativeTolerance;
+    options.absoluteTolerance = p.absoluteTolerance;
+    options.halfBandwidth = 11; // a node's 6 states see its neighbours' 6
+    integrator_ = std::make_unique<CvodeBdf>(
+        6 * std::size_t(p.segments - 1),
+        [this](double t, const double* y, double* ydot) { return rhs(t, y, ydot); },
+        options);
+}
+
+MooringLine::~MooringLine() = default;
+
+Vector3 MooringLine::attachment(const BodyKinematics& body, const Vector3& p) const
+{
+    return body.p_WBo_W + body.R_WB * p;
+}
+
+MooringLineState MooringLine::initialState(const BodyKinematics& A,
+                                           const BodyKinematics& B,
+                                           double time) const
+{
+    requireFiniteInputs(lawName, "A", A);
+    requireFiniteInputs(lawName, "B", B);
+    const MooringLineParameters& p = parameters_;
+    CatenaryParameters c;
+    c.p_AoP_A = p.p_AoP_A;
+    c.p_BoQ_B = p.p_BoQ_B;
+    c.line.length = p.length;
+    c.line.EA = p.EA;
+    c.line.weight = weight_;
+    c.line.seabedContact = p.seabedContact;
+    const CatenaryOutput shape = Catenary(c).evaluate(A, B, nullptr, p.segments + 1);
+    MooringLineState s;
+    s.time = time;
+    s.P = attachment(A, p.p_AoP_A);
+    s.Q = attachment(B, p.p_BoQ_B);
+    s.nodes.assign(6 * std::size_t(p.segments - 1), 0.0);
+    // shape runs from P (index 0) to Q (index N); node i is shape[N - i]
+    for (int i = 1; i < p.segments; ++i) {
+        const Vector3& x = shape.shape[std::size_t(p.segments - i)];
+        for (int k = 0; k < 3; ++k) {
+            s.nodes[6 * std::size_t(i - 1) + std::size_t(k)] = x[k];
+        }
+    }
+    return s;
+}
+
+int MooringLine::rhs(double t, const double* y, double* ydot) const
+{
+    const int N = parameters_.segments;
+    const double f = std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0);
+    std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+    r[0] = ends_.Q0 + f * (ends_.Q1 - ends_.Q0);
+    r[N] = ends_.P0 + f * (ends_.P1 - ends_.P0);
+    v[0] = (ends_.Q1 - ends_.Q0) / ends_.h;
+    v[N] = (ends_.P1 - ends_.P0) / ends_.h;
+    for (int i = 1; i < N; ++i) {
+        const double* yi = y + 6 * (i - 1);
+        r[i] = Vector3(yi[0], yi[1], yi[2]);
+        v[i] = Vector3(yi[3], yi[4], yi[5]);
+    }
+    const NodeForces forces = nodeForces(parameters_, weight_, r, v, r[0][2]);
+    for (int i = 1; i < N; ++i) {
+        double* d = ydot + 6 * (i - 1);
+        for (int k = 0; k < 3; ++k) {
+            d[k] = v[i][k];
+            d[3 + k] = forces.a[i][k];
+        }
+        if (!forces.a[i].allFinite()) {
+            return 1; // recoverable: CVODE retries with a smaller step
+        }
+    }
+    return 0;
+}
+
+void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
+                          const BodyKinematics& B, double h)
+{
+    requireFiniteInputs(lawName, "A", A);
+    requireFiniteInputs(lawName, "B", B);
+    if (!(std::isfinite(h) && h > 0.0)) {
+        throw UndefinedStateError("mooringLine: step size " + formatValue(h)
+                                  + " s must be finite and > 0");
+    }
+    if (state.nodes.size() != integrator_->size()) {
+        throw std::invalid_argument("mooringLine: state of "
+                                    + std::to_string(state.nodes.size())
+                                    + " node values, expected "
+                                    + std::to_string(integrator_->size()));
+    }
+    ends_.Q0 = state.Q;
+    ends_.P0 = state.P;
+    ends_.Q1 = attachment(B, parameters_.p_BoQ_B);
+    ends_.P1 = attachment(A, parameters_.p_AoP_A);
+    ends_.t0 = state.time;
+    ends_.h = h;
+    std::vector<double> y(state.nodes.size());
+    try {
+        integrator_->restart(state.time, state.nodes.data());
+        integrator_->advance(state.time + h, y.data());
+    } catch (const std::runtime_error& e) {
+        throw UndefinedStateError(std::string("mooringLine: step from t = ")
+                                  + formatValue(state.time) + " s by "
+                                  + formatValue(h) + " s failed: " + e.what());
+    }
+    state.nodes = std::move(y);
+    state.time += h;
+    state.Q = ends_.Q1;
+    state.P = ends_.P1;
+}
+
+MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
+                                        const BodyKinematics& A,
+                                        const BodyKinematics& B,
+                                        int shapePoints) const
+{
+    requireFiniteInputs(lawName, "A", A);
+    requireFiniteInputs(lawName, "B", B);
+    const MooringLineParameters& p = parameters_;
+    const int N = p.segments;
+    if (state.nodes.size() != integrator_->size()) {
+        throw std::invalid_argument("mooringLine: state does not fit the line");
+    }
+    const AxialGeometry g = axialGeometry(A, B, p.p_AoP_A, p.p_BoQ_B);
+    std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+    unpack(state.nodes, N, r, v);
+    r[0] = attachment(B, p.p_BoQ_B);
+    r[N] = attachment(A, p.p_AoP_A);
+    v[0] = B.v_WBo_W + B.w_WB_W.cross(g.p_BoQ_W);
+    v[N] = A.v_WBo_W + A.w_WB_W.cross(g.p_AoP_W);
+    const NodeForces f = nodeForces(p, weight_, r, v, r[0][2]);
+    const double l = p.length / N;
+
+    MooringLineOutput out;
+    ConnectorResult& res = out.loads;
+    res.A.f_W = -f.T[N - 1] * f.q[N - 1] - 0.5 * weight_ * l * zHat;
+    res.B.f_W = f.T[0] * f.q[0] - (p.seabedContact ? 0.0 : 0.5 * weight_ * l) * zHat;
+    res.A.m_Bo_W = g.p_AoP_W.cross(res.A.f_W);
+    res.B.m_Bo_W = g.p_BoQ_W.cross(res.B.f_W);
+    res.length = g.length;
+    res.lengthRate = g.lengthRate;
+    out.fairleadTension = res.A.f_W.norm();
+    out.anchorTension = res.B.f_W.norm();
+    res.tension = out.fairleadTension;
+    double heights = 0.5 * (r[0][2] + r[N][2]);
+    for (int i = 1; i < N; ++i) {
+        heights += r[i][2];
+    }
+    res.potentialEnergy = f.strainEnergy + f.seabedEnergy + weight_ * l * heights;
+    res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
+    out.groundedLength = l * f.groundedSegments;
+    out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
+    out.V = -res.A.f_W[2];
+    if (shapePoints == 1 || shapePoints < 0) {
+        throw std::invalid_argument("mooringLine: shapePoints must be 0 or >= 2");
+    }
+    for (int k = 0; k < shapePoints; ++k) {
+        const double u = N * (1.0 - double(k) / (shapePoints - 1));
+        const int i = std::min(int(u), N - 1);
+        const double f01 = u - i;
+        out.shape.push_back((1.0 - f01) * r[i] + f01 * r[i + 1]);
+    }
+    return out;
+}
+
+CvodeBdf::Statistics MooringLine::statistics() const
+{
+    return integrator_->statistics();
+}
+
+} // namespace connectors

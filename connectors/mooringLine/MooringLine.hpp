@@ -1,0 +1,134 @@
+// Dynamic lumped-mass mooring line (after MoorDyn's line model, Hall and
+// Goupee 2015) between a fairlead P fixed in body A and a point Q fixed in
+// body B (an anchor on the seabed, or a fairlead on a second body).
+//
+// The unstretched length L is cut into N segments of l = L/N; node 0 is Q,
+// node N is P (both prescribed), nodes 1..N-1 are free, each with the mass
+// of one segment. With d the diameter, A = pi d^2/4, rho the water density,
+// g gravity and mu the dry mass per unstretched length:
+//
+//   segment j (nodes j, j+1): q = unit(r_j+1 - r_j), strain e = |r_j+1 - r_j|/l - 1
+//     T = EA max(e, 0) + BA de/dt                 (no compression; BA [N.s])
+//   node i: m_n (I - t t') + m_t t t' times a = F, t = unit(r_i+1 - r_i-1)
+//     m_n = mu l + Can rho A l,  m_t = mu l + Cat rho A l    (added mass)
+//     F = T_i q_i - T_i-1 q_i-1 - w l z^                      w = (mu - rho A) g
+//         + seabed: (kb (zb - z) - cb dz/dt) d l z^ when z < zb, never pulling
+//         + drag (still water): 1/2 rho d l Cdn |vn| vn + 1/2 rho pi d l Cdt |vt| vt
+//           with vn, vt the normal and tangential parts of -v_i
+//
+// The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
+// states (position and velocity of each free node, interleaved node by
+// node, so that the Jacobian is banded with half-bandwidth 11) are
+// integrated by CVODE's BDF method (CvodeBdf) with a banded direct solver.
+// Over a step the ends move linearly from their previous positions to the
+// new ones (their velocity is that of the interpolation). Every step starts
+// CVODE afresh (CVodeReInit, order 1) from the node state, so a step
+// repeated from a saved state gives the same result to the last bit.
+//
+// Loads: the end nodes' half-segment weight is carried by the bodies
+// (at Q by the seabed when seabedContact):
+//   F_A = -T_N-1 q_N-1 - w l/2 z^,   F_B = T_0 q_0 - w l/2 z^
+#ifndef CONNECTORS_MOORINGLINE_MOORINGLINE_HPP
+#define CONNECTORS_MOORINGLINE_MOORINGLINE_HPP
+
+#include <memory>
+#include <vector>
+
+#include "catenary/CatenaryProfile.hpp"
+#include "common/Kinematics.hpp"
+#include "mooringLine/CvodeBdf.hpp"
+
+namespace connectors {
+
+struct MooringLineParameters {
+    Vector3 p_AoP_A = Vector3::Zero();
+    Vector3 p_BoQ_B = Vector3::Zero();
+    //- Unstretched length L [m], axial stiffness EA [N], axial damping BA [N.s]
+    double length = 1.0, EA = 1.0, axialDamping = 0.0;
+    //- Dry mass per unstretched length mu [kg/m], diameter d [m]
+    double massPerLength = 1.0, diameter = 0.0;
+    //- Water density rho [kg/m3], gravity g [m/s2]
+    double waterDensity = 1025.0, gravity = 9.81;
+    //- Morison coefficients in still water [-]
+    double normalDrag = 0.0, tangentialDrag = 0.0;
+    double normalAddedMass = 0.0, tangentialAddedMass = 0.0;
+    //- Seabed through Q, penalty stiffness kb [Pa/m] and damping cb [Pa.s/m]
+    bool seabedContact = false;
+    double seabedStiffness = 3e6, seabedDamping = 3e5;
+    //- Number of segments N (2 to 1000)
+    int segments = 20;
+    //- CVODE tolerances (relative [-], absolute [m, m/s])
+    double relativeTolerance = 1e-6, absoluteTolerance = 1e-6;
+
+    //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
+    double weight() const;
+};
+
+//- Everything needed to continue the integration (the FMU state)
+struct MooringLineState {
+    //- Time of the state [s]
+    double time = 0.0;
+    //- End positions Q (node 0) and P (node N) at `time` [m]
+    Vector3 Q = Vector3::Zero(), P = Vector3::Zero();
+    //- Free nodes 1..N-1: x, y, z, vx, vy, vz each [m, m/s]
+    std::vector<double> nodes;
+
+    std::vector<double> serialize() const;
+    //- Throws std::invalid_argument unless `data` holds a state of N segments
+    static MooringLineState deserialize(const std::vector<double>& data, int segments);
+};
+
+struct MooringLineOutput {
+    ConnectorResult loads;
+    double fairleadTension = 0.0, anchorTension = 0.0, groundedLength = 0.0;
+    //- Horizontal and (downward) vertical load of the line on A [N]
+    double H = 0.0, V = 0.0;
+    //- Points from P to Q, equal steps of unstretched length [m]
+    std::vector<Vector3> shape;
+};
+
+class MooringLine {
+public:
+    //- Validates the parameters (ParameterError naming the first bad one)
+    explicit MooringLine(const MooringLineParameters& parameters);
+    ~MooringLine();
+
+    //- At rest in the quasi-static elastic catenary shape through the
+    //  attachment points of A and B
+    MooringLineState initialState(const BodyKinematics& A, const BodyKinematics& B,
+                                  double time) const;
+
+    //- Advances `state` by h > 0, the ends moving linearly to the
+    //  attachment points of A and B (the kinematics at state.time + h).
+    //  Throws UndefinedStateError (naming CVODE's failure) on failure,
+    //  leaving `state` unchanged.
+    void advance(MooringLineState& state, const BodyKinematics& A,
+                 const BodyKinematics& B, double h);
+
+    //- Loads and diagnostics of `state` with the ends at A's and B's
+    //  attachment points; shapePoints 0 or >= 2
+    MooringLineOutput evaluate(const MooringLineState& state, const BodyKinematics& A,
+                               const BodyKinematics& B, int shapePoints) const;
+
+    //- Integrator counters since construction
+    CvodeBdf::Statistics statistics() const;
+
+    const MooringLineParameters& parameters() const { return parameters_; }
+
+private:
+    struct Ends {
+        Vector3 Q0, P0, Q1, P1;
+        double t0 = 0.0, h = 1.0;
+    };
+    int rhs(double t, const double* y, double* ydot) const;
+    Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
+
+    MooringLineParameters parameters_;
+    double weight_ = 0.0;
+    Ends ends_;
+    std::unique_ptr<CvodeBdf> integrator_;
+};
+
+} // namespace connectors
+
+#endif

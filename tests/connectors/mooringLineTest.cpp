@@ -1,0 +1,218 @@
+// The dynamic lumped-mass line: static limit against the quasi-static
+// catenary, transverse natural frequency of a taut line, exact repetition
+// of a step from a saved state, state serialization.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "LawTestSupport.hpp"
+#include "catenary/Catenary.hpp"
+#include "mooringLine/MooringLine.hpp"
+
+namespace {
+
+using namespace lawTest;
+using connectors::MooringLine;
+using connectors::MooringLineParameters;
+using connectors::MooringLineState;
+
+constexpr double pi = 3.14159265358979323846;
+
+//- A chain of 100 m in 40 m of water with Morison drag and axial damping
+MooringLineParameters chain(int segments)
+{
+    MooringLineParameters p;
+    p.length = 100.0;
+    p.EA = 5e7;
+    p.axialDamping = 2e5; // ~ critical for the axial mode of a 2.5 m segment
+    p.massPerLength = 80.0;
+    p.diameter = 0.1;
+    p.normalDrag = 1.2;
+    p.tangentialDrag = 0.05;
+    p.normalAddedMass = 1.0;
+    p.seabedContact = true;
+    p.segments = segments;
+    p.relativeTolerance = 1e-7;
+    p.absoluteTolerance = 1e-7;
+    return p;
+}
+
+const BodyKinematics fairlead = body(Vector3(80.0, 0.0, 40.0));
+const BodyKinematics anchor = body(Vector3::Zero());
+
+TEST(MooringLine, HeldStillSettlesOnTheQuasiStaticCatenary)
+{
+    connectors::CatenaryParameters c;
+    c.line.length = 100.0;
+    c.line.EA = 5e7;
+    c.line.weight = chain(10).weight();
+    c.line.seabedContact = true;
+    const double Tqs = connectors::Catenary(c).evaluate(fairlead, anchor, nullptr, 0)
+                           .fairleadTension;
+    double previous = 1.0;
+    for (const int N : {5, 10, 20}) {
+        MooringLine line(chain(N));
+        MooringLineState s = line.initialState(fairlead, anchor, 0.0);
+        // 40 s in steps of 0.2 s; the tension averaged over the last 10 s
+        double sum = 0.0;
+        int samples = 0;
+        for (int step = 1; step <= 200; ++step) {
+            line.advance(s, fairlead, anchor, 0.2);
+            if (step > 150) {
+                sum += line.evaluate(s, fairlead, anchor, 0).fairleadTension;
+                ++samples;
+            }
+        }
+        double speed = 0.0;
+        for (int i = 0; i + 5 < int(s.nodes.size()); i += 6) {
+            speed = std::max(speed, std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
+        }
+        const double T = sum / samples;
+        const double difference = std::abs(T - Tqs) / Tqs;
+        std::cout << "N = " << N << ": mean fairlead tension " << T << " N, quasi-static "
+                  << Tqs << " N, relative difference " << difference
+                  << ", largest node speed " << speed << " m/s at 40 s\n";
+        // Nearly at rest: quadratic drag removes small motions slowly
+        // (amplitude ~ 1/t); residual vibration of a few cm/s moves the
+        // tension by ~0.1 %
+        EXPECT_LT(speed, 0.1);
+        // Straight segments between lumped masses: the static chain differs
+        // from the continuous catenary by O(1/N^2) (plus the seabed penalty,
+        // a ~2 mm sink); it must shrink with N and stay below 5 % at N = 5.
+        EXPECT_LT(difference, 0.05);
+        EXPECT_LT(difference, previous);
+        previous = difference;
+    }
+}
+
+//- Transverse frequency of a taut weightless line between fixed ends
+double measuredFrequency(int N, double& expectedDiscrete, double& string)
+{
+    MooringLineParameters p;
+    p.length = 100.0;
+    p.EA = 1e7;
+    p.massPerLength = 50.0;
+    p.gravity = 0.0;
+    p.segments = N;
+    p.relativeTolerance = 1e-9;
+    p.absoluteTolerance = 1e-9;
+    MooringLine line(p);
+    const BodyKinematics A = body(Vector3(101.0, 0, 0)); // 1 % stretch
+    const BodyKinematics B = body(Vector3::Zero());
+    MooringLineState s = line.initialState(A, B, 0.0);
+    for (int i = 1; i < N; ++i) {
+        s.nodes[6 * std::size_t(i - 1) + 1] = 0.1 * std::sin(pi * i / N); // y
+    }
+    const double stretched = 101.0, T = p.EA * 0.01;
+    const double muStretched = p.massPerLength * p.length / stretched;
+    string = 0.5 / stretched * std::sqrt(T / muStretched);
+    // chain of N equal masses: omega = 2 sqrt(T/(m l)) sin(pi/(2N))
+    expectedDiscrete = N / (pi * stretched) * std::sqrt(T / muStretched)
+                       * std::sin(pi / (2.0 * N));
+    const std::size_t mid = 6 * std::size_t(N / 2 - 1) + 1;
+    const double h = 0.05;
+    double previous = s.nodes[mid], t = 0.0;
+    std::vector<double> crossings;
+    while (crossings.size() < 5) {
+        line.advance(s, A, B, h);
+        t += h;
+        const double y = s.nodes[mid];
+        if ((previous > 0.0) != (y > 0.0)) {
+            crossings.push_back(t - h * y / (y - previous));
+        }
+        previous = y;
+    }
+    return 2.0 / (crossings.back() - crossings.front()) ; // 4 half periods
+}
+
+TEST(MooringLine, TautLineTransverseFrequency)
+{
+    double previousError = 1.0;
+    for (const int N : {4, 8, 16}) {
+        double discrete = 0.0, string = 0.0;
+        const double f = measuredFrequency(N, discrete, string);
+        const double error = std::abs(f - string) / string;
+        std::cout << "N = " << N << ": f1 = " << f << " Hz, string " << string
+                  << " Hz (error " << error << "), chain of N masses " << discrete
+                  << " Hz\n";
+        // The integrator reproduces the discrete chain's frequency (tolerance
+        // 1e-9, crossings interpolated over 0.05 s of a 4.5 s period: 1e-4)
+        EXPECT_NEAR(f, discrete, 1e-4 * string);
+        // and the discretisation error, ~ pi^2/(24 N^2), shrinks with N
+        EXPECT_LT(error, previousError / 3.0);
+        EXPECT_LT(error, 0.6 / (N * N));
+        previousError = error;
+    }
+}
+
+TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
+{
+    MooringLine line(chain(10));
+    MooringLineState s = line.initialState(fairlead, anchor, 0.0);
+    BodyKinematics moving = fairlead;
+    for (int step = 0; step < 5; ++step) {
+        moving.p_WBo_W[0] += 0.05;
+        line.advance(s, moving, anchor, 0.1);
+    }
+    // uninterrupted: two more steps
+    MooringLineState straight = s;
+    const MooringLineState saved = s;
+    BodyKinematics next = moving;
+    next.p_WBo_W[2] += 0.1;
+    line.advance(straight, next, anchor, 0.1);
+    const std::vector<double> afterOne = straight.serialize();
+    next.p_WBo_W[2] += 0.1;
+    line.advance(straight, next, anchor, 0.1);
+    // restored: an unrelated step in between, then the same two steps
+    MooringLineState other = saved;
+    line.advance(other, fairlead, anchor, 0.3);
+    MooringLineState restored =
+        MooringLineState::deserialize(saved.serialize(), line.parameters().segments);
+    next = moving;
+    next.p_WBo_W[2] += 0.1;
+    line.advance(restored, next, anchor, 0.1);
+    EXPECT_EQ(restored.serialize(), afterOne); // bit for bit
+    next.p_WBo_W[2] += 0.1;
+    line.advance(restored, next, anchor, 0.1);
+    EXPECT_EQ(restored.serialize(), straight.serialize());
+    const auto a = line.evaluate(restored, next, anchor, 11);
+    const auto b = line.evaluate(straight, next, anchor, 11);
+    EXPECT_EQ(a.loads.A.f_W, b.loads.A.f_W);
+    EXPECT_EQ(a.shape, b.shape);
+}
+
+TEST(MooringLine, StateSerialization)
+{
+    MooringLine line(chain(6));
+    const MooringLineState s = line.initialState(fairlead, anchor, 2.5);
+    const std::vector<double> data = s.serialize();
+    ASSERT_EQ(data.size(), 7u + 6u * 5u);
+    const MooringLineState back = MooringLineState::deserialize(data, 6);
+    EXPECT_EQ(back.time, 2.5);
+    EXPECT_EQ(back.P, s.P);
+    EXPECT_EQ(back.Q, s.Q);
+    EXPECT_EQ(back.nodes, s.nodes);
+    expectThrowWithMessage<std::invalid_argument>(
+        [&] { MooringLineState::deserialize(data, 7); },
+        "mooringLine: a saved state of 37 values does not fit a line of 7 segments "
+        "(43 values)");
+}
+
+TEST(MooringLine, LoadsAndShapeAtTheStart)
+{
+    // At the start the line is the quasi-static catenary: shape ends on
+    // P and Q, the anchor pulled horizontally only (seabed contact)
+    MooringLine line(chain(10));
+    const MooringLineState s = line.initialState(fairlead, anchor, 0.0);
+    const auto out = line.evaluate(s, fairlead, anchor, 11);
+    expectVectorNear(out.shape.front(), fairlead.p_WBo_W, 0.0);
+    expectVectorNear(out.shape.back(), Vector3::Zero(), 0.0);
+    EXPECT_GT(out.groundedLength, 0.0);
+    EXPECT_LT(out.loads.A.f_W[0], 0.0); // pulled towards the anchor
+    EXPECT_GT(out.V, 0.0);              // and down
+    EXPECT_GE(out.loads.dissipatedPower, 0.0);
+    expectAllFinite(out.loads);
+}
+
+} // namespace
