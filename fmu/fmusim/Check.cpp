@@ -81,15 +81,17 @@ std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu, const Connec
     {
         const std::vector<std::string> names = componentNames(e.base, e.shape);
         const bool isRequired = required(e, connector.twoBody());
-        const auto declared = std::count_if(names.begin(), names.end(),
-                                            [&](const std::string& n) { return fmu.hasVariable(n); });
+        const auto declared =
+            std::count_if(names.begin(), names.end(), [&](const std::string& n) { return fmu.hasVariable(n); });
         if (declared == 0 && !isRequired) continue;
         std::vector<std::string>& problems = isRequired ? missing : optional;
         for (const std::string& name : names)
         {
             if (!fmu.hasVariable(name))
             {
-                problems.push_back(isRequired ? "missing " + name : name + " is missing while other components of " + e.base + " are declared");
+                problems.push_back(isRequired
+                                       ? "missing " + name
+                                       : name + " is missing while other components of " + e.base + " are declared");
                 continue;
             }
             const fmuImport::Variable& v = fmu.variable(name);
@@ -124,7 +126,8 @@ int checkCommand(const std::vector<std::string>& arguments)
     ProbeOptions options;
     if (const auto seed = args.number("seed"))
     {
-        if (*seed < 0 || *seed != static_cast<unsigned int>(*seed)) throw UsageError("--seed must be a non-negative integer");
+        if (*seed < 0 || *seed != static_cast<unsigned int>(*seed))
+            throw UsageError("--seed must be a non-negative integer");
         options.seed = static_cast<unsigned int>(*seed);
     }
     if (const auto samples = args.number("samples"))

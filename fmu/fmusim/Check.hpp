@@ -15,7 +15,12 @@ int checkCommand(const std::vector<std::string>& args);
 
 struct CheckResult
 {
-    enum Outcome { pass, fail, skip };
+    enum Outcome
+    {
+        pass,
+        fail,
+        skip
+    };
     std::string name;
     Outcome outcome;
     std::string reason;  // why it failed or was skipped

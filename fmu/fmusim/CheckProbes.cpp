@@ -85,7 +85,8 @@ public:
     {
         for (std::size_t i = 0; i < expected.size(); ++i)
             if (!(expected[i] == actual[i]))
-                return outputs_[i]->name + " is " + formatNumber(actual[i]) + " instead of " + formatNumber(expected[i]);
+                return outputs_[i]->name + " is " + formatNumber(actual[i]) + " instead of " +
+                       formatNumber(expected[i]);
         return "";
     }
 
@@ -174,7 +175,9 @@ void restProbe(Prober& p, const std::function<void(const CheckResult&)>& report)
     std::vector<std::string> noStart;
     for (const auto& input : p.connector_.kinematicInputs())
         if (!p.fmu_.variable(input.first).hasStart) noStart.push_back(input.first);
-    if (!noStart.empty()) return report(fail(name, "inputs without a start value: " + noStart.front() + (noStart.size() > 1 ? " and others" : "")));
+    if (!noStart.empty())
+        return report(
+            fail(name, "inputs without a start value: " + noStart.front() + (noStart.size() > 1 ? " and others" : "")));
     try
     {
         fmuImport::Instance instance = p.started("rest");
@@ -227,7 +230,8 @@ void stateProbes(Prober& p, const std::function<void(const CheckResult&)>& repor
             p.randomStep(instance, t);
             instance.setState(saved);
             const std::string restored = p.difference(savedOutputs, p.outputs(instance));
-            report(restored.empty() ? pass("state-get-set") : fail("state-get-set", "after fmi2SetFMUstate " + restored));
+            report(restored.empty() ? pass("state-get-set")
+                                    : fail("state-get-set", "after fmi2SetFMUstate " + restored));
 
             // The same step twice with a different one in between, as a
             // PIMPLE loop does: the results must be identical, bit for bit.
@@ -256,7 +260,8 @@ void stateProbes(Prober& p, const std::function<void(const CheckResult&)>& repor
         if (!restored.empty()) return report(fail("state-serialize", "after deserializing " + restored));
         p.step(other, tSaved, A1, B1);
         const std::string stepped = p.difference(first, p.outputs(other));
-        report(stepped.empty() ? pass("state-serialize") : fail("state-serialize", "step after deserializing: " + stepped));
+        report(stepped.empty() ? pass("state-serialize")
+                               : fail("state-serialize", "step after deserializing: " + stepped));
     }
     catch (const std::exception& e)
     {

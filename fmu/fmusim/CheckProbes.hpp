@@ -14,9 +14,9 @@ namespace fmusim {
 struct ProbeOptions
 {
     unsigned int seed = 1;
-    int samples = 20;      // random configurations
+    int samples = 20;        // random configurations
     double stepSize = 1e-3;  // communication step of every probe [s]
-    bool verbose = false;  // print the FMU's log messages
+    bool verbose = false;    // print the FMU's log messages
 };
 
 // Runs every probe, handing each result to report as soon as it is known.

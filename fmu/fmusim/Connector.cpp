@@ -34,7 +34,8 @@ const std::vector<VocabularyEntry>& connectorVocabulary()
             entries.push_back({body + ".r", Shape::vector, C::input, V::continuous, {"m"}, core});
             entries.push_back({body + ".R", Shape::matrix, C::input, V::continuous, {"1", ""}, core});
             entries.push_back({body + ".v", Shape::vector, C::input, V::continuous, {"m/s"}, Requirement::optional});
-            entries.push_back({body + ".omega", Shape::vector, C::input, V::continuous, {"rad/s"}, Requirement::optional});
+            entries.push_back(
+                {body + ".omega", Shape::vector, C::input, V::continuous, {"rad/s"}, Requirement::optional});
             entries.push_back({body + ".m", Shape::scalar, C::input, V::continuous, {"kg"}, Requirement::optional});
             entries.push_back({body + ".c", Shape::vector, C::input, V::continuous, {"m"}, Requirement::optional});
             entries.push_back({body + ".J", Shape::matrix, C::input, V::continuous, {"kg.m2"}, Requirement::optional});
@@ -101,8 +102,7 @@ Connector::Body Connector::findBody(const fmuImport::Fmu& fmu, const std::string
     return b;
 }
 
-Connector::Connector(const fmuImport::Fmu& fmu)
-    : A_(findBody(fmu, "A")), B_(findBody(fmu, "B"))
+Connector::Connector(const fmuImport::Fmu& fmu) : A_(findBody(fmu, "A")), B_(findBody(fmu, "B"))
 {
     for (const fmuImport::Variable& v : fmu.modelDescription().variables)
         if (v.causality == fmuImport::Causality::input && v.name.compare(0, 2, "B.") == 0) twoBody_ = true;
@@ -143,8 +143,7 @@ void Connector::setKinematics(fmuImport::Instance& instance, const Kinematics& A
     instance.setReal(vrs, values);
 }
 
-void Connector::setMassProperties(fmuImport::Instance& instance, const MassProperties& A,
-                                  const MassProperties& B) const
+void Connector::setMassProperties(fmuImport::Instance& instance, const MassProperties& A, const MassProperties& B) const
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;

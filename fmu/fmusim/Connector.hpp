@@ -36,8 +36,18 @@ struct Loads
     Eigen::Vector3d M = Eigen::Vector3d::Zero();  // moment about the reference point [N.m]
 };
 
-enum class Shape { scalar, vector, matrix };
-enum class Requirement { always, twoBody, optional };
+enum class Shape
+{
+    scalar,
+    vector,
+    matrix
+};
+enum class Requirement
+{
+    always,
+    twoBody,
+    optional
+};
 
 // One name of the interface: base "A.r" with shape vector stands for
 // A.r[1], A.r[2], A.r[3].

@@ -54,7 +54,8 @@ std::optional<std::vector<std::string>> splitCsvLine(const std::string& line)
 
 std::string csvField(const std::string& s)
 {
-    const bool needsQuotes = s.find_first_of(",\"") != std::string::npos || (!s.empty() && (s.front() == ' ' || s.back() == ' '));
+    const bool needsQuotes =
+        s.find_first_of(",\"") != std::string::npos || (!s.empty() && (s.front() == ' ' || s.back() == ' '));
     if (!needsQuotes) return s;
     std::string quoted = "\"";
     for (const char c : s)
@@ -72,8 +73,7 @@ std::string formatNumber(double value)
     return buffer;
 }
 
-InputTable::InputTable(const std::string& path)
-    : path_(path)
+InputTable::InputTable(const std::string& path) : path_(path)
 {
     std::ifstream in(path);
     if (!in) throw FileError(path + ": cannot be read");
@@ -132,8 +132,7 @@ double InputTable::interpolate(std::size_t column, double t) const
 
 double InputTable::previous(std::size_t column, double t) const { return values_[rowAtOrBefore(t)][column]; }
 
-CsvWriter::CsvWriter(const std::string& path)
-    : path_(path), out_(&std::cout)
+CsvWriter::CsvWriter(const std::string& path) : path_(path), out_(&std::cout)
 {
     if (path.empty()) return;
     file_.open(path);

@@ -87,7 +87,8 @@ BodyState trapezoidalStep(const Body& body, const BodyState& s0, const Loads& lo
     for (int iteration = 0; iteration < 100; ++iteration)
     {
         s1.q = (rotationFromVector(0.5 * h * (s0.omega + s1.omega)) * s0.q).normalized();
-        const Eigen::Vector3d omega = s0.omega + 0.5 * h * (alpha0 + angularAcceleration(body, s1.q, s1.omega, loads1.M));
+        const Eigen::Vector3d omega =
+            s0.omega + 0.5 * h * (alpha0 + angularAcceleration(body, s1.q, s1.omega, loads1.M));
         const double change = (omega - s1.omega).norm();
         s1.omega = omega;
         if (change <= 1e-15 * (1 + omega.norm())) break;

@@ -13,18 +13,24 @@ namespace fmusim {
 
 struct BodyState
 {
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();                  // position of the centre of mass [m]
-    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();        // orientation, body to global
-    Eigen::Vector3d v = Eigen::Vector3d::Zero();                  // velocity [m/s]
-    Eigen::Vector3d omega = Eigen::Vector3d::Zero();              // angular velocity, global frame [rad/s]
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();            // position of the centre of mass [m]
+    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  // orientation, body to global
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();            // velocity [m/s]
+    Eigen::Vector3d omega = Eigen::Vector3d::Zero();        // angular velocity, global frame [rad/s]
 };
 
-enum class MotionKind { free, fixed, sinusoidal, world };
+enum class MotionKind
+{
+    free,
+    fixed,
+    sinusoidal,
+    world
+};
 
 struct Body
 {
     MotionKind motion = MotionKind::free;
-    double mass = 1;                                     // [kg]
+    double mass = 1;                                        // [kg]
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();  // about the centre of mass, body frame [kg.m2]
     BodyState initial;
     // Sinusoidal motion: x = x0 + amplitude sin(2 pi f t + phase),

@@ -14,20 +14,20 @@ namespace fmusim {
 const char* runUsage()
 {
     return "fmusim run model.fmu [options]\n"
-        "  Simulates an FMI 2.0 co-simulation FMU with fixed communication steps.\n"
-        "  --start-time T0         default: DefaultExperiment startTime, else 0\n"
-        "  --stop-time T1          default: DefaultExperiment stopTime, else T0 + 1\n"
-        "  --step-size H           default: DefaultExperiment stepSize, else (T1 - T0)/500\n"
-        "  --set name=value        set a parameter or input before initialization (repeatable)\n"
-        "  --parameters file       'name = value' per line, '#' comments; --set wins\n"
-        "  --input-file in.csv     header: time, then input names; Real inputs are\n"
-        "                          interpolated linearly, others take the last row at or\n"
-        "                          before t; the first and last rows hold outside the table\n"
-        "  --output-file out.csv   default: standard output\n"
-        "  --output-variables a,b  default: every output\n"
-        "  --logging               switch on the FMU's debug logging\n"
-        "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
-        "  row for t + h is written after it (the connector interface's convention).\n";
+           "  Simulates an FMI 2.0 co-simulation FMU with fixed communication steps.\n"
+           "  --start-time T0         default: DefaultExperiment startTime, else 0\n"
+           "  --stop-time T1          default: DefaultExperiment stopTime, else T0 + 1\n"
+           "  --step-size H           default: DefaultExperiment stepSize, else (T1 - T0)/500\n"
+           "  --set name=value        set a parameter or input before initialization (repeatable)\n"
+           "  --parameters file       'name = value' per line, '#' comments; --set wins\n"
+           "  --input-file in.csv     header: time, then input names; Real inputs are\n"
+           "                          interpolated linearly, others take the last row at or\n"
+           "                          before t; the first and last rows hold outside the table\n"
+           "  --output-file out.csv   default: standard output\n"
+           "  --output-variables a,b  default: every output\n"
+           "  --logging               switch on the FMU's debug logging\n"
+           "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
+           "  row for t + h is written after it (the connector interface's convention).\n";
 }
 
 namespace {
@@ -50,10 +50,10 @@ struct RunOptions
 
 RunOptions parseRunOptions(const std::vector<std::string>& arguments)
 {
-    const Args args = parseArgs(arguments,
-                                {"start-time", "stop-time", "step-size", "set", "parameters", "input-file",
-                                 "output-file", "output-variables"},
-                                {"logging"});
+    const Args args = parseArgs(
+        arguments,
+        {"start-time", "stop-time", "step-size", "set", "parameters", "input-file", "output-file", "output-variables"},
+        {"logging"});
     if (args.positional.size() != 1) throw UsageError("run needs exactly one FMU file");
     RunOptions o;
     o.fmuPath = args.positional[0];
@@ -81,16 +81,20 @@ std::vector<InputColumn> matchInputs(const fmuImport::Fmu& fmu, const InputTable
     for (std::size_t i = 0; i < table.names().size(); ++i)
     {
         const std::string& name = table.names()[i];
-        if (!fmu.hasVariable(name)) throw FileError(where + name + "': FMU '" + fmu.path() + "' has no variable '" + name + "'");
+        if (!fmu.hasVariable(name))
+            throw FileError(where + name + "': FMU '" + fmu.path() + "' has no variable '" + name + "'");
         const fmuImport::Variable& v = fmu.variable(name);
-        if (v.causality != fmuImport::Causality::input) throw FileError(where + name + "': the variable is not an input");
-        if (v.type == fmuImport::Type::String) throw FileError(where + name + "': String inputs cannot come from a table");
+        if (v.causality != fmuImport::Causality::input)
+            throw FileError(where + name + "': the variable is not an input");
+        if (v.type == fmuImport::Type::String)
+            throw FileError(where + name + "': String inputs cannot come from a table");
         columns.push_back({i, &v});
     }
     return columns;
 }
 
-void setInputs(fmuImport::Instance& instance, const InputTable* table, const std::vector<InputColumn>& columns, double t)
+void setInputs(fmuImport::Instance& instance, const InputTable* table, const std::vector<InputColumn>& columns,
+               double t)
 {
     std::vector<unsigned int> realVrs, intVrs, boolVrs;
     std::vector<double> reals;
@@ -100,17 +104,17 @@ void setInputs(fmuImport::Instance& instance, const InputTable* table, const std
     {
         switch (c.variable->type)
         {
-        case fmuImport::Type::Real:
-            realVrs.push_back(c.variable->valueReference);
-            reals.push_back(table->interpolate(c.column, t));
-            break;
-        case fmuImport::Type::Boolean:
-            boolVrs.push_back(c.variable->valueReference);
-            bools.push_back(table->previous(c.column, t) != 0);
-            break;
-        default:
-            intVrs.push_back(c.variable->valueReference);
-            ints.push_back(static_cast<int>(std::lround(table->previous(c.column, t))));
+            case fmuImport::Type::Real:
+                realVrs.push_back(c.variable->valueReference);
+                reals.push_back(table->interpolate(c.column, t));
+                break;
+            case fmuImport::Type::Boolean:
+                boolVrs.push_back(c.variable->valueReference);
+                bools.push_back(table->previous(c.column, t) != 0);
+                break;
+            default:
+                intVrs.push_back(c.variable->valueReference);
+                ints.push_back(static_cast<int>(std::lround(table->previous(c.column, t))));
         }
     }
     if (!realVrs.empty()) instance.setReal(realVrs, reals);
@@ -146,7 +150,8 @@ int runCommand(const std::vector<std::string>& arguments)
 
     const double t0 = o.startTime.value_or(md.hasDefaultExperiment ? md.startTime : 0.0);
     double t1 = o.stopTime.value_or(md.hasDefaultExperiment && md.stopTime > t0 ? md.stopTime : t0 + 1.0);
-    if (!(t1 > t0)) throw UsageError("the stop time " + formatNumber(t1) + " is not after the start time " + formatNumber(t0));
+    if (!(t1 > t0))
+        throw UsageError("the stop time " + formatNumber(t1) + " is not after the start time " + formatNumber(t0));
     const double h = o.stepSize.value_or(md.hasDefaultExperiment && md.stepSize > 0 ? md.stepSize : (t1 - t0) / 500);
     const long steps = static_cast<long>(std::ceil((t1 - t0) / h - 1e-9));
 

@@ -90,7 +90,10 @@ class Simulation
 {
 public:
     Simulation(const TwoBodyConfig& config, const fmuImport::Fmu& fmu, const Connector& connector)
-        : c_(config), fmu_(fmu), connector_(connector), instance_(instantiate(fmu, "twobody", config.logging)),
+        : c_(config),
+          fmu_(fmu),
+          connector_(connector),
+          instance_(instantiate(fmu, "twobody", config.logging)),
           out_(config.outputFile)
     {
         for (const fmuImport::Variable& v : fmu.modelDescription().variables)
@@ -106,8 +109,10 @@ public:
         {
             const double t = c_.startTime + n * c_.stepSize;
             const double next = n + 1 == steps ? c_.stopTime : c_.startTime + (n + 1) * c_.stepSize;
-            if (c_.scheme == Scheme::explicitEuler) explicitStep(t, next - t);
-            else implicitStep(t, next - t);
+            if (c_.scheme == Scheme::explicitEuler)
+                explicitStep(t, next - t);
+            else
+                implicitStep(t, next - t);
             if (!finite(a_) || !finite(b_))
                 throw SimulationError("the state of a body is not finite at t = " + formatNumber(next));
             if ((n + 1) % c_.writeEvery == 0 || n + 1 == steps) write(next);
@@ -120,10 +125,12 @@ public:
     }
 
 private:
-    BodyState advance(const Body& body, const BodyState& s0, const Loads& l0, const Loads* l1, double t1, double h) const
+    BodyState advance(const Body& body, const BodyState& s0, const Loads& l0, const Loads* l1, double t1,
+                      double h) const
     {
         if (!body.isFree()) return prescribedState(body, t1);
-        return l1 ? trapezoidalStep(body, s0, l0, *l1, c_.gravity, h) : fmusim::explicitStep(body, s0, l0, c_.gravity, h);
+        return l1 ? trapezoidalStep(body, s0, l0, *l1, c_.gravity, h)
+                  : fmusim::explicitStep(body, s0, l0, c_.gravity, h);
     }
 
     void initialize()
@@ -195,7 +202,8 @@ private:
             if (iterations_ > 1)
             {
                 const LoadVector change = residual - lastResidual;
-                if (change.squaredNorm() > 0) relaxation = -relaxation * lastResidual.dot(change) / change.squaredNorm();
+                if (change.squaredNorm() > 0)
+                    relaxation = -relaxation * lastResidual.dot(change) / change.squaredNorm();
             }
             guess += relaxation * residual;
             lastResidual = residual;
@@ -212,7 +220,8 @@ private:
         appendBody(row, c_.B, b_);
         const std::vector<std::string> values = readValues(instance_, outputs_);
         row.insert(row.end(), values.begin(), values.end());
-        if (c_.scheme == Scheme::implicitTrapezoidal) row.push_back(std::to_string(t == c_.startTime ? 0 : iterations_));
+        if (c_.scheme == Scheme::implicitTrapezoidal)
+            row.push_back(std::to_string(t == c_.startTime ? 0 : iterations_));
         out_.row(row);
     }
 

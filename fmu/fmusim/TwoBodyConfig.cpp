@@ -52,10 +52,14 @@ Eigen::Matrix3d inertia(const Setting& s)
 {
     const std::vector<double> v = numbers(s);
     Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    if (v.size() == 3) J.diagonal() << v[0], v[1], v[2];
-    else if (v.size() == 6) J << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
-    else if (v.size() == 9) J << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
-    else reject(s, "expected 3 (Jxx Jyy Jzz), 6 (and Jxy Jxz Jyz) or 9 numbers");
+    if (v.size() == 3)
+        J.diagonal() << v[0], v[1], v[2];
+    else if (v.size() == 6)
+        J << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
+    else if (v.size() == 9)
+        J << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
+    else
+        reject(s, "expected 3 (Jxx Jyy Jzz), 6 (and Jxy Jxz Jyz) or 9 numbers");
     if ((J - J.transpose()).norm() > 1e-12 * J.norm()) reject(s, "the inertia tensor is not symmetric");
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(J);
     if (eigen.eigenvalues().minCoeff() <= 0) reject(s, "the inertia tensor is not positive definite");
@@ -66,21 +70,30 @@ void applyBody(Body& body, const std::string& key, const Setting& s)
 {
     if (key == "motion")
     {
-        if (s.value == "free") body.motion = MotionKind::free;
-        else if (s.value == "fixed") body.motion = MotionKind::fixed;
-        else if (s.value == "sinusoidal") body.motion = MotionKind::sinusoidal;
-        else if (s.value == "world") body.motion = MotionKind::world;
-        else reject(s, "'" + s.value + "' is not free, fixed, sinusoidal or world");
+        if (s.value == "free")
+            body.motion = MotionKind::free;
+        else if (s.value == "fixed")
+            body.motion = MotionKind::fixed;
+        else if (s.value == "sinusoidal")
+            body.motion = MotionKind::sinusoidal;
+        else if (s.value == "world")
+            body.motion = MotionKind::world;
+        else
+            reject(s, "'" + s.value + "' is not free, fixed, sinusoidal or world");
     }
     else if (key == "mass")
     {
         body.mass = scalar(s);
         if (!(body.mass > 0)) reject(s, "the mass must be positive");
     }
-    else if (key == "inertia") body.inertia = inertia(s);
-    else if (key == "position") body.initial.x = vector(s);
-    else if (key == "velocity") body.initial.v = vector(s);
-    else if (key == "angular-velocity") body.initial.omega = vector(s);
+    else if (key == "inertia")
+        body.inertia = inertia(s);
+    else if (key == "position")
+        body.initial.x = vector(s);
+    else if (key == "velocity")
+        body.initial.v = vector(s);
+    else if (key == "angular-velocity")
+        body.initial.omega = vector(s);
     else if (key == "orientation")
     {
         const std::vector<double> q = numbers(s);
@@ -89,10 +102,14 @@ void applyBody(Body& body, const std::string& key, const Setting& s)
         if (quaternion.norm() < 1e-12) reject(s, "the quaternion is zero");
         body.initial.q = quaternion.normalized();
     }
-    else if (key == "amplitude") body.amplitude = vector(s);
-    else if (key == "rotation-amplitude") body.rotationAmplitude = vector(s);
-    else if (key == "frequency") body.frequency = scalar(s);
-    else if (key == "phase") body.phase = scalar(s);
+    else if (key == "amplitude")
+        body.amplitude = vector(s);
+    else if (key == "rotation-amplitude")
+        body.rotationAmplitude = vector(s);
+    else if (key == "frequency")
+        body.frequency = scalar(s);
+    else if (key == "phase")
+        body.phase = scalar(s);
 }
 
 void apply(TwoBodyConfig& c, const Setting& s)
@@ -103,20 +120,32 @@ void apply(TwoBodyConfig& c, const Setting& s)
         applyBody(key[0] == 'A' ? c.A : c.B, key.substr(2), s);
         if (key == "B.motion") c.bMotionGiven = true;
     }
-    else if (key == "start-time") c.startTime = scalar(s);
-    else if (key == "stop-time") c.stopTime = scalar(s);
-    else if (key == "step-size") c.stepSize = scalar(s);
-    else if (key == "gravity") c.gravity = vector(s);
-    else if (key == "output-file") c.outputFile = s.value;
-    else if (key == "write-every") c.writeEvery = static_cast<int>(scalar(s));
-    else if (key == "coupling-tolerance") c.couplingTolerance = scalar(s);
-    else if (key == "max-coupling-iterations") c.maxCouplingIterations = static_cast<int>(scalar(s));
-    else if (key == "initial-relaxation") c.initialRelaxation = scalar(s);
+    else if (key == "start-time")
+        c.startTime = scalar(s);
+    else if (key == "stop-time")
+        c.stopTime = scalar(s);
+    else if (key == "step-size")
+        c.stepSize = scalar(s);
+    else if (key == "gravity")
+        c.gravity = vector(s);
+    else if (key == "output-file")
+        c.outputFile = s.value;
+    else if (key == "write-every")
+        c.writeEvery = static_cast<int>(scalar(s));
+    else if (key == "coupling-tolerance")
+        c.couplingTolerance = scalar(s);
+    else if (key == "max-coupling-iterations")
+        c.maxCouplingIterations = static_cast<int>(scalar(s));
+    else if (key == "initial-relaxation")
+        c.initialRelaxation = scalar(s);
     else if (key == "scheme")
     {
-        if (s.value == "explicit") c.scheme = Scheme::explicitEuler;
-        else if (s.value == "implicit") c.scheme = Scheme::implicitTrapezoidal;
-        else reject(s, "'" + s.value + "' is not explicit or implicit");
+        if (s.value == "explicit")
+            c.scheme = Scheme::explicitEuler;
+        else if (s.value == "implicit")
+            c.scheme = Scheme::implicitTrapezoidal;
+        else
+            reject(s, "'" + s.value + "' is not explicit or implicit");
     }
 }
 
@@ -132,8 +161,15 @@ bool isKey(const std::string& name)
 const std::vector<std::string>& twoBodyKeys()
 {
     static const std::vector<std::string> keys = [] {
-        std::vector<std::string> k{"start-time", "stop-time", "step-size", "scheme", "gravity", "output-file",
-                                   "write-every", "coupling-tolerance", "max-coupling-iterations",
+        std::vector<std::string> k{"start-time",
+                                   "stop-time",
+                                   "step-size",
+                                   "scheme",
+                                   "gravity",
+                                   "output-file",
+                                   "write-every",
+                                   "coupling-tolerance",
+                                   "max-coupling-iterations",
                                    "initial-relaxation"};
         for (const std::string body : {"A.", "B."})
             for (const char* key : {"motion", "mass", "inertia", "position", "orientation", "velocity",
@@ -164,7 +200,8 @@ TwoBodyConfig parseTwoBodyConfig(const std::vector<std::string>& arguments)
     for (const auto& option : args.options)
     {
         if (!isKey(option.first)) continue;
-        for (const std::string& value : option.second) settings.push_back({option.first, value, "--" + option.first, false});
+        for (const std::string& value : option.second)
+            settings.push_back({option.first, value, "--" + option.first, false});
     }
     for (const Setting& s : settings) apply(c, s);
 

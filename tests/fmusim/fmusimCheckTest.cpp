@@ -24,10 +24,10 @@ TEST(FmusimCheck, TestSpringPassesEveryCheck)
 {
     const harness::Result r = fmusim("check " + fixture("testSpring"));
     expectAllPass(r);
-    for (const char* name : {"required-variables", "optional-variables", "units", "capabilities", "parameters",
-                             "initialization", "random-kinematics", "finite-outputs", "equal-and-opposite-forces",
-                             "zero-total-moment", "rest-load", "state-get-set", "repeatable-step", "state-serialize",
-                             "variable-step-size", "non-finite-inputs"})
+    for (const char* name :
+         {"required-variables", "optional-variables", "units", "capabilities", "parameters", "initialization",
+          "random-kinematics", "finite-outputs", "equal-and-opposite-forces", "zero-total-moment", "rest-load",
+          "state-get-set", "repeatable-step", "state-serialize", "variable-step-size", "non-finite-inputs"})
         EXPECT_TRUE(contains(r.out, std::string("PASS ") + name + "\n")) << name << "\n" << r.out;
     EXPECT_TRUE(contains(r.out, "16 passed, 0 failed\n")) << r.out;
 }

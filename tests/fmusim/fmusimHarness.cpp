@@ -30,13 +30,15 @@ std::vector<std::string> fields(const std::string& line)
     bool quoted = false;
     for (const char c : line)
     {
-        if (c == '"') quoted = !quoted;
+        if (c == '"')
+            quoted = !quoted;
         else if (c == ',' && !quoted)
         {
             out.push_back(field);
             field.clear();
         }
-        else field += c;
+        else
+            field += c;
     }
     out.push_back(field);
     return out;

@@ -18,9 +18,9 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(FmusimRun, StepResponseMatchesTheAnalyticSolution)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") +
-                                     " --set timeConstant=0.5 --set u=1 --stop-time 2 --step-size 0.01 --output-file " +
-                                     out);
+    const harness::Result r =
+        fmusim("run " + fixture("firstOrderLag") +
+               " --set timeConstant=0.5 --set u=1 --stop-time 2 --step-size 0.01 --output-file " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     ASSERT_EQ(t.names, (std::vector<std::string>{"time", "y", "stepCount"}));
@@ -124,8 +124,8 @@ TEST(FmusimRunErrors, MissingVariableInTheInputTable)
     harness::writeFile(in, "time,u,windSpeed\n0,0,1\n");
     const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(r.exitCode, 4);
-    EXPECT_TRUE(contains(r.err, in + ":1: column 'windSpeed': FMU '" + fixture("firstOrderLag") +
-                                    "' has no variable 'windSpeed'"))
+    EXPECT_TRUE(contains(
+        r.err, in + ":1: column 'windSpeed': FMU '" + fixture("firstOrderLag") + "' has no variable 'windSpeed'"))
         << r.err;
 
     harness::writeFile(in, "time,y\n0,0\n");

@@ -98,7 +98,8 @@ TEST(FmusimTwoBody, BodyFixedToTheWorld)
     const std::string out = scratch("out.csv");
     const harness::Result r = fmusim("twobody " + fixture("testSpring") + " " + springParameters +
                                      " --B.motion fixed --B.position 1,0,0 --A.position=-0.2,0,0"
-                                     " --stop-time 4 --output-file " + out);
+                                     " --stop-time 4 --output-file " +
+                                     out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     // The rest position of A is x = 0; symplectic Euler: (omega h)^2/24 = 4e-6.
@@ -112,7 +113,8 @@ TEST(FmusimTwoBody, SinusoidalMotionFollowsItsFormula)
     const harness::Result r = fmusim("twobody " + fixture("testSpring") +
                                      " --B.motion sinusoidal --B.position 1,0,0 --B.amplitude 0,0.1,0"
                                      " --B.frequency 0.5 --B.phase 0.3 --stop-time 1 --step-size 0.01"
-                                     " --output-file " + out);
+                                     " --output-file " +
+                                     out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     const std::vector<double> time = t.values("time"), y = t.values("B.y"), vy = t.values("B.vy");
@@ -132,9 +134,11 @@ TEST(FmusimTwoBody, SpinAboutAPrincipalAxis)
     for (const char* scheme : {"explicit", "implicit"})
     {
         const std::string out = scratch(std::string(scheme) + ".csv");
-        const harness::Result r = fmusim("twobody " + fixture("testSpring") +
-                                         " --set stiffness=0 --B.position 1,0,0 --A.inertia 1,2,3 --A.angular-velocity 0,0,2"
-                                         " --stop-time 3 --step-size 0.01 --scheme " + scheme + " --output-file " + out);
+        const harness::Result r =
+            fmusim("twobody " + fixture("testSpring") +
+                   " --set stiffness=0 --B.position 1,0,0 --A.inertia 1,2,3 --A.angular-velocity 0,0,2"
+                   " --stop-time 3 --step-size 0.01 --scheme " +
+                   scheme + " --output-file " + out);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const harness::Table t = harness::readTable(out);
         const std::vector<double> time = t.values("time"), qw = t.values("A.qw"), qz = t.values("A.qz"),
@@ -153,9 +157,11 @@ TEST(FmusimTwoBody, FreeFallUnderGravity)
     // stiffness 0: both bodies fall freely. The trapezoidal rule is exact for
     // constant acceleration: z = -g t^2/2, vz = -g t.
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("twobody " + fixture("testSpring") +
-                                     " --set stiffness=0 --B.position 1,0,0 --gravity 0,0,-9.81 --scheme implicit --stop-time 2"
-                                     " --step-size 0.01 --output-file " + out);
+    const harness::Result r =
+        fmusim("twobody " + fixture("testSpring") +
+               " --set stiffness=0 --B.position 1,0,0 --gravity 0,0,-9.81 --scheme implicit --stop-time 2"
+               " --step-size 0.01 --output-file " +
+               out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     const std::vector<double> time = t.values("time"), z = t.values("B.z"), vz = t.values("A.vz");

@@ -32,9 +32,10 @@ protected:
 
     fmuImport::Logger recorder()
     {
-        return [this](const std::string& instance, int status, const std::string& category, const std::string& message) {
-            log.push_back({instance, status, category, message});
-        };
+        return
+            [this](const std::string& instance, int status, const std::string& category, const std::string& message) {
+                log.push_back({instance, status, category, message});
+            };
     }
 
     // An initialised instance with the given time constant and a constant
@@ -203,7 +204,8 @@ TEST_F(LagInstance, NonFiniteInputIsAnError)
     catch (const fmuImport::Error& e)
     {
         EXPECT_NE(std::string(e.what()).find("fmi2SetReal failed at t = 0"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("u (value reference 2) set to the non-finite value nan"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("u (value reference 2) set to the non-finite value nan"),
+                  std::string::npos)
             << e.what();
     }
 }

@@ -137,10 +137,7 @@ TEST(FmuLoadError, WrongFmiVersion)
     expectLoadError(fmuPath("wrongFmiVersion"), {"fmiVersion is '1.0'", "only FMI 2.0"});
 }
 
-TEST(FmuLoadError, ModelExchangeOnly)
-{
-    expectLoadError(fmuPath("modelExchangeOnly"), {"no <CoSimulation> element"});
-}
+TEST(FmuLoadError, ModelExchangeOnly) { expectLoadError(fmuPath("modelExchangeOnly"), {"no <CoSimulation> element"}); }
 
 TEST(FmuLoadError, BinaryMissing)
 {

@@ -52,8 +52,10 @@ PrivateTmpDir::PrivateTmpDir()
 
 PrivateTmpDir::~PrivateTmpDir()
 {
-    if (hadPrevious_) setenv("TMPDIR", previous_.c_str(), 1);
-    else unsetenv("TMPDIR");
+    if (hadPrevious_)
+        setenv("TMPDIR", previous_.c_str(), 1);
+    else
+        unsetenv("TMPDIR");
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
 }

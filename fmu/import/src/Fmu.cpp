@@ -31,8 +31,7 @@ std::string fileUri(const std::filesystem::path& path)
 
 }  // namespace
 
-Fmu::Impl::Impl(const std::string& fmuPath)
-    : path(fmuPath)
+Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(fmuPath, ec))
@@ -40,11 +39,9 @@ Fmu::Impl::Impl(const std::string& fmuPath)
     unzip(fmuPath, directory.path());
 
     const std::filesystem::path xml = directory.path() / "modelDescription.xml";
-    if (!std::filesystem::is_regular_file(xml, ec))
-        throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
+    if (!std::filesystem::is_regular_file(xml, ec)) throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
     description = readModelDescription(xml, fmuPath);
-    for (std::size_t i = 0; i < description.variables.size(); ++i)
-        index.emplace(description.variables[i].name, i);
+    for (std::size_t i = 0; i < description.variables.size(); ++i) index.emplace(description.variables[i].name, i);
 
     const std::string binary = "binaries/linux64/" + description.modelIdentifier + ".so";
     if (!std::filesystem::is_regular_file(directory.path() / binary, ec))
@@ -52,10 +49,7 @@ Fmu::Impl::Impl(const std::string& fmuPath)
     library = std::make_unique<Library>((directory.path() / binary).string(), fmuPath);
 }
 
-Fmu::Fmu(const std::string& fmuPath)
-    : impl_(std::make_shared<Impl>(fmuPath))
-{
-}
+Fmu::Fmu(const std::string& fmuPath) : impl_(std::make_shared<Impl>(fmuPath)) {}
 
 Fmu::~Fmu() = default;
 Fmu::Fmu(Fmu&&) noexcept = default;
@@ -70,8 +64,7 @@ bool Fmu::hasVariable(const std::string& name) const { return impl_->index.count
 const Variable& Fmu::variable(const std::string& name) const
 {
     const auto found = impl_->index.find(name);
-    if (found == impl_->index.end())
-        throw Error("FMU '" + impl_->path + "' has no variable '" + name + "'");
+    if (found == impl_->index.end()) throw Error("FMU '" + impl_->path + "' has no variable '" + name + "'");
     return impl_->description.variables[found->second];
 }
 

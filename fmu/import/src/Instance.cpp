@@ -164,10 +164,7 @@ void Instance::doStep(double currentTime, double stepSize, bool noSetFMUStatePri
     impl_->time = currentTime + stepSize;
 }
 
-Instance::State::State()
-    : state_(nullptr), time_(std::numeric_limits<double>::quiet_NaN())
-{
-}
+Instance::State::State() : state_(nullptr), time_(std::numeric_limits<double>::quiet_NaN()) {}
 
 Instance::State::~State()
 {

@@ -12,7 +12,8 @@ namespace {
 
 const char* statusName(int status)
 {
-    static const char* const names[] = {"fmi2OK", "fmi2Warning", "fmi2Discard", "fmi2Error", "fmi2Fatal", "fmi2Pending"};
+    static const char* const names[] = {"fmi2OK",    "fmi2Warning", "fmi2Discard",
+                                        "fmi2Error", "fmi2Fatal",   "fmi2Pending"};
     return status >= 0 && status <= 5 ? names[status] : "unknown status";
 }
 

@@ -15,8 +15,8 @@ Library::Library(const std::string& file, const std::string& fmuPath)
         throw Error("FMU '" + fmuPath + "': cannot load its binary: " + (reason ? reason : file));
     }
     std::string missing;
-#define FMUIMPORT_RESOLVE(name)                                                                 \
-    api_.name = reinterpret_cast<fmi2##name##TYPE*>(dlsym(handle_, "fmi2" #name));               \
+#define FMUIMPORT_RESOLVE(name)                                                    \
+    api_.name = reinterpret_cast<fmi2##name##TYPE*>(dlsym(handle_, "fmi2" #name)); \
     if (!api_.name) missing += std::string(missing.empty() ? "" : ", ") + "fmi2" #name;
     FMUIMPORT_FMI2_FUNCTIONS(FMUIMPORT_RESOLVE)
 #undef FMUIMPORT_RESOLVE

@@ -9,16 +9,17 @@
 
 namespace fmuImport {
 
-#define FMUIMPORT_FMI2_FUNCTIONS(X)                                                                                  \
-    X(GetTypesPlatform) X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance) X(SetupExperiment)          \
-    X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate) X(Reset) X(GetReal) X(GetInteger)             \
-    X(GetBoolean) X(GetString) X(SetReal) X(SetInteger) X(SetBoolean) X(SetString) X(GetFMUstate) X(SetFMUstate)    \
-    X(FreeFMUstate) X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate)                          \
-    X(GetDirectionalDerivative) X(EnterEventMode) X(NewDiscreteStates) X(EnterContinuousTimeMode)                   \
-    X(CompletedIntegratorStep) X(SetTime) X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators)            \
-    X(GetContinuousStates) X(GetNominalsOfContinuousStates) X(SetRealInputDerivatives)                             \
-    X(GetRealOutputDerivatives) X(DoStep) X(CancelStep) X(GetStatus) X(GetRealStatus) X(GetIntegerStatus)          \
-    X(GetBooleanStatus) X(GetStringStatus)
+#define FMUIMPORT_FMI2_FUNCTIONS(X)                                                                                    \
+    X(GetTypesPlatform)                                                                                                \
+    X(GetVersion) X(SetDebugLogging) X(Instantiate) X(FreeInstance) X(SetupExperiment) X(EnterInitializationMode)      \
+        X(ExitInitializationMode) X(Terminate) X(Reset) X(GetReal) X(GetInteger) X(GetBoolean) X(GetString) X(SetReal) \
+            X(SetInteger) X(SetBoolean) X(SetString) X(GetFMUstate) X(SetFMUstate) X(FreeFMUstate)                     \
+                X(SerializedFMUstateSize) X(SerializeFMUstate) X(DeSerializeFMUstate) X(GetDirectionalDerivative)      \
+                    X(EnterEventMode) X(NewDiscreteStates) X(EnterContinuousTimeMode) X(CompletedIntegratorStep)       \
+                        X(SetTime) X(SetContinuousStates) X(GetDerivatives) X(GetEventIndicators)                      \
+                            X(GetContinuousStates) X(GetNominalsOfContinuousStates) X(SetRealInputDerivatives)         \
+                                X(GetRealOutputDerivatives) X(DoStep) X(CancelStep) X(GetStatus) X(GetRealStatus)      \
+                                    X(GetIntegerStatus) X(GetBooleanStatus) X(GetStringStatus)
 
 struct Fmi2Api
 {

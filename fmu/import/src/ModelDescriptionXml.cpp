@@ -44,8 +44,7 @@ double parseNumber(const std::string& s, Type type, const std::string& where)
     const char* begin = s.c_str();
     char* end = nullptr;
     const double value = std::strtod(begin, &end);
-    if (end == begin || *end != '\0')
-        throw Error(where + ": start value '" + s + "' is not a number");
+    if (end == begin || *end != '\0') throw Error(where + ": start value '" + s + "' is not a number");
     return value;
 }
 
@@ -54,10 +53,8 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
     Variable v;
     v.name = node.attribute("name").as_string();
     const std::string where = fmu + ": variable '" + v.name + "'";
-    if (v.name.empty())
-        throw Error(fmu + ": a ScalarVariable has no name");
-    if (!node.attribute("valueReference"))
-        throw Error(where + " has no valueReference");
+    if (v.name.empty()) throw Error(fmu + ": a ScalarVariable has no name");
+    if (!node.attribute("valueReference")) throw Error(where + " has no valueReference");
     v.valueReference = node.attribute("valueReference").as_uint();
     v.causality = parseCausality(node.attribute("causality").as_string(), where);
     v.variability = parseVariability(node.attribute("variability").as_string(), where);
@@ -65,12 +62,18 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
 
     const pugi::xml_node typeNode = node.first_child();
     const std::string typeName = typeNode.name();
-    if (typeName == "Real") v.type = Type::Real;
-    else if (typeName == "Integer") v.type = Type::Integer;
-    else if (typeName == "Boolean") v.type = Type::Boolean;
-    else if (typeName == "String") v.type = Type::String;
-    else if (typeName == "Enumeration") v.type = Type::Enumeration;
-    else throw Error(where + " has no type element (Real, Integer, Boolean, String or Enumeration)");
+    if (typeName == "Real")
+        v.type = Type::Real;
+    else if (typeName == "Integer")
+        v.type = Type::Integer;
+    else if (typeName == "Boolean")
+        v.type = Type::Boolean;
+    else if (typeName == "String")
+        v.type = Type::String;
+    else if (typeName == "Enumeration")
+        v.type = Type::Enumeration;
+    else
+        throw Error(where + " has no type element (Real, Integer, Boolean, String or Enumeration)");
 
     v.unit = typeNode.attribute("unit").as_string();
     if (const pugi::xml_attribute start = typeNode.attribute("start"))
@@ -93,8 +96,7 @@ ModelDescription readModelDescription(const std::filesystem::path& xmlFile, cons
         throw Error(fmu + ": modelDescription.xml is not well-formed XML (" + parsed.description() + " at byte " +
                     std::to_string(parsed.offset) + ")");
     const pugi::xml_node root = doc.child("fmiModelDescription");
-    if (!root)
-        throw Error(fmu + ": modelDescription.xml has no <fmiModelDescription> element");
+    if (!root) throw Error(fmu + ": modelDescription.xml has no <fmiModelDescription> element");
 
     ModelDescription md;
     md.fmiVersion = root.attribute("fmiVersion").as_string();
@@ -109,8 +111,7 @@ ModelDescription readModelDescription(const std::filesystem::path& xmlFile, cons
     if (!cs)
         throw Error(fmu + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
     md.modelIdentifier = cs.attribute("modelIdentifier").as_string();
-    if (md.modelIdentifier.empty())
-        throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
+    if (md.modelIdentifier.empty()) throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
     md.canHandleVariableCommunicationStepSize = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
     md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
     md.canSerializeFMUstate = cs.attribute("canSerializeFMUstate").as_bool();
@@ -128,8 +129,7 @@ ModelDescription readModelDescription(const std::filesystem::path& xmlFile, cons
     for (const pugi::xml_node node : root.child("ModelVariables").children("ScalarVariable"))
     {
         Variable v = readVariable(node, fmu);
-        if (!names.insert(v.name).second)
-            throw Error(fmu + ": variable '" + v.name + "' is declared twice");
+        if (!names.insert(v.name).second) throw Error(fmu + ": variable '" + v.name + "' is declared twice");
         md.variables.push_back(std::move(v));
     }
     return md;

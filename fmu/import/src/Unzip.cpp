@@ -30,15 +30,12 @@ std::string quoted(const std::string& s) { return "'" + s + "'"; }
 std::filesystem::path safeRelativePath(const std::string& archive, const std::string& name)
 {
     const std::string where = "FMU " + quoted(archive) + ": archive entry " + quoted(name);
-    if (name.empty() || name.front() == '/')
-        throw Error(where + " has an absolute path");
-    if (name.find('\\') != std::string::npos)
-        throw Error(where + " contains a backslash");
+    if (name.empty() || name.front() == '/') throw Error(where + " has an absolute path");
+    if (name.find('\\') != std::string::npos) throw Error(where + " contains a backslash");
     const std::filesystem::path path(name);
     for (const auto& part : path)
     {
-        if (part == "..")
-            throw Error(where + " has a '..' component");
+        if (part == "..") throw Error(where + " has a '..' component");
     }
     return path.lexically_normal();
 }
@@ -47,8 +44,7 @@ bool isSymlink(zip_t* z, zip_uint64_t index)
 {
     zip_uint8_t system = 0;
     zip_uint32_t attributes = 0;
-    if (zip_file_get_external_attributes(z, index, 0, &system, &attributes) != 0)
-        return false;
+    if (zip_file_get_external_attributes(z, index, 0, &system, &attributes) != 0) return false;
     return system == ZIP_OPSYS_UNIX && S_ISLNK(attributes >> 16);
 }
 
@@ -83,7 +79,8 @@ void unzip(const std::string& archive, const std::filesystem::path& directory)
         {
             std::filesystem::create_directories(target, ec);
             if (ec)
-                throw Error("FMU " + quoted(archive) + ": cannot create " + quoted(target.string()) + ": " + ec.message());
+                throw Error("FMU " + quoted(archive) + ": cannot create " + quoted(target.string()) + ": " +
+                            ec.message());
             continue;
         }
         std::filesystem::create_directories(target.parent_path(), ec);
@@ -96,16 +93,13 @@ void unzip(const std::string& archive, const std::filesystem::path& directory)
             throw Error("FMU " + quoted(archive) + ": cannot read archive entry " + quoted(name) + ": " +
                         zip_strerror(z.get()));
         std::ofstream out(target, std::ios::binary);
-        if (!out)
-            throw Error("FMU " + quoted(archive) + ": cannot write " + quoted(target.string()));
+        if (!out) throw Error("FMU " + quoted(archive) + ": cannot write " + quoted(target.string()));
         zip_int64_t got = 0;
-        while ((got = zip_fread(entry.get(), buffer.data(), buffer.size())) > 0)
-            out.write(buffer.data(), got);
+        while ((got = zip_fread(entry.get(), buffer.data(), buffer.size())) > 0) out.write(buffer.data(), got);
         if (got < 0)
             throw Error("FMU " + quoted(archive) + ": archive entry " + quoted(name) +
                         " is corrupt: " + zip_file_strerror(entry.get()));
-        if (!out)
-            throw Error("FMU " + quoted(archive) + ": cannot write " + quoted(target.string()));
+        if (!out) throw Error("FMU " + quoted(archive) + ": cannot write " + quoted(target.string()));
     }
 }
 

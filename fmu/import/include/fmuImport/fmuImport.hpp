@@ -21,9 +21,31 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-enum class Causality { parameter, calculatedParameter, input, output, local, independent };
-enum class Variability { constant, fixed, tunable, discrete, continuous };
-enum class Type { Real, Integer, Boolean, String, Enumeration };
+enum class Causality
+{
+    parameter,
+    calculatedParameter,
+    input,
+    output,
+    local,
+    independent
+};
+enum class Variability
+{
+    constant,
+    fixed,
+    tunable,
+    discrete,
+    continuous
+};
+enum class Type
+{
+    Real,
+    Integer,
+    Boolean,
+    String,
+    Enumeration
+};
 
 // One <ScalarVariable> of modelDescription.xml.
 struct Variable
@@ -33,7 +55,7 @@ struct Variable
     Type type = Type::Real;
     Causality causality = Causality::local;
     Variability variability = Variability::continuous;
-    std::string unit;         // Real only; empty when not declared
+    std::string unit;  // Real only; empty when not declared
     std::string description;
     bool hasStart = false;
     double start = 0;         // numeric start (Real, Integer, Enumeration, Boolean as 0/1)
@@ -61,7 +83,8 @@ using Logger = std::function<void(const std::string& instanceName, int status, c
 // parses and checks modelDescription.xml (fmiVersion 2.0, <CoSimulation>),
 // loads binaries/linux64/<modelIdentifier>.so and resolves every fmi2
 // function. The directory is removed on failure and when the FMU and every
-// Instance made from it are gone (instances keep the binary loaded).
+// Instance made from it are gone (instances keep the binary loaded). A
+// moved-from Fmu or Instance may only be destroyed or assigned to.
 class Fmu
 {
 public:
