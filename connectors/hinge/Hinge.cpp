@@ -30,8 +30,8 @@ Vector3 unitAxis(const char* name, const Vector3& axis)
     requireFinite(lawName, name, axis, "1");
     const double norm = axis.norm();
     if (!(norm >= minimumAxisNorm)) {
-        throw ConnectorError(std::string(lawName) + ": parameter " + name + " = "
-                             + formatVector(axis)
+        throw ConnectorError(std::string(lawName) + ": parameter " + name
+                             + " = " + formatVector(axis)
                              + " has no direction (allowed: a finite vector "
                                "of length >= 1e-12, normalised by the law)");
     }
@@ -49,9 +49,9 @@ Vector3 unitReference(const char* name, const char* axisName,
         reference - reference.dot(unitAxis) * unitAxis;
     const double norm = perpendicular.norm();
     if (!(norm >= minimumReferenceSine * reference.norm())) {
-        throw ConnectorError(std::string(lawName) + ": parameter " + name + " = "
-                             + formatVector(reference) + " is parallel to "
-                             + axisName
+        throw ConnectorError(std::string(lawName) + ": parameter " + name
+                             + " = " + formatVector(reference)
+                             + " is parallel to " + axisName
                              + " (allowed: a direction off the axis, or "
                                "(0, 0, 0) to derive one)");
     }
@@ -141,7 +141,8 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
         // Opposite axes: every direction perpendicular to a_A turns a_B
         // back; the body-fixed e_A is the documented choice.
         align_B_W = p.rotationalStiffness * theta * e_A_W;
-    } else {
+    }
+    else {
         // theta / sin(theta) -> 1 as the axes align
         const double ratio = sine > 0.0 ? theta / sine : 1.0;
         align_B_W = p.rotationalStiffness * ratio * u_W;
@@ -151,7 +152,8 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     const Vector3 wPerp_W = w_AB_W - angleRate * a_A_W;
 
     // Angle from e_A to e_B about a_A; the axial part of e_B drops out.
-    const double raw = std::atan2(a_A_W.dot(e_A_W.cross(e_B_W)), e_A_W.dot(e_B_W));
+    const double raw =
+        std::atan2(a_A_W.dot(e_A_W.cross(e_B_W)), e_A_W.dot(e_B_W));
     const double angle = unwrapAngle(raw, previousAngle);
     const double twist = angle - p.ptoRestAngle;
     const double tau = p.ptoStiffness * twist + p.ptoDamping * angleRate;

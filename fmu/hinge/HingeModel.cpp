@@ -51,15 +51,16 @@ struct BodyInputs {
 BodyInputs declareBody(fmuExport::VariableTable& table, const std::string& body)
 {
     BodyInputs in;
-    in.r = table.input(body + ".r", Shape::vector3, "m",
-                       "position of " + body + "'s reference point, global frame",
-                       {0, 0, 0});
-    in.R = table.input(body + ".R", Shape::matrix3, "1",
-                       "orientation of " + body + ", body frame to global frame",
-                       {1, 0, 0, 0, 1, 0, 0, 0, 1});
-    in.v = table.input(body + ".v", Shape::vector3, "m/s",
-                       "velocity of " + body + "'s reference point, global frame",
-                       {0, 0, 0});
+    in.r = table.input(
+        body + ".r", Shape::vector3, "m",
+        "position of " + body + "'s reference point, global frame", {0, 0, 0});
+    in.R =
+        table.input(body + ".R", Shape::matrix3, "1",
+                    "orientation of " + body + ", body frame to global frame",
+                    {1, 0, 0, 0, 1, 0, 0, 0, 1});
+    in.v = table.input(
+        body + ".v", Shape::vector3, "m/s",
+        "velocity of " + body + "'s reference point, global frame", {0, 0, 0});
     in.omega = table.input(body + ".omega", Shape::vector3, "rad/s",
                            "angular velocity of " + body + ", global frame",
                            {0, 0, 0});
@@ -73,7 +74,7 @@ std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
 }
 
 class HingeModel final : public fmuExport::Model {
-public:
+  public:
     HingeModel();
 
     void checkParameters(const double* values) const override
@@ -83,7 +84,7 @@ public:
 
     void computeOutputs(double* values) const override;
 
-private:
+  private:
     connectors::HingeParameters parameters(const double* values) const;
     connectors::BodyKinematics kinematics(const double* values,
                                           const BodyInputs& body) const;
@@ -137,24 +138,27 @@ HingeModel::HingeModel()
                              "translational penalty stiffness, >= 0", {1e5});
     damping_ = t.parameter("damping", Shape::scalar, "N.s/m",
                            "translational penalty damping, >= 0", {100.0});
-    rotationalStiffness_ = t.parameter("rotationalStiffness", Shape::scalar,
-                                       "N.m/rad",
-                                       "axis alignment penalty stiffness, >= 0",
-                                       {1e3});
-    rotationalDamping_ = t.parameter("rotationalDamping", Shape::scalar,
-                                     "N.m.s/rad",
-                                     "axis alignment penalty damping, >= 0",
-                                     {1.0});
-    ptoStiffness_ = t.parameter("ptoStiffness", Shape::scalar, "N.m/rad",
-                                "PTO rotary stiffness about the axis, >= 0",
-                                {0.0});
+    rotationalStiffness_ =
+        t.parameter("rotationalStiffness", Shape::scalar, "N.m/rad",
+                    "axis alignment penalty stiffness, >= 0", {1e3});
+    rotationalDamping_ =
+        t.parameter("rotationalDamping", Shape::scalar, "N.m.s/rad",
+                    "axis alignment penalty damping, >= 0", {1.0});
+    ptoStiffness_ =
+        t.parameter("ptoStiffness", Shape::scalar, "N.m/rad",
+                    "PTO rotary stiffness about the axis, >= 0", {0.0});
     ptoDamping_ = t.parameter("ptoDamping", Shape::scalar, "N.m.s/rad",
                               "PTO rotary damping about the axis, >= 0", {0.0});
-    ptoRestAngle_ = t.parameter("ptoRestAngle", Shape::scalar, "rad",
-                                "angle at which the PTO spring is unloaded",
-                                {0.0});
+    ptoRestAngle_ =
+        t.parameter("ptoRestAngle", Shape::scalar, "rad",
+                    "angle at which the PTO spring is unloaded", {0.0});
     A_ = declareBody(t, "A");
     B_ = declareBody(t, "B");
+    // Both bodies at the origin with the default hinge points: no load
+    t.booleanConstant("inputsStartAtRest",
+                      "the start values of inputs and parameters are a "
+                      "configuration where the connector exerts no load",
+                      true);
     declareOutputs();
 }
 
@@ -165,28 +169,27 @@ void HingeModel::declareOutputs()
     const std::vector<Block> pointMotion =
         join(points, {A_.v, A_.omega, B_.v, B_.omega});
     const std::vector<Block> orientations = {A_.R, B_.R, A_axis_, B_axis_};
-    const std::vector<Block> angle =
-        join(orientations, {A_ref_, B_ref_});
+    const std::vector<Block> angle = join(orientations, {A_ref_, B_ref_});
     const std::vector<Block> angleRate = {A_.R, A_axis_, A_.omega, B_.omega};
-    const std::vector<Block> pto =
-        join(join(angle, angleRate), {ptoStiffness_, ptoDamping_, ptoRestAngle_});
-    const std::vector<Block> loads = join(
-        join(pointMotion, pto),
-        {stiffness_, damping_, rotationalStiffness_, rotationalDamping_});
-    const std::vector<Block> energy = join(
-        join(points, angle),
-        {stiffness_, rotationalStiffness_, ptoStiffness_, ptoRestAngle_});
-    const std::vector<Block> dissipation = join(
-        join(pointMotion, angleRate),
-        {damping_, rotationalDamping_, ptoDamping_});
+    const std::vector<Block> pto = join(
+        join(angle, angleRate), {ptoStiffness_, ptoDamping_, ptoRestAngle_});
+    const std::vector<Block> loads =
+        join(join(pointMotion, pto),
+             {stiffness_, damping_, rotationalStiffness_, rotationalDamping_});
+    const std::vector<Block> energy =
+        join(join(points, angle),
+             {stiffness_, rotationalStiffness_, ptoStiffness_, ptoRestAngle_});
+    const std::vector<Block> dissipation =
+        join(join(pointMotion, angleRate),
+             {damping_, rotationalDamping_, ptoDamping_});
 
     firstOutput_ = t.output("A.F", Shape::vector3, "N",
                             "force of the hinge on A, global frame", loads);
     t.output("A.M", Shape::vector3, "N.m",
              "moment of the hinge on A about A's reference point, global frame",
              loads);
-    t.output("B.F", Shape::vector3, "N", "force of the hinge on B, global frame",
-             loads);
+    t.output("B.F", Shape::vector3, "N",
+             "force of the hinge on B, global frame", loads);
     t.output("B.M", Shape::vector3, "N.m",
              "moment of the hinge on B about B's reference point, global frame",
              loads);
@@ -263,11 +266,12 @@ void HingeModel::computeOutputs(double* values) const
         kinematics(values, A_), kinematics(values, B_), values[angle_.first]);
     const connectors::ConnectorResult& r = h.loads;
     const double out[] = {
-        r.A.f_W[0], r.A.f_W[1], r.A.f_W[2], r.A.m_Bo_W[0], r.A.m_Bo_W[1],
-        r.A.m_Bo_W[2], r.B.f_W[0], r.B.f_W[1], r.B.f_W[2], r.B.m_Bo_W[0],
-        r.B.m_Bo_W[1], r.B.m_Bo_W[2], r.length, r.lengthRate, r.tension,
-        r.potentialEnergy, r.dissipatedPower, h.angle, h.angleRate, h.gap,
-        h.misalignment, h.ptoTorque, h.ptoPower};
+        r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+        r.A.m_Bo_W[1],     r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+        r.B.f_W[2],        r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+        r.length,          r.lengthRate,  r.tension,     r.potentialEnergy,
+        r.dissipatedPower, h.angle,       h.angleRate,   h.gap,
+        h.misalignment,    h.ptoTorque,   h.ptoPower};
     const std::size_t n = sizeof out / sizeof out[0];
     const std::vector<fmuExport::ScalarVariable>& variables =
         this->variables().variables();

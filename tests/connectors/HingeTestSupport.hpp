@@ -18,7 +18,7 @@ inline HingeParameters genericHinge()
     HingeParameters p;
     p.p_AoP_A = Vector3(0.3, -0.1, 0.2);
     p.p_BoQ_B = Vector3(-0.2, 0.4, 0.1);
-    p.axis_A = Vector3(1, 2, 2);       // |a| = 3: normalised by the law
+    p.axis_A = Vector3(1, 2, 2); // |a| = 3: normalised by the law
     p.axis_B = Vector3(0, -1, 1);
     p.ref_A = Vector3(1, 0, 0);
     p.ref_B = Vector3(1, 1, 1);

@@ -45,7 +45,8 @@ TEST(HingeLimits, UnwrapPicksTheNearestTurn)
     const double pi = EIGEN_PI;
     EXPECT_DOUBLE_EQ(connectors::unwrapAngle(-3.0, 3.0), 2 * pi - 3.0);
     EXPECT_DOUBLE_EQ(connectors::unwrapAngle(3.0, -3.0), 3.0 - 2 * pi);
-    EXPECT_DOUBLE_EQ(connectors::unwrapAngle(0.5, 20 * pi + 0.4), 20 * pi + 0.5);
+    EXPECT_DOUBLE_EQ(connectors::unwrapAngle(0.5, 20 * pi + 0.4),
+                     20 * pi + 0.5);
     EXPECT_EQ(connectors::unwrapAngle(1.0, 0.0), 1.0);
 }
 
@@ -58,7 +59,8 @@ TEST(HingeLimits, OppositeAxesTurnBackAboutTheReferenceOfA)
     p.rotationalStiffness = 40.0;
     const Hinge hinge(p);
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B = body(Vector3::Zero(), rotation(EIGEN_PI, Vector3::UnitY()));
+    const BodyKinematics B =
+        body(Vector3::Zero(), rotation(EIGEN_PI, Vector3::UnitY()));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // sin(pi) = 1.2e-16 in the rotation: theta = pi to ~1e-16
     EXPECT_NEAR(h.misalignment, EIGEN_PI, 1e-15);
@@ -86,7 +88,8 @@ TEST(HingeLimits, CoincidentBodiesAndZeroStiffness)
     HingeParameters stiff;
     stiff.stiffness = 1e6;
     stiff.rotationalStiffness = 1e4;
-    const BodyKinematics A = body(Vector3(1, 2, 3), rotation(0.4, Vector3(1, 1, 0)));
+    const BodyKinematics A =
+        body(Vector3(1, 2, 3), rotation(0.4, Vector3(1, 1, 0)));
     for (const Hinge& h : {hinge, Hinge(stiff)}) {
         const HingeResult r = h.evaluate(A, A, 0.0);
         expectAllFinite(r.loads);
@@ -137,9 +140,12 @@ TEST(HingeLimits, BadParametersAreNamed)
     };
     expectThrowWithMessage<ParameterError>(
         [&] { Hinge(with([](HingeParameters& p) { p.stiffness = -1.0; })); },
-        "hinge: parameter stiffness = -1 N/m is out of range (allowed: finite and >= 0)");
+        "hinge: parameter stiffness = -1 N/m is out of range (allowed: finite "
+        "and >= 0)");
     expectThrowWithMessage<ParameterError>(
-        [&] { Hinge(with([](HingeParameters& p) { p.rotationalDamping = -0.5; })); },
+        [&] {
+            Hinge(with([](HingeParameters& p) { p.rotationalDamping = -0.5; }));
+        },
         "hinge: parameter rotationalDamping = -0.5 N.m.s/rad is out of range "
         "(allowed: finite and >= 0)");
     expectThrowWithMessage<ParameterError>(
@@ -152,13 +158,17 @@ TEST(HingeLimits, BadParametersAreNamed)
                 p.ptoRestAngle = std::numeric_limits<double>::infinity();
             }));
         },
-        "hinge: parameter ptoRestAngle = inf rad is out of range (allowed: finite)");
+        "hinge: parameter ptoRestAngle = inf rad is out of range (allowed: "
+        "finite)");
     expectThrowWithMessage<ParameterError>(
         [&] { Hinge(with([&](HingeParameters& p) { p.axis_B[1] = nan; })); },
         "hinge: parameter B.axis[2] = nan 1 is out of range (allowed: finite)");
     expectThrowWithMessage<ConnectorError>(
-        [&] { Hinge(with([](HingeParameters& p) { p.axis_A = Vector3::Zero(); })); },
-        "hinge: parameter A.axis = (0, 0, 0) has no direction (allowed: a finite "
+        [&] {
+            Hinge(with([](HingeParameters& p) { p.axis_A = Vector3::Zero(); }));
+        },
+        "hinge: parameter A.axis = (0, 0, 0) has no direction (allowed: a "
+        "finite "
         "vector of length >= 1e-12, normalised by the law)");
     expectThrowWithMessage<ConnectorError>(
         [&] {

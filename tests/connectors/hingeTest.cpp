@@ -53,8 +53,8 @@ TEST(Hinge, GapGivesASpringDamperForce)
     // 1000 (0.01,0,0) + 20 (-0.2,0,0) = (6, 0, 0) N, pulling P towards Q.
     const Hinge hinge(plainHinge(1000.0, 20.0, 50.0, 1.0));
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B = body(Vector3(0.01, 0, 0), Matrix3::Identity(),
-                                  Vector3(-0.2, 0, 0));
+    const BodyKinematics B =
+        body(Vector3(0.01, 0, 0), Matrix3::Identity(), Vector3(-0.2, 0, 0));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // 0.01 is not exact in binary; k 0.01 = 10 to ~2e-15.
     expectVectorNear(h.loads.A.f_W, Vector3(6, 0, 0), 1e-13);
@@ -72,9 +72,9 @@ TEST(Hinge, MisalignmentGivesAnAligningMoment)
     // B turned 0.2 rad about x: a_B = (0, -sin 0.2, cos 0.2), theta = 0.2,
     // n = unit(a_B x a_A) = (-1, 0, 0): M_B = k_r theta n = (-10, 0, 0).
     const Hinge hinge(plainHinge(0.0, 0.0, 50.0, 0.0));
-    const HingeResult h =
-        hinge.evaluate(body(Vector3::Zero()),
-                       body(Vector3::Zero(), rotation(0.2, Vector3::UnitX())), 0.0);
+    const HingeResult h = hinge.evaluate(
+        body(Vector3::Zero()),
+        body(Vector3::Zero(), rotation(0.2, Vector3::UnitX())), 0.0);
     // Tolerance: rotation matrix entries and atan2 to a few ulps of 1.
     EXPECT_NEAR(h.misalignment, 0.2, 1e-15);
     expectVectorNear(h.loads.B.m_Bo_W, Vector3(-10, 0, 0), 1e-13);
@@ -111,8 +111,9 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     p.ptoRestAngle = 0.1;
     const Hinge hinge(p);
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B = body(Vector3::Zero(), rotation(0.3, Vector3::UnitZ()),
-                                  Vector3::Zero(), Vector3(0, 0, 2));
+    const BodyKinematics B =
+        body(Vector3::Zero(), rotation(0.3, Vector3::UnitZ()), Vector3::Zero(),
+             Vector3(0, 0, 2));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // angle from atan2 of cos/sin 0.3: a few ulps
     EXPECT_NEAR(h.angle, 0.3, 1e-15);
@@ -126,8 +127,8 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     EXPECT_NEAR(powerIntoBodies(h.loads, A, B), -h.ptoPower, 1e-13);
     // Turning the other way at the same angle: the damper still absorbs,
     // the spring returns energy: tau = 2 - 8 = -6, ptoPower = 12 W > 0.
-    const BodyKinematics Bback = body(Vector3::Zero(), B.R_WB, Vector3::Zero(),
-                                      Vector3(0, 0, -2));
+    const BodyKinematics Bback =
+        body(Vector3::Zero(), B.R_WB, Vector3::Zero(), Vector3(0, 0, -2));
     EXPECT_NEAR(hinge.evaluate(A, Bback, 0.0).ptoPower, 12.0, 1e-13);
 }
 
@@ -143,7 +144,8 @@ TEST(Hinge, EqualAndOppositeLoadsAndZeroTotalMoment)
         EXPECT_EQ(h.loads.A.f_W, -h.loads.B.f_W);
         // Tolerance: forces up to ~1e4 N at lever arms of ~5 m; the sum of
         // four terms cancels to round-off ~1e4 * 5 * 1e-16 * 10 = 5e-11.
-        expectVectorNear(totalMomentAboutOrigin(h.loads, A, B), Vector3::Zero(), 1e-9);
+        expectVectorNear(totalMomentAboutOrigin(h.loads, A, B), Vector3::Zero(),
+                         1e-9);
         EXPECT_GE(h.loads.dissipatedPower, 0.0);
         EXPECT_GE(h.loads.potentialEnergy, 0.0);
         EXPECT_GE(h.misalignment, 0.0);
@@ -175,10 +177,11 @@ double energyRate(const Hinge& hinge, const BodyKinematics& A,
                   const BodyKinematics& B, double angle)
 {
     const double dt = 1e-6;
-    const double plus =
-        hinge.evaluate(advanced(A, dt), advanced(B, dt), angle).loads.potentialEnergy;
+    const double plus = hinge.evaluate(advanced(A, dt), advanced(B, dt), angle)
+                            .loads.potentialEnergy;
     const double minus =
-        hinge.evaluate(advanced(A, -dt), advanced(B, -dt), angle).loads.potentialEnergy;
+        hinge.evaluate(advanced(A, -dt), advanced(B, -dt), angle)
+            .loads.potentialEnergy;
     return (plus - minus) / (2 * dt);
 }
 
@@ -200,16 +203,19 @@ TEST(Hinge, SpringsAreConservative)
         // Central difference error ~ dt^2 V''' ~ 1e-12 * 1e4; round-off
         // ~ 1e-16 V / dt ~ 1e-7 W on V ~ 1e3 J: 1e-5 relative to the power
         // scale (~1e3 W) is the bound.
-        const double scale = 1.0 + h.loads.dissipatedPower + std::abs(energyRate(free, A, B, 0.0));
+        const double scale = 1.0 + h.loads.dissipatedPower
+                             + std::abs(energyRate(free, A, B, 0.0));
         EXPECT_NEAR(powerIntoBodies(h.loads, A, B),
-                    -energyRate(free, A, B, 0.0) - h.loads.dissipatedPower, 1e-6 * scale)
+                    -energyRate(free, A, B, 0.0) - h.loads.dissipatedPower,
+                    1e-6 * scale)
             << i;
 
         BodyKinematics Bh = hingedBody(withPto, A, 1.0 + 0.2 * i, -0.8);
         Bh.p_WBo_W += Vector3(0.01, -0.02, 0.005);
         const HingeResult hp = withPto.evaluate(A, Bh, 0.0);
         const double rate = energyRate(withPto, A, Bh, hp.angle);
-        EXPECT_NEAR(powerIntoBodies(hp.loads, A, Bh), -rate - hp.loads.dissipatedPower,
+        EXPECT_NEAR(powerIntoBodies(hp.loads, A, Bh),
+                    -rate - hp.loads.dissipatedPower,
                     1e-6 * (1.0 + hp.loads.dissipatedPower + std::abs(rate)))
             << i;
     }

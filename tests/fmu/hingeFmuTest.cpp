@@ -34,13 +34,16 @@ connectors::HingeParameters lawParameters()
     return p;
 }
 
-std::map<std::string, double> fmuParameters(const connectors::HingeParameters& p)
+std::map<std::string, double>
+fmuParameters(const connectors::HingeParameters& p)
 {
     std::map<std::string, double> m = {
-        {"stiffness", p.stiffness},       {"damping", p.damping},
+        {"stiffness", p.stiffness},
+        {"damping", p.damping},
         {"rotationalStiffness", p.rotationalStiffness},
         {"rotationalDamping", p.rotationalDamping},
-        {"ptoStiffness", p.ptoStiffness}, {"ptoDamping", p.ptoDamping},
+        {"ptoStiffness", p.ptoStiffness},
+        {"ptoDamping", p.ptoDamping},
         {"ptoRestAngle", p.ptoRestAngle}};
     addVector(m, "A.p", p.p_AoP_A);
     addVector(m, "B.p", p.p_BoQ_B);
@@ -54,11 +57,12 @@ std::map<std::string, double> fmuParameters(const connectors::HingeParameters& p
 std::vector<double> expected(const connectors::HingeResult& h)
 {
     const connectors::ConnectorResult& r = h.loads;
-    return {r.A.f_W[0], r.A.f_W[1], r.A.f_W[2], r.A.m_Bo_W[0], r.A.m_Bo_W[1],
-            r.A.m_Bo_W[2], r.B.f_W[0], r.B.f_W[1], r.B.f_W[2], r.B.m_Bo_W[0],
-            r.B.m_Bo_W[1], r.B.m_Bo_W[2], r.length, r.lengthRate, r.tension,
-            r.potentialEnergy, r.dissipatedPower, h.angle, h.angleRate, h.gap,
-            h.misalignment, h.ptoTorque, h.ptoPower};
+    return {r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+            r.A.m_Bo_W[1],     r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+            r.B.f_W[2],        r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+            r.length,          r.lengthRate,  r.tension,     r.potentialEnergy,
+            r.dissipatedPower, h.angle,       h.angleRate,   h.gap,
+            h.misalignment,    h.ptoTorque,   h.ptoPower};
 }
 
 std::vector<std::string> allOutputs()
@@ -76,7 +80,8 @@ void expectOutputs(Instance& in, const connectors::HingeResult& h)
     for (std::size_t i = 0; i < want.size(); ++i) {
         // The same law on the same doubles; only instruction order between
         // the two builds can differ: 1e-13 relative.
-        EXPECT_NEAR(got[i], want[i], 1e-13 * (1.0 + std::abs(want[i]))) << allOutputs()[i];
+        EXPECT_NEAR(got[i], want[i], 1e-13 * (1.0 + std::abs(want[i])))
+            << allOutputs()[i];
     }
 }
 
@@ -96,8 +101,10 @@ TEST(HingeFmu, OutputsEqualTheLaw)
     ASSERT_EQ(in.initialize(fmuParameters(p)), fmi2OK) << in.lastMessage();
     const connectors::Hinge law(p);
     ASSERT_EQ(in.set(inputs(genericA(), genericB())), fmi2OK);
-    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK) << in.lastMessage();
-    const connectors::HingeResult first = law.evaluate(genericA(), genericB(), 0.0);
+    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK)
+        << in.lastMessage();
+    const connectors::HingeResult first =
+        law.evaluate(genericA(), genericB(), 0.0);
     expectOutputs(in, first);
     ASSERT_EQ(in.set(inputs(genericB(), genericA())), fmi2OK);
     expectOutputs(in, law.evaluate(genericB(), genericA(), first.angle));
@@ -122,7 +129,8 @@ TEST(HingeFmu, AngleStateFollowsTurnsRollbackAndRestart)
     fmi2FMUstate saved = nullptr;
     for (int i = 0; i <= steps; ++i) {
         ASSERT_EQ(in.set(inputs(turned(0.25 * i), world)), fmi2OK);
-        ASSERT_EQ(fmu.api.DoStep(in.c, t, 0.1, fmi2True), fmi2OK) << in.lastMessage();
+        ASSERT_EQ(fmu.api.DoStep(in.c, t, 0.1, fmi2True), fmi2OK)
+            << in.lastMessage();
         t += 0.1;
         if (i == 0) {
             start = in.get("angle");
@@ -145,17 +153,21 @@ TEST(HingeFmu, AngleStateFollowsTurnsRollbackAndRestart)
     EXPECT_NEAR(value, start - 0.25 * (steps / 2), 1e-12);
     const double tSaved = 0.1 * (steps / 2 + 1);
     ASSERT_EQ(in.set(inputs(turned(0.25 * (steps / 2 + 1)), world)), fmi2OK);
-    ASSERT_EQ(fmu.api.DoStep(in.c, tSaved, 0.1, fmi2True), fmi2OK) << in.lastMessage();
+    ASSERT_EQ(fmu.api.DoStep(in.c, tSaved, 0.1, fmi2True), fmi2OK)
+        << in.lastMessage();
     EXPECT_NEAR(in.get("angle"), start - 0.25 * (steps / 2 + 1), 1e-12);
 
     // Restart: the serialized state carries the angle into a new instance.
     std::size_t size = 0;
     ASSERT_EQ(fmu.api.SerializedFMUstateSize(in.c, saved, &size), fmi2OK);
     std::vector<fmi2Byte> bytes(size);
-    ASSERT_EQ(fmu.api.SerializeFMUstate(in.c, saved, bytes.data(), size), fmi2OK);
+    ASSERT_EQ(fmu.api.SerializeFMUstate(in.c, saved, bytes.data(), size),
+              fmi2OK);
     Instance other(fmu);
     fmi2FMUstate restored = nullptr;
-    ASSERT_EQ(fmu.api.DeSerializeFMUstate(other.c, bytes.data(), size, &restored), fmi2OK);
+    ASSERT_EQ(
+        fmu.api.DeSerializeFMUstate(other.c, bytes.data(), size, &restored),
+        fmi2OK);
     ASSERT_EQ(fmu.api.SetFMUstate(other.c, restored), fmi2OK);
     ASSERT_EQ(other.set(inputs(turned(0.25 * (steps / 2 + 1)), world)), fmi2OK);
     ASSERT_EQ(fmu.api.DoStep(other.c, tSaved, 0.1, fmi2True), fmi2OK);
@@ -174,10 +186,12 @@ TEST(HingeFmu, OppositeAxesGiveFiniteOutputs)
     LoadedFmu fmu("hinge");
     Instance in(fmu);
     ASSERT_EQ(in.initialize({{"rotationalStiffness", 10.0}}), fmi2OK);
-    const BodyKinematics flipped = kinematics(Vector3::Zero(), EIGEN_PI, Vector3(1, 0, 0),
-                                              Vector3::Zero(), Vector3::Zero());
+    const BodyKinematics flipped =
+        kinematics(Vector3::Zero(), EIGEN_PI, Vector3(1, 0, 0), Vector3::Zero(),
+                   Vector3::Zero());
     ASSERT_EQ(in.set(inputs(BodyKinematics(), flipped)), fmi2OK);
-    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK) << in.lastMessage();
+    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK)
+        << in.lastMessage();
     // theta = pi to round-off; moment on B = 10 pi e_A, e_A = x (derived)
     EXPECT_NEAR(in.get("misalignment"), EIGEN_PI, 1e-15);
     EXPECT_NEAR(in.get("B.M[1]"), 10 * EIGEN_PI, 1e-13);
@@ -192,21 +206,23 @@ TEST(HingeFmu, OppositeAxesGiveFiniteOutputs)
 TEST(HingeFmu, BadParametersAreNamedAtExitInitializationMode)
 {
     LoadedFmu fmu("hinge");
-    const std::vector<std::pair<std::map<std::string, double>, std::string>> cases = {
-        {{{"rotationalStiffness", -1.0}},
-         "parameter rotationalStiffness = -1 N.m/rad is out of range "
-         "(allowed: finite and >= 0)"},
-        {{{"A.axis[3]", 0.0}},
-         "parameter A.axis = (0, 0, 0) has no direction (allowed: a finite "
-         "vector of length >= 1e-12, normalised by the law)"},
-        {{{"B.ref[3]", 4.0}},
-         "parameter B.ref = (0, 0, 4) is parallel to B.axis (allowed: a "
-         "direction off the axis, or (0, 0, 0) to derive one)"},
-    };
+    const std::vector<std::pair<std::map<std::string, double>, std::string>>
+        cases = {
+            {{{"rotationalStiffness", -1.0}},
+             "parameter rotationalStiffness = -1 N.m/rad is out of range "
+             "(allowed: finite and >= 0)"},
+            {{{"A.axis[3]", 0.0}},
+             "parameter A.axis = (0, 0, 0) has no direction (allowed: a finite "
+             "vector of length >= 1e-12, normalised by the law)"},
+            {{{"B.ref[3]", 4.0}},
+             "parameter B.ref = (0, 0, 4) is parallel to B.axis (allowed: a "
+             "direction off the axis, or (0, 0, 0) to derive one)"},
+        };
     for (const auto& [parameters, message] : cases) {
         Instance in(fmu);
         EXPECT_EQ(in.initialize(parameters), fmi2Error);
-        EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: hinge: " + message);
+        EXPECT_EQ(in.lastMessage(),
+                  "fmi2ExitInitializationMode: hinge: " + message);
         EXPECT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
     }
 }
