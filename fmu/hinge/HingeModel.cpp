@@ -37,7 +37,10 @@ ptoTorque = ptoStiffness (angle - ptoRestAngle) + ptoDamping angleRate   [N.m]
 ptoPower = ptoTorque angleRate (absorbed from the bodies)         [W]
 </pre>
 <p>Static constraint errors: gap = load / stiffness, misalignment =
-moment / rotationalStiffness. The angle is unwrapped against its value at the
+moment / rotationalStiffness. Dynamically the penalty adds modes of
+frequency omega = sqrt(k / m_eff); loads applied explicitly (OpenFOAM's
+rigid-body solvers) are stable for omega dt &lt; 2 (k dt^2 / m_eff &lt; 4).
+The angle is unwrapped against its value at the
 previous evaluation (kept in the FMU state): between two evaluations the
 relative rotation about the axis must stay below pi. Stiffnesses and dampings
 must be finite and &ge; 0, the axes non-zero (checked in
