@@ -11,8 +11,8 @@
 # joints) and compares the rotations of the cubes over the first 0.2 s, while
 # the first wave passes: the two are independent implementations of the same
 # rigid-body motion and differ only in how the mesh follows the bodies, which
-# changes the flow near them a little. They agree to about 6 % of the peak
-# rotation there; the tolerance is 10 % of it plus 0.05 deg. A sign or
+# changes the flow near them a little. They agree to within about 5 % of the
+# peak rotation there; the tolerance is 10 % of it plus 0.05 deg. A sign or
 # transpose error in either body frame, or forces on the wrong body, breaks
 # the agreement at once.
 #------------------------------------------------------------------------------
