@@ -19,13 +19,18 @@ using fmuExport::readableState;
 using fmuExport::writableState;
 
 void logInstantiateError(const fmi2CallbackFunctions* functions,
-                         fmi2String instanceName, const std::string& message)
+                         fmi2String instanceName, const char* message) noexcept
 {
-    if (functions != nullptr && functions->logger != nullptr) {
-        functions->logger(functions->componentEnvironment,
-                          instanceName ? instanceName : "", fmi2Error,
-                          fmuExport::logCategoryError, "%s",
-                          ("fmi2Instantiate: " + message).c_str());
+    if (functions == nullptr || functions->logger == nullptr) {
+        return;
+    }
+    const char* name = instanceName ? instanceName : "";
+    try {
+        functions->logger(functions->componentEnvironment, name, fmi2Error,
+                          fmuExport::logCategoryError, "fmi2Instantiate: %s",
+                          message);
+    } catch (...) {
+        // A throwing logger must not take the importer down with it.
     }
 }
 
@@ -73,18 +78,18 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
         std::unique_ptr<fmuExport::Model> model = fmuExport::createModel();
         const std::string name = model->identity().modelIdentifier;
         if (fmuType != fmi2CoSimulation) {
-            logInstantiateError(functions, instanceName,
-                                name
-                                    + " supports co-simulation only "
-                                      "(fmuType fmi2CoSimulation)");
+            const std::string message =
+                name
+                + " supports co-simulation only (fmuType fmi2CoSimulation)";
+            logInstantiateError(functions, instanceName, message.c_str());
             return nullptr;
         }
         const std::string guid = fmuExport::modelGuid(*model);
         if (fmuGUID == nullptr || guid != fmuGUID) {
-            logInstantiateError(
-                functions, instanceName,
+            const std::string message =
                 "GUID " + std::string(fmuGUID ? fmuGUID : "(null)")
-                    + " does not match " + name + "'s GUID " + guid);
+                + " does not match " + name + "'s GUID " + guid;
+            logInstantiateError(functions, instanceName, message.c_str());
             return nullptr;
         }
         return new FmuInstance(std::move(model), instanceName, *functions,
