@@ -231,10 +231,10 @@ compareSeries "$serial/$dat" "$parallel/$dat" \
 
 
 # --- Plots -------------------------------------------------------------------
-for png in rotation displacement connector_spring
+for png in rotation displacement connector_spring snapshots
 do
     f="$serial/plots/$png.png"
     requireFile "$f" "plot"
     [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
 done
-pass "plots: rotation.png, displacement.png, connector_spring.png"
+pass "plots: rotation.png, displacement.png, connector_spring.png, snapshots.png"

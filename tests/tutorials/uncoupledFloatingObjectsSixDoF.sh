@@ -42,10 +42,10 @@ do
         0.2
 done
 
-for png in rotation displacement
+for png in rotation displacement snapshots
 do
     f="$sixDoF/plots/$png.png"
     requireFile "$f" "plot"
     [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
 done
-pass "plots: rotation.png, displacement.png"
+pass "plots: rotation.png, displacement.png, snapshots.png"
