@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "ModelDescription.hpp"
 
@@ -84,6 +85,7 @@ void FmuInstance::enterInitializationMode()
 void FmuInstance::exitInitializationMode()
 {
     model_->checkParameters(values_.data());
+    model_->initializeState(values_.data(), time_);
     state_ = stepComplete;
 }
 
@@ -95,6 +97,7 @@ void FmuInstance::terminate()
 void FmuInstance::reset()
 {
     startValues();
+    model_->setInternalState(values_.data(), {});
     state_ = instantiated;
 }
 
@@ -214,7 +217,8 @@ void FmuInstance::doStep(double currentCommunicationPoint,
                          + " does not match the FMU time "
                          + formatDouble(time_));
     }
-    computeOutputs();
+    model_->doStep(values_.data(), t, h);
+    outputsValid_ = true;
     time_ = t + h;
 }
 
@@ -242,12 +246,18 @@ fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
     target->time = time_;
     target->outputsValid = outputsValid_;
     target->values = values_;
+    target->internal = model_->internalState();
     return target;
 }
 
 void FmuInstance::setState(fmi2FMUstate state)
 {
     const SavedState& saved = ownedState(state);
+    try {
+        model_->setInternalState(saved.values.data(), saved.internal);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
     values_ = saved.values;
     time_ = saved.time;
     outputsValid_ = saved.outputsValid;
@@ -269,7 +279,8 @@ void FmuInstance::freeState(fmi2FMUstate state)
 
 std::size_t FmuInstance::serializedStateSize(fmi2FMUstate state)
 {
-    return serializedSize(ownedState(state).values.size());
+    const SavedState& saved = ownedState(state);
+    return serializedSize(saved.values.size(), saved.internal.size());
 }
 
 void FmuInstance::serializeState(fmi2FMUstate state, fmi2Byte buffer[],

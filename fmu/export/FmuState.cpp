@@ -57,18 +57,22 @@ std::string stateNames(unsigned mask)
     return out.empty() ? "none" : out;
 }
 
-std::size_t serializedSize(std::size_t valueCount)
+std::size_t serializedSize(std::size_t valueCount, std::size_t internalCount)
 {
-    return sizeof(Header) + valueCount * sizeof(double);
+    const std::size_t base = sizeof(Header) + valueCount * sizeof(double);
+    return internalCount == 0
+               ? base
+               : base + sizeof(std::uint64_t) + internalCount * sizeof(double);
 }
 
 void serializeState(const SavedState& state, const std::string& guid,
                     char* buffer, std::size_t size)
 {
-    if (size < serializedSize(state.values.size())) {
+    const std::size_t needed =
+        serializedSize(state.values.size(), state.internal.size());
+    if (size < needed) {
         throw UsageError("buffer of " + std::to_string(size)
-                         + " bytes is too small, "
-                         + std::to_string(serializedSize(state.values.size()))
+                         + " bytes is too small, " + std::to_string(needed)
                          + " bytes needed (fmi2SerializedFMUstateSize)");
     }
     Header header{};
@@ -80,8 +84,15 @@ void serializeState(const SavedState& state, const std::string& guid,
     header.outputsValid = state.outputsValid ? 1 : 0;
     header.valueCount = std::uint32_t(state.values.size());
     std::memcpy(buffer, &header, sizeof header);
-    std::memcpy(buffer + sizeof header, state.values.data(),
-                state.values.size() * sizeof(double));
+    char* out = buffer + sizeof header;
+    std::memcpy(out, state.values.data(), state.values.size() * sizeof(double));
+    if (!state.internal.empty()) {
+        out += state.values.size() * sizeof(double);
+        const std::uint64_t count = state.internal.size();
+        std::memcpy(out, &count, sizeof count);
+        std::memcpy(out + sizeof count, state.internal.data(),
+                    state.internal.size() * sizeof(double));
+    }
 }
 
 SavedState deserializeState(const char* bytes, std::size_t size,
@@ -108,10 +119,20 @@ SavedState deserializeState(const char* bytes, std::size_t size,
         throw UsageError("serialized state belongs to the FMU with GUID "
                          + std::string(header.guid) + ", not " + guid);
     }
-    if (header.valueCount != valueCount || size != serializedSize(valueCount)) {
+    // Internal state: present when the bytes go on after the value array
+    std::size_t internalCount = 0;
+    const std::size_t base = serializedSize(valueCount);
+    if (header.valueCount == valueCount && size >= base + sizeof(std::uint64_t)) {
+        std::uint64_t count = 0;
+        std::memcpy(&count, bytes + base, sizeof count);
+        if (count > 0 && count < (std::uint64_t(1) << 40)) {
+            internalCount = std::size_t(count);
+        }
+    }
+    const std::size_t expected = serializedSize(valueCount, internalCount);
+    if (header.valueCount != valueCount || size != expected) {
         throw UsageError("serialized state has " + std::to_string(size)
-                         + " bytes, expected "
-                         + std::to_string(serializedSize(valueCount)));
+                         + " bytes, expected " + std::to_string(expected));
     }
     if ((header.state & restorableStates) == 0
         || (header.state & (header.state - 1)) != 0) {
@@ -125,6 +146,11 @@ SavedState deserializeState(const char* bytes, std::size_t size,
     state.values.resize(valueCount);
     std::memcpy(state.values.data(), bytes + sizeof header,
                 valueCount * sizeof(double));
+    state.internal.resize(internalCount);
+    if (internalCount > 0) {
+        std::memcpy(state.internal.data(), bytes + base + sizeof(std::uint64_t),
+                    internalCount * sizeof(double));
+    }
     return state;
 }
 

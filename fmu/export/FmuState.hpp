@@ -2,7 +2,10 @@
 //
 // Serialized bytes: a fixed header (magic "FOAMFMI", format version, GUID of
 // the FMU, instance state, time, number of values) followed by the value
-// array as native doubles. Bytes with another magic, version, GUID or size
+// array as native doubles; for a model with internal state (Model::
+// internalState) then its number of values (uint64) and the values. The
+// bytes of a model without internal state end after the value array, as
+// they always have. Bytes with another magic, version, GUID or size
 // are rejected with a message saying which.
 #ifndef FMU_EXPORT_FMUSTATE_HPP
 #define FMU_EXPORT_FMUSTATE_HPP
@@ -43,12 +46,17 @@ struct SavedState {
     double time = 0.0;
     bool outputsValid = false;
     std::vector<double> values;
+    //- The model's internal state (Model::internalState), often empty
+    std::vector<double> internal;
 };
 
-//- Size in bytes of the serialized form of a state with n values
-std::size_t serializedSize(std::size_t valueCount);
+//- Size in bytes of the serialized form of a state with n values and
+//  m internal values
+std::size_t serializedSize(std::size_t valueCount,
+                           std::size_t internalCount = 0);
 
-//- Writes `state` into `buffer` (size serializedSize(values.size()))
+//- Writes `state` into `buffer` (size serializedSize(values.size(),
+//  internal.size()))
 void serializeState(const SavedState& state, const std::string& guid,
                     char* buffer, std::size_t size);
 

@@ -1,10 +1,15 @@
 // What a model gives the FMI layer: its identity, its variable table and two
-// computations on the value array (indexed by value reference).
+// computations on the value array (indexed by value reference). A model
+// with internal dynamics (state that is not in the value array, e.g. the
+// nodes of a mooring line) also overrides the four state hooks, whose
+// defaults describe a model whose state is the value array alone.
 #ifndef FMU_EXPORT_MODEL_HPP
 #define FMU_EXPORT_MODEL_HPP
 
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "VariableTable.hpp"
 
@@ -37,6 +42,42 @@ public:
     //  throws (naming the variable) where the outputs are undefined. On
     //  failure the outputs in `values` are left unchanged.
     virtual void computeOutputs(double* values) const = 0;
+
+    //- fmi2ExitInitializationMode, after checkParameters: sets up the
+    //  internal state for the parameters and inputs in `values` at `time`
+    virtual void initializeState(const double* values, double time)
+    {
+        (void)values;
+        (void)time;
+    }
+
+    //- fmi2DoStep: advances the internal state from `time` to `time + h`
+    //  (the inputs in `values` are those at time + h) and computes every
+    //  output; on failure it throws and changes neither state nor outputs
+    virtual void doStep(double* values, double time, double h)
+    {
+        (void)time;
+        (void)h;
+        computeOutputs(values);
+    }
+
+    //- The internal state, saved with the value array in FMU states and
+    //  serialized after it; empty for a model without one
+    virtual std::vector<double> internalState() const { return {}; }
+
+    //- Restores a state returned by internalState() for the parameters in
+    //  `values` (empty: back to before initializeState); throws
+    //  std::invalid_argument for data that do not fit
+    virtual void setInternalState(const double* values,
+                                  const std::vector<double>& state)
+    {
+        (void)values;
+        if (!state.empty()) {
+            throw std::invalid_argument(
+                identity_.modelIdentifier + " has no internal state, the "
+                "saved state has " + std::to_string(state.size()) + " values");
+        }
+    }
 
 protected:
     explicit Model(ModelIdentity identity)

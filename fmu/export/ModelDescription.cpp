@@ -75,6 +75,12 @@ constexpr UnitDefinition unitDefinitions[] = {
     {"N/m", "kg=\"1\" s=\"-2\""},
     {"N.s/m", "kg=\"1\" s=\"-1\""},
     {"kg.m2", "kg=\"1\" m=\"2\""},
+    {"N.s", "kg=\"1\" m=\"1\" s=\"-1\""},
+    {"kg/m", "kg=\"1\" m=\"-1\""},
+    {"kg/m3", "kg=\"1\" m=\"-3\""},
+    {"m/s2", "m=\"1\" s=\"-2\""},
+    {"Pa/m", "kg=\"1\" m=\"-2\" s=\"-2\""},
+    {"Pa.s/m", "kg=\"1\" m=\"-2\" s=\"-1\""},
 };
 
 const char* baseUnitOf(const std::string& unit)
