@@ -193,7 +193,14 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     c.line.EA = p.EA;
     c.line.weight = weight_;
     c.line.seabedContact = p.seabedContact;
-    const CatenaryOutput shape = Catenary(c).evaluate(A, B, nullptr, p.segments + 1);
+    CatenaryOutput shape;
+    try {
+        shape = Catenary(c).evaluate(A, B, nullptr, p.segments + 1);
+    } catch (const UndefinedStateError& e) {
+        throw UndefinedStateError(std::string("mooringLine: no quasi-static start "
+                                              "shape: ")
+                                  + e.what());
+    }
     MooringLineState s;
     s.time = time;
     s.P = attachment(A, p.p_AoP_A);

@@ -1,0 +1,266 @@
+// mooringLine.fmu: connectors::MooringLine, a dynamic lumped-mass line
+// integrated by CVODE inside each fmi2DoStep, behind the connector FMU
+// interface. The variable table below is the only list of its variables.
+//
+// Internal state (Model::internalState): time, end positions and the
+// position and velocity of every free node. It is saved, restored and
+// serialized with the FMU state; each step restarts CVODE from it, so a
+// step repeated after fmi2SetFMUstate gives the same outputs to the bit.
+#include <cmath>
+#include <optional>
+
+#include "LineFmuVariables.hpp"
+#include "Model.hpp"
+#include "common/ConnectorError.hpp"
+#include "mooringLine/MooringLine.hpp"
+
+namespace {
+
+using fmuExport::Block;
+using fmuExport::Shape;
+
+const char* const lawHtml = R"(<p>A dynamic lumped-mass mooring line (after
+MoorDyn) between the fairlead P (<code>A.p</code> on A) and Q
+(<code>B.p</code> on B): an anchor on the seabed (<code>seabedContact</code>
+= 1, the seabed is the horizontal plane through Q) or a fairlead on a second
+body. N = <code>segments</code> segments of unstretched length L/N; node 0 is
+Q, node N is P, the N-1 free nodes carry one segment's mass each:</p>
+<pre>
+segment tension  T = EA max(e, 0) + axialDamping de/dt,  e = strain
+node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 - w L/N z
+                 + seabed penalty + Morison drag in still water
+w = (massPerLength - waterDensity pi diameter^2/4) gravity
+A.F = -T_N-1 q_N-1 - w L/(2N) z,   B.F = T_0 q_0 - w L/(2N) z
+</pre>
+<p>Inside each fmi2DoStep the node states are integrated by SUNDIALS CVODE
+(BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
+<code>absoluteTolerance</code>), the ends moving linearly from their
+previous to their new positions. CVODE is restarted at every step (its BDF
+history restarts at order 1), so a step repeated from a saved FMU state is
+identical to the uninterrupted one. The line starts at rest in the
+quasi-static catenary shape through the attachment points at
+fmi2ExitInitializationMode. The binary links Debian 12's shared SUNDIALS 6
+libraries (package libsundials-dev, or its runtime libraries
+libsundials-cvode6, -nvecserial6, -sunmatrix4, -sunlinsol3): install them on
+the machine that runs the FMU. Details: connectors/mooringLine/README.md.</p>)";
+
+struct Scalar {
+    const char* name;
+    const char* unit;
+    const char* description;
+    double start;
+};
+
+// Model-scale start values: a 1.5 m line of 0.5 kg/m between two points
+// 1 m apart, in two-body mode
+const Scalar scalars[] = {
+    {"unstretchedLength", "m", "unstretched length L, > 0", 1.5},
+    {"EA", "N", "axial stiffness, > 0", 1e4},
+    {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0", 10.0},
+    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5},
+    {"diameter", "m", "volume-equivalent diameter (buoyancy, drag, added mass), >= 0",
+     0.01},
+    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0},
+    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81},
+    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2},
+    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05},
+    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0", 1.0},
+    {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0", 0.0},
+    {"seabedContact", "1",
+     "1: B.p is an anchor on the seabed (the horizontal plane through it); 0: no "
+     "seabed",
+     0.0},
+    {"seabedStiffness", "Pa/m", "seabed penalty stiffness per contact area, >= 0", 3e6},
+    {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0", 3e5},
+    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},
+    {"relativeTolerance", "1", "CVODE relative tolerance, > 0", 1e-6},
+    {"absoluteTolerance", "1", "CVODE absolute tolerance (m, m/s), > 0", 1e-6},
+};
+constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
+
+class MooringLineModel final : public fmuExport::Model {
+public:
+    MooringLineModel();
+
+    void checkParameters(const double* values) const override
+    {
+        connectors::MooringLine law(parameters(values));
+    }
+
+    void computeOutputs(double* values) const override;
+    void initializeState(const double* values, double time) override;
+    void doStep(double* values, double time, double h) override;
+    std::vector<double> internalState() const override;
+    void setInternalState(const double* values,
+                          const std::vector<double>& state) override;
+
+private:
+    connectors::MooringLineParameters parameters(const double* values) const;
+    //- The law for the parameters in `values` (rebuilt when they change)
+    connectors::MooringLine& line(const double* values);
+    void write(double* values, const connectors::MooringLineOutput& out) const;
+
+    lineFmu::LineVariables v_;
+    Block first_; // first of the scalar parameters, in `scalars` order
+    std::unique_ptr<connectors::MooringLine> line_;
+    std::vector<double> lineParameters_;
+    std::optional<connectors::MooringLineState> state_;
+};
+
+MooringLineModel::MooringLineModel()
+    : Model({"mooringLine",
+             "Dynamic lumped-mass mooring line between a body and a seabed "
+             "anchor, or between two bodies (SUNDIALS CVODE inside each step)",
+             "1.0.0", lawHtml})
+{
+    fmuExport::VariableTable& t = table();
+    lineFmu::declareAttachments(t, v_);
+    for (const Scalar& s : scalars) {
+        const Block b = t.parameter(s.name, Shape::scalar, s.unit, s.description,
+                                    {s.start});
+        if (&s == scalars) {
+            first_ = b;
+        }
+    }
+    lineFmu::declareBodies(t, v_, {1, 0, 0});
+    const std::vector<Block> positions = lineFmu::positionBlocks(v_);
+    const std::vector<Block> motion =
+        lineFmu::join(positions, lineFmu::velocityBlocks(v_));
+    const Block all{first_.first, scalarCount};
+    lineFmu::LineDependencies d;
+    d.loads = lineFmu::join(motion, {all});
+    d.length = positions;
+    d.lengthRate = motion;
+    d.energy = lineFmu::join(positions, {all});
+    d.dissipation = d.loads;
+    lineFmu::declareOutputs(t, v_, d);
+}
+
+connectors::MooringLineParameters
+MooringLineModel::parameters(const double* values) const
+{
+    const double* s = values + first_.first;
+    const auto flag = [](const char* name, double value) {
+        if (value != 0.0 && value != 1.0) {
+            throw connectors::ConnectorError(
+                std::string("mooringLine: parameter ") + name + " = "
+                + connectors::formatValue(value) + " is out of range (allowed: 0 or 1)");
+        }
+        return value == 1.0;
+    };
+    const double segments = s[14];
+    if (!(segments >= 2.0 && segments <= 1000.0 && segments == std::floor(segments))) {
+        throw connectors::ConnectorError(
+            "mooringLine: parameter segments = " + connectors::formatValue(segments)
+            + " is out of range (allowed: an integer from 2 to 1000)");
+    }
+    connectors::MooringLineParameters p;
+    p.p_AoP_A = lineFmu::vector3(values, v_.A_p);
+    p.p_BoQ_B = lineFmu::vector3(values, v_.B_p);
+    p.length = s[0];
+    p.EA = s[1];
+    p.axialDamping = s[2];
+    p.massPerLength = s[3];
+    p.diameter = s[4];
+    p.waterDensity = s[5];
+    p.gravity = s[6];
+    p.normalDrag = s[7];
+    p.tangentialDrag = s[8];
+    p.normalAddedMass = s[9];
+    p.tangentialAddedMass = s[10];
+    p.seabedContact = flag("seabedContact", s[11]);
+    p.seabedStiffness = s[12];
+    p.seabedDamping = s[13];
+    p.segments = int(segments);
+    p.relativeTolerance = s[15];
+    p.absoluteTolerance = s[16];
+    return p;
+}
+
+connectors::MooringLine& MooringLineModel::line(const double* values)
+{
+    std::vector<double> current(values + first_.first,
+                                values + first_.first + scalarCount);
+    for (const Block b : {v_.A_p, v_.B_p}) {
+        current.insert(current.end(), values + b.first, values + b.first + 3);
+    }
+    if (!line_ || current != lineParameters_) {
+        line_ = std::make_unique<connectors::MooringLine>(parameters(values));
+        lineParameters_ = std::move(current);
+    }
+    return *line_;
+}
+
+void MooringLineModel::write(double* values,
+                             const connectors::MooringLineOutput& m) const
+{
+    lineFmu::LineOutputs o;
+    o.loads = m.loads;
+    o.fairleadTension = m.fairleadTension;
+    o.anchorTension = m.anchorTension;
+    o.groundedLength = m.groundedLength;
+    o.H = m.H;
+    o.V = m.V;
+    o.shape = m.shape;
+    lineFmu::writeOutputs(values, v_, variables(), "mooringLine", o);
+}
+
+void MooringLineModel::computeOutputs(double* values) const
+{
+    const connectors::BodyKinematics A = lineFmu::kinematics(values, v_.A);
+    const connectors::BodyKinematics B = lineFmu::kinematics(values, v_.B);
+    if (state_ && line_) {
+        write(values, line_->evaluate(*state_, A, B, lineFmu::shapePoints));
+        return;
+    }
+    // Before fmi2ExitInitializationMode: the line at rest in its start shape
+    const connectors::MooringLine law(parameters(values));
+    write(values, law.evaluate(law.initialState(A, B, 0.0), A, B,
+                               lineFmu::shapePoints));
+}
+
+void MooringLineModel::initializeState(const double* values, double time)
+{
+    connectors::MooringLine& law = line(values);
+    state_ = law.initialState(lineFmu::kinematics(values, v_.A),
+                              lineFmu::kinematics(values, v_.B), time);
+}
+
+void MooringLineModel::doStep(double* values, double, double h)
+{
+    if (!state_) {
+        throw std::logic_error("mooringLine: fmi2DoStep before the line was "
+                               "initialised");
+    }
+    connectors::MooringLine& law = line(values);
+    const connectors::BodyKinematics A = lineFmu::kinematics(values, v_.A);
+    const connectors::BodyKinematics B = lineFmu::kinematics(values, v_.B);
+    connectors::MooringLineState next = *state_;
+    law.advance(next, A, B, h);
+    write(values, law.evaluate(next, A, B, lineFmu::shapePoints));
+    state_ = std::move(next);
+}
+
+std::vector<double> MooringLineModel::internalState() const
+{
+    return state_ ? state_->serialize() : std::vector<double>{};
+}
+
+void MooringLineModel::setInternalState(const double* values,
+                                        const std::vector<double>& state)
+{
+    if (state.empty()) {
+        state_.reset();
+        return;
+    }
+    connectors::MooringLine& law = line(values);
+    state_ = connectors::MooringLineState::deserialize(state,
+                                                       law.parameters().segments);
+}
+
+} // namespace
+
+std::unique_ptr<fmuExport::Model> fmuExport::createModel()
+{
+    return std::make_unique<MooringLineModel>();
+}

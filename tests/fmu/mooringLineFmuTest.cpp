@@ -1,0 +1,201 @@
+// mooringLine.fmu through its C entry points: outputs equal the law, steps
+// repeated after fmi2SetFMUstate (PIMPLE outer correctors) equal the
+// uninterrupted run, serialized states continue identically in another
+// instance, parameter errors, and the SUNDIALS dependency of the binary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "ConnectorInputs.hpp"
+#include "mooringLine/MooringLine.hpp"
+
+namespace {
+
+using namespace fmuTest;
+
+const std::map<std::string, double> chainParameters = {
+    {"unstretchedLength", 100.0}, {"EA", 5e7},          {"axialDamping", 2e5},
+    {"massPerLength", 80.0},      {"diameter", 0.1},    {"normalDrag", 1.2},
+    {"tangentialDrag", 0.05},     {"normalAddedMass", 1.0}, {"seabedContact", 1.0},
+    {"segments", 10.0},           {"A.p[3]", -2.0}};
+
+connectors::MooringLineParameters lawParameters()
+{
+    connectors::MooringLineParameters p;
+    p.p_AoP_A = Vector3(0, 0, -2.0);
+    p.length = 100.0;
+    p.EA = 5e7;
+    p.axialDamping = 2e5;
+    p.massPerLength = 80.0;
+    p.diameter = 0.1;
+    p.normalDrag = 1.2;
+    p.tangentialDrag = 0.05;
+    p.normalAddedMass = 1.0;
+    p.seabedContact = true;
+    p.segments = 10;
+    return p;
+}
+
+//- A body surging and heaving 80 m from the anchor in 40 m of water
+BodyKinematics floater(double t)
+{
+    return kinematics(Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)),
+                      0.0, Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
+                      Vector3::Zero());
+}
+
+std::vector<std::string> names()
+{
+    std::vector<std::string> n = connectorOutputs();
+    for (const char* extra : {"fairleadTension", "anchorTension", "groundedLength", "H", "V"}) {
+        n.push_back(extra);
+    }
+    return n;
+}
+
+//- Parameters, then the inputs at t = 0 (the start shape depends on them)
+fmi2Status initialise(const LoadedFmu& fmu, Instance& in)
+{
+    fmi2Status s = fmu.api.EnterInitializationMode(in.c);
+    if (s == fmi2OK) {
+        s = in.set(chainParameters);
+    }
+    if (s == fmi2OK) {
+        s = in.set(inputs(floater(0.0), BodyKinematics()));
+    }
+    return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
+}
+
+std::vector<double> step(const LoadedFmu& fmu, Instance& in, double t, double h)
+{
+    EXPECT_EQ(in.set(inputs(floater(t + h), BodyKinematics())), fmi2OK);
+    EXPECT_EQ(fmu.api.DoStep(in.c, t, h, fmi2True), fmi2OK) << in.lastMessage();
+    std::vector<double> out;
+    EXPECT_EQ(in.get(names(), out), fmi2OK);
+    return out;
+}
+
+TEST(MooringLineFmu, OutputsEqualTheLaw)
+{
+    LoadedFmu fmu("mooringLine");
+    Instance in(fmu);
+    ASSERT_EQ(initialise(fmu, in), fmi2OK) << in.lastMessage();
+    connectors::MooringLine law(lawParameters());
+    connectors::MooringLineState s = law.initialState(floater(0.0), BodyKinematics(), 0.0);
+    const double h = 0.1;
+    for (int k = 0; k < 30; ++k) {
+        const double t = k * h;
+        const std::vector<double> got = step(fmu, in, t, h);
+        law.advance(s, floater(t + h), BodyKinematics(), h);
+        const auto want = law.evaluate(s, floater(t + h), BodyKinematics(), 0);
+        // The same code on the same doubles, compiled into two binaries:
+        // only instruction selection (FMA contraction) may differ, and CVODE
+        // amplifies such round-off at most to its tolerance (1e-6): 1e-5
+        // relative to the tension is ample.
+        const double T = want.fairleadTension;
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NEAR(got[std::size_t(i)], want.loads.A.f_W[i], 1e-5 * T) << k;
+            EXPECT_NEAR(got[std::size_t(6 + i)], want.loads.B.f_W[i], 1e-5 * T) << k;
+        }
+        EXPECT_NEAR(got[17], T, 1e-5 * T);
+        EXPECT_NEAR(got[19], want.groundedLength, 1e-9);
+    }
+}
+
+TEST(MooringLineFmu, RepeatedStepsEqualTheUninterruptedRun)
+{
+    LoadedFmu fmu("mooringLine");
+    Instance once(fmu), repeated(fmu);
+    ASSERT_EQ(initialise(fmu, once), fmi2OK) << once.lastMessage();
+    ASSERT_EQ(initialise(fmu, repeated), fmi2OK);
+    fmi2FMUstate saved = nullptr;
+    const double h = 0.05;
+    for (int k = 0; k < 40; ++k) {
+        const double t = k * h;
+        const std::vector<double> reference = step(fmu, once, t, h);
+        // three outer correctors: save, step with other inputs, restore
+        ASSERT_EQ(fmu.api.GetFMUstate(repeated.c, &saved), fmi2OK);
+        for (int corrector = 0; corrector < 2; ++corrector) {
+            BodyKinematics guess = floater(t + h);
+            guess.p_WBo_W[0] += 0.2 * (corrector + 1);
+            ASSERT_EQ(repeated.set(inputs(guess, BodyKinematics())), fmi2OK);
+            ASSERT_EQ(fmu.api.DoStep(repeated.c, t, h, fmi2True), fmi2OK);
+            ASSERT_EQ(fmu.api.SetFMUstate(repeated.c, saved), fmi2OK);
+        }
+        EXPECT_EQ(step(fmu, repeated, t, h), reference) << "step " << k; // bit for bit
+    }
+    EXPECT_EQ(fmu.api.FreeFMUstate(repeated.c, &saved), fmi2OK);
+}
+
+TEST(MooringLineFmu, SerializedStateContinuesInAnotherInstance)
+{
+    LoadedFmu fmu("mooringLine");
+    Instance in(fmu);
+    ASSERT_EQ(initialise(fmu, in), fmi2OK) << in.lastMessage();
+    const double h = 0.1;
+    for (int k = 0; k < 10; ++k) {
+        step(fmu, in, k * h, h);
+    }
+    fmi2FMUstate saved = nullptr;
+    ASSERT_EQ(fmu.api.GetFMUstate(in.c, &saved), fmi2OK);
+    size_t size = 0;
+    ASSERT_EQ(fmu.api.SerializedFMUstateSize(in.c, saved, &size), fmi2OK);
+    // header + value array + count + 7 + 6 (N - 1) internal values
+    std::vector<fmi2Byte> bytes(size);
+    ASSERT_EQ(fmu.api.SerializeFMUstate(in.c, saved, bytes.data(), size), fmi2OK);
+
+    Instance other(fmu); // a restart: a new instance, no parameters set
+    fmi2FMUstate restored = nullptr;
+    ASSERT_EQ(fmu.api.DeSerializeFMUstate(other.c, bytes.data(), size, &restored), fmi2OK)
+        << other.lastMessage();
+    ASSERT_EQ(fmu.api.SetFMUstate(other.c, restored), fmi2OK) << other.lastMessage();
+    for (int k = 10; k < 20; ++k) {
+        EXPECT_EQ(step(fmu, other, k * h, h), step(fmu, in, k * h, h)) << k;
+    }
+    // a state of another line size does not fit
+    std::vector<fmi2Byte> cut(bytes.begin(), bytes.end() - 6 * sizeof(double));
+    fmi2FMUstate bad = nullptr;
+    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
+    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
+                                       + std::to_string(cut.size()) + " bytes, expected "
+                                       + std::to_string(bytes.size()));
+}
+
+TEST(MooringLineFmu, ParameterErrorsAreNamed)
+{
+    LoadedFmu fmu("mooringLine");
+    for (const auto& [name, value, message] :
+         {std::tuple<std::string, double, std::string>{
+              "segments", 2.5,
+              "mooringLine: parameter segments = 2.5 is out of range (allowed: an "
+              "integer from 2 to 1000)"},
+          {"massPerLength", 0.0,
+           "mooringLine: parameter massPerLength = 0 kg/m is out of range (allowed: "
+           "finite and > 0)"},
+          {"seabedContact", 2.0,
+           "mooringLine: parameter seabedContact = 2 is out of range (allowed: 0 or 1)"}}) {
+        Instance in(fmu);
+        std::map<std::string, double> p = chainParameters;
+        p[name] = value;
+        EXPECT_EQ(in.initialize(p), fmi2Error);
+        EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: " + message);
+    }
+}
+
+TEST(MooringLineFmu, BinaryLinksDebiansSundials)
+{
+    const LoadedFmu fmu("mooringLine");
+    const std::string command =
+        "ldd '" + (fmu.directory / "binaries/linux64/mooringLine.so").string() + "'";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    std::string deps;
+    char buffer[512];
+    while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {
+        deps += buffer;
+    }
+    EXPECT_NE(deps.find("libsundials_cvode.so.6 => /"), std::string::npos) << deps;
+}
+
+} // namespace
