@@ -22,7 +22,7 @@ import os
 import subprocess
 import tempfile
 
-from vcommon import FMUSIM, child_cpu, fmu_path, has_nan, run_rigid, slider, solver_entry, vec
+from vcommon import FMUSIM, child_cpu, fmi_message, fmu_path, has_nan, run_rigid, slider, solver_entry, vec
 
 L, EA, W = 100.0, 5e7, 700.0
 
@@ -95,7 +95,7 @@ def fmusim_run(fmu, params, rows, outputs, step=1.0):
         r = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         cpu = child_cpu() - cpu0
     if r.returncode != 0:
-        return None, (r.stderr.strip().splitlines() or ["?"])[-1][:160], cpu
+        return None, fmi_message(r.stderr), cpu
     table = list(csv.reader(r.stdout.splitlines()))
     return {n: [float(x[i]) for x in table[1:]] for i, n in enumerate(table[0])}, "", cpu
 

@@ -84,7 +84,7 @@ def spring_row_outcomes(solver, ratio, dt=DT):
     """Every row of the spring map at one point."""
     rows = world_spring(solver, ratio, dt)
     for r in MASS_RATIOS:
-        rows[f"two bodies, m2/m1 = {r:g}"] = two_body("spring", solver, ratio, r, dt)
+        rows[f"two bodies m2/m1 = {r:g}"] = two_body("spring", solver, ratio, r, dt)
     return rows
 
 

@@ -41,18 +41,27 @@ class Outcome:
 
 
 def first_error(log):
-    """The line of a log that says why a run stopped."""
+    """The words of a log that say why a run stopped: OpenFOAM's fatal
+    error message, or its floating-point trap."""
     lines = [ln.strip() for ln in log.splitlines() if ln.strip()]
     for i, line in enumerate(lines):
         if "FOAM FATAL" in line:
-            rest = [ln for ln in lines[i + 1:i + 6] if not ln.startswith(("From", "in file", "-->"))]
-            return " ".join(rest[:2])[:160]
-        if "Floating point exception" in line or "sigFpe" in line:
-            return "floating-point exception (SIGFPE)"
-    for line in reversed(lines):
-        if "error" in line.lower() or "nan" in line.lower():
-            return line[:160]
-    return lines[-1][:160] if lines else "no output"
+            words = []
+            for ln in lines[i + 1:]:
+                if ln.startswith(("From ", "file:", "FOAM exiting")):
+                    break
+                words.append(ln)
+            return " ".join(words).replace(TOP + "/", "")[:240]
+    if any("sigFpe::sigHandler" in ln for ln in lines):
+        return "floating-point exception trapped by OpenFOAM (SIGFPE)"
+    return lines[-1][:240] if lines else "no output"
+
+
+def fmi_message(stderr):
+    """The FMU's own words from fmusim's last error line (after the fmi2
+    status), else the line."""
+    line = (stderr.strip().splitlines() or ["no message"])[-1]
+    return line.split("(fmi2Error): ")[-1].replace(TOP + "/", "")[:200]
 
 
 def has_nan(columns):
@@ -90,8 +99,8 @@ def run_fmusim(fmu, options, sets=None):
     result = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     cpu = child_cpu() - cpu0
     if result.returncode != 0:
-        message = (result.stderr.strip().splitlines() or ["no message"])[-1][:160]
-        return Outcome("failed", cpu, message=f"exit {result.returncode}: {message}")
+        message = fmi_message(result.stderr)
+        return Outcome("failed", cpu, message=f"fmusim exit {result.returncode}: {message}")
     rows = list(csv.reader(result.stdout.splitlines()))
     table = {name: [float(r[i]) for r in rows[1:]] for i, name in enumerate(rows[0])}
     return Outcome("ok", cpu, table=table)
