@@ -16,6 +16,14 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
     , callbacks_(callbacks)
     , logCalls_(loggingOn)
 {
+    for (const ScalarVariable& v : model_->variables().variables()) {
+        realAccess_.push_back(
+            v.type != Type::real                  ? RealAccess::none
+            : v.causality == Causality::input     ? RealAccess::input
+            : v.causality == Causality::parameter ? RealAccess::parameter
+            : v.causality == Causality::output    ? RealAccess::output
+                                                  : RealAccess::none);
+    }
     startValues();
 }
 
@@ -135,9 +143,7 @@ void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
 {
     bool needsOutputs = false;
     for (std::size_t i = 0; i < n; ++i) {
-        needsOutputs =
-            needsOutputs
-            || variable(vr[i], Type::real).causality == Causality::output;
+        needsOutputs |= realAccess(vr[i]) == RealAccess::output;
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
@@ -151,15 +157,16 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
                           const fmi2Real value[])
 {
     for (std::size_t i = 0; i < n; ++i) {
-        const ScalarVariable& v = variable(vr[i], Type::real);
-        if (v.causality == Causality::output) {
-            throw UsageError("variable " + v.name + " (value reference "
-                             + std::to_string(vr[i])
+        const RealAccess access = realAccess(vr[i]);
+        if (access == RealAccess::output) {
+            throw UsageError("variable " + variableName(vr[i])
+                             + " (value reference " + std::to_string(vr[i])
                              + ") is an output and cannot be set");
         }
-        if (v.causality == Causality::parameter
+        if (access == RealAccess::parameter
             && (state_ & (instantiated | initializationMode)) == 0) {
-            throw UsageError("parameter " + v.name + " (value reference "
+            throw UsageError("parameter " + variableName(vr[i])
+                             + " (value reference "
                              + std::to_string(vr[i])
                              + ") is fixed: set it before "
                                "fmi2ExitInitializationMode");

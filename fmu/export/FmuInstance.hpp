@@ -77,6 +77,18 @@ private:
     void startValues();
     //- The variable behind vr; UsageError if none or not of type `type`
     const ScalarVariable& variable(fmi2ValueReference vr, Type type) const;
+
+    //- How a Real value reference may be used, checked on every access
+    enum class RealAccess : unsigned char { input, parameter, output, none };
+
+    //- Access of a Real variable; UsageError (from variable()) otherwise
+    RealAccess realAccess(fmi2ValueReference vr) const
+    {
+        if (vr >= realAccess_.size() || realAccess_[vr] == RealAccess::none) {
+            variable(vr, Type::real);
+        }
+        return realAccess_[vr];
+    }
     void computeOutputs();
     const std::string& variableName(fmi2ValueReference vr) const;
 
@@ -89,6 +101,8 @@ private:
     double time_ = 0.0;
     bool outputsValid_ = false;
     std::vector<double> values_;
+    //- Per value reference: the RealAccess of its variable
+    std::vector<RealAccess> realAccess_;
     std::vector<std::unique_ptr<SavedState>> savedStates_;
 };
 

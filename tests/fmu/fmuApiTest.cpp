@@ -90,6 +90,13 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
                   + fmu->name + " (0 to " + std::to_string(fmu->vr.size() - 1)
                   + ")");
     const fmi2ValueReference force = fmu->ref("A.F[1]");
+    // Every value reference is checked, also after an output in the list.
+    const fmi2ValueReference mixed[2] = {force, bad};
+    double values[2] = {0.0, 0.0};
+    EXPECT_EQ(f.GetReal(in.c, mixed, 2, values), fmi2Error);
+    EXPECT_NE(in.lastMessage().find("value reference 100000 is not a variable"),
+              std::string::npos)
+        << in.lastMessage();
     EXPECT_EQ(f.SetReal(in.c, &force, 1, &value), fmi2Error);
     EXPECT_EQ(in.lastMessage(), "fmi2SetReal: variable A.F[1] (value reference "
                                     + std::to_string(force)
