@@ -29,13 +29,16 @@ def loglog(png, title, xlabel, ylabel, series, w=800, h=560):
     gnuplot(s)
 
 
-def stability_map(png, title, xlabel, rows, points, w=900, h=None):
+def stability_map(png, title, xlabel, rows, points, w=1000, h=None):
     """rows: y labels from bottom to top; points: [(x, row, outcome)]."""
     h = h or 160 + 24 * len(rows)
     s = HEAD.format(w=w, h=h, png=png)
+    xs = [x for x, _, _ in points]
+    margin = max(len(r) for r in rows) * 0.9 + 2
     s += (f'set title "{title}"\nset xlabel "{xlabel}"\nset logscale x\n'
           "set format x '10^{%L}'\nset grid x\nset key outside right top\n"
-          f"set yrange [-0.7:{len(rows) - 0.3}]\nset lmargin 34\n")
+          f"set xrange [{min(xs) / 2!r}:{max(xs) * 2!r}]\n"
+          f"set yrange [-0.7:{len(rows) - 0.3}]\nset lmargin {margin:.0f}\n")
     s += "set ytics (" + ", ".join(f'"{r}" {i}' for i, r in enumerate(rows)) + ")\n"
     plots = []
     for outcome, (pt, colour) in OUTCOME_STYLE.items():

@@ -19,7 +19,8 @@ def g(x, digits=3):
 
 def table(header, rows):
     lines = ["| " + " | ".join(header) + " |", "|" + " --- |" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    lines += ["| " + " | ".join(str(c).replace("\\|", "|").replace("|", "\\|") for c in r) + " |"
+              for r in rows]
     return "\n".join(lines) + "\n"
 
 

@@ -66,6 +66,10 @@ def main():
         r["spring_dt"] = bisect_limit(st.is_stable_spring(sym, 1.0, dt=0.001), lim[0] / 1.5, lim[1] * 1.5)
         with open(saved, "wb") as f:
             pickle.dump(r, f)
+    stabmaps.draw_spring(r["spring_map"])
+    stabmaps.draw_damper(r["damper_map"])
+    stabmaps.draw_hinge(r["hinge_map"])
+    stabmaps.draw_catenary(r["catenary_map"])
     m = measured_values(r)
     report.write(r, m, time.time() - start)
     for name, value in sorted(m.items()):

@@ -78,21 +78,22 @@ def spring_maps(solvers=st.SOLVERS, grid=SPRING_GRID, figures=True, bisect=True)
     if figures:
         write_csv(os.path.join(OUT, "stability-spring.csv"), ("solver", "k dt^2/mu", "row", "outcome", "message"),
                   csv_rows)
-        rows = []
-        points = []
-        for name, d in out.items():
-            names = sorted({row for _, rs in d["results"] for row in rs}, reverse=True)
-            for row in names:
-                rows.append(f"{name}: {row}")
-            points += [(x, f"{name}: {row}", o) for x, row, o in map_points(d["results"])]
-        plots.stability_map(os.path.join(OUT, "stability-spring.png"),
-                            "spring: outcome against k dt^2/mu (dt = 0.01 s)", "k dt^2 / mu",
-                            rows[::-1], points)
+        draw_spring(out)
     return out
 
 
+def draw_spring(out):
+    rows, points = [], []
+    for name, d in out.items():
+        names = sorted({row for _, rs in d["results"] for row in rs}, reverse=True)
+        rows += [f"{name}: {row}" for row in names]
+        points += [(x, f"{name}: {row}", o) for x, row, o in map_points(d["results"])]
+    plots.stability_map(os.path.join(OUT, "stability-spring.png"),
+                        "spring: outcome against k dt^2/mu (dt = 0.01 s)", "k dt^2 / mu", rows[::-1], points)
+
+
 def damper_maps(solvers=st.SOLVERS, grid=DAMPER_GRID, figures=True, bisect=True):
-    out, points, csv_rows = {}, [], []
+    out, csv_rows = {}, []
     for solver in solvers:
         results = [(r, {f"m2/m1 = {m:g}": st.two_body("damper", solver, r, m) for m in (1e-3, 1.0, 1e3)})
                    for r in grid]
@@ -100,23 +101,26 @@ def damper_maps(solvers=st.SOLVERS, grid=DAMPER_GRID, figures=True, bisect=True)
                if bisect else (None, None))
         out[solver[0]] = {"results": results, "limit": lim, "theory": theory_limits(solver[0], "damper"),
                           "messages": first_messages(results)}
-        points += [(x, f"{solver[0]}: {row}", o) for x, row, o in map_points(results)]
         csv_rows += [(solver[0], r, row, o, m) for r, rows in results for row, (o, m) in rows.items()]
     if figures:
         write_csv(os.path.join(OUT, "stability-damper.csv"), ("solver", "c dt/mu", "row", "outcome", "message"),
                   csv_rows)
-        rows = [f"{s[0]}: m2/m1 = {m:g}" for s in solvers for m in (1e3, 1.0, 1e-3)]
-        plots.stability_map(os.path.join(OUT, "stability-damper.png"),
-                            "damper: outcome against c dt/mu (dt = 0.01 s, 200 steps)", "c dt / mu",
-                            rows[::-1], points)
+        draw_damper(out)
     return out
+
+
+def draw_damper(out):
+    rows = [f"{name}: m2/m1 = {m:g}" for name in out for m in (1e3, 1.0, 1e-3)]
+    points = [(x, f"{name}: {row}", o) for name, d in out.items() for x, row, o in map_points(d["results"])]
+    plots.stability_map(os.path.join(OUT, "stability-damper.png"),
+                        "damper: outcome against c dt/mu (dt = 0.01 s, 200 steps)", "c dt / mu", rows[::-1], points)
 
 
 HINGE_SOLVERS = (("symplectic", 1), ("Newmark", 3), ("implicitNewmark", 1))
 
 
 def hinge_maps(grid=HINGE_GRID, figures=True, bisect=True, inertia_ratios=INERTIA_RATIOS):
-    out, points, csv_rows = {}, [], []
+    out, csv_rows = {}, []
     for solver, n_iter in HINGE_SOLVERS:
         name = f"{solver} x{n_iter}" if solver == "Newmark" else solver
         results = []
@@ -131,20 +135,24 @@ def hinge_maps(grid=HINGE_GRID, figures=True, bisect=True, inertia_ratios=INERTI
         lim = (measured_limit(results, row, lambda r: hinge.rod_stability(solver, n_iter, r, 1 / 3)[0] == "stable")
                if bisect and row in results[0][1] else (None, None))
         out[name] = {"results": results, "limit": lim, "messages": first_messages(results)}
-        points += [(x, f"{name}: {row}", o) for x, row, o in map_points(results)]
         csv_rows += [(name, r, row, o, m) for r, rows in results for row, (o, m) in rows.items()]
     if figures:
         write_csv(os.path.join(OUT, "stability-hinge.csv"), ("solver", "k dt^2/m_eff", "row", "outcome", "message"),
                   csv_rows)
-        labels = [f"{n}: J = {j:.2g}" for n in out for j in sorted(INERTIA_RATIOS, reverse=True)]
-        plots.stability_map(os.path.join(OUT, "stability-hinge.png"),
-                            "hinge (rod on the world): outcome against k dt^2/m_eff (dt = 1 ms, 1 s)",
-                            "k dt^2 / m_eff", labels[::-1], points)
+        draw_hinge(out)
     return out
 
 
+def draw_hinge(out):
+    labels = [f"{n}: J = {j:.2g}" for n in out for j in sorted(INERTIA_RATIOS, reverse=True)]
+    points = [(x, f"{name}: {row}", o) for name, d in out.items() for x, row, o in map_points(d["results"])]
+    plots.stability_map(os.path.join(OUT, "stability-hinge.png"),
+                        "hinge (rod on the world): outcome against k dt^2/m_eff (dt = 1 ms, 1 s)",
+                        "k dt^2 / m_eff", labels[::-1], points)
+
+
 def catenary_maps(grid=SPRING_GRID, figures=True, bisect=True):
-    out, points, csv_rows = {}, [], []
+    out, csv_rows = {}, []
     for solver, n_iter in (("symplectic", 1), ("Newmark", 1), ("Newmark", 3), ("implicitNewmark", 1)):
         name = f"{solver} x{n_iter}" if solver == "Newmark" else solver
         results, misses = [], 0
@@ -157,12 +165,16 @@ def catenary_maps(grid=SPRING_GRID, figures=True, bisect=True):
                               lambda r: cat.tension_leg_stability(solver, n_iter, r)[0] == "stable")
                if bisect else (None, None))
         out[name] = {"results": results, "limit": lim, "messages": first_messages(results)}
-        points += [(x, f"{name}", o) for x, _, o in map_points(results)]
         csv_rows += [(name, r, o, m) for r, rows in results for (o, m) in rows.values()]
     if figures:
         write_csv(os.path.join(OUT, "stability-catenary.csv"), ("solver", "EA dt^2/(L m)", "outcome", "message"),
                   csv_rows)
-        plots.stability_map(os.path.join(OUT, "stability-catenary.png"),
-                            "catenary tension leg: outcome against EA dt^2/(L m) (dt = 0.01 s)",
-                            "EA dt^2 / (L m)", list(out)[::-1], points)
+        draw_catenary(out)
     return out
+
+
+def draw_catenary(out):
+    points = [(x, name, o) for name, d in out.items() for x, _, o in map_points(d["results"])]
+    plots.stability_map(os.path.join(OUT, "stability-catenary.png"),
+                        "catenary tension leg: outcome against EA dt^2/(L m) (dt = 0.01 s)",
+                        "EA dt^2 / (L m)", list(out)[::-1], points)

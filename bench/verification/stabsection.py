@@ -43,7 +43,7 @@ def stability_text(r, table, g, limit_text):
     s = ("## Stability on stiff cases\n\n"
          f"A run is stable when the largest displacement from equilibrium (spring, hinge gap, tension "
          f"leg) or relative velocity (damper) stays within {st.GROWTH:g} times its initial value "
-         "(hinge: gap below 1 % of the hinge offset) over 50 periods (at least 200, at most 5000 steps; "
+         "(hinge: gap below 10 times the static gap m g/k) over 50 periods (at least 200, at most 5000 steps; "
          "damper: 200 steps; hinge: 1000 steps); unstable when it runs but grows beyond; failed when "
          "the program stops with an error. The limit is bisected to 2 % between the last stable and the "
          "first unstable point of the grid. Theory: the solver's own recurrence on x'' = -(k/m) x "
