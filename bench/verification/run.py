@@ -64,6 +64,8 @@ def main():
         sym = st.SOLVERS[0]
         lim = r["spring_map"]["symplectic"]["limits"]["two bodies m2/m1 = 1"]
         r["spring_dt"] = bisect_limit(st.is_stable_spring(sym, 1.0, dt=0.001), lim[0] / 1.5, lim[1] * 1.5)
+        r["elapsed"] = time.time() - start
+        r["measured"] = time.gmtime(start)
         with open(saved, "wb") as f:
             pickle.dump(r, f)
     stabmaps.draw_spring(r["spring_map"])
@@ -71,7 +73,7 @@ def main():
     stabmaps.draw_hinge(r["hinge_map"])
     stabmaps.draw_catenary(r["catenary_map"])
     m = measured_values(r)
-    report.write(r, m, time.time() - start)
+    report.write(r, m, r["elapsed"], r["measured"])
     for name, value in sorted(m.items()):
         print(f"{name}: {value:.4g}" if value is not None else f"{name}: -")
     print(f"docs/verification.md written in {(time.time() - start) / 60:.1f} min")
