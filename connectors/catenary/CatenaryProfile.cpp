@@ -213,6 +213,8 @@ const char* regimeName(CatenaryRegime regime)
         return "slackOnSeabed";
     case CatenaryRegime::vertical:
         return "vertical";
+    case CatenaryRegime::folded:
+        return "folded";
     case CatenaryRegime::slackWeightless:
         return "slackWeightless";
     }
@@ -250,17 +252,19 @@ CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
         }
     }
     if (x <= tiny) {
-        // Taut and vertical: H = 0, z = +-L + (V L - w L^2/2)/EA
+        // H = 0, both ends on one vertical. Taut: z = +-L + (V L - w L^2/2)/EA.
+        // Slack: the line folds (one strand up, one down, T = 0 at the fold):
+        // the H -> 0 limit of the suspended relation, 2V - wL = z/(1/|w| + L/(2EA))
         const double sign = z > 0.0 ? 1.0 : -1.0;
         s.regime = CatenaryRegime::vertical;
         s.V = (z - sign * L) * EA / L + 0.5 * w * L;
         s.VA = s.V - w * L;
-        if (z == 0.0 || std::min(sign * s.V, sign * s.VA) < 0.0) {
-            throw UndefinedStateError(
-                "catenary: slack line with both ends on one vertical (regime "
-                "vertical, " + describe(x, z, 0, s.V)
-                + "): its shape is undefined (the line would fold)");
+        if (z != 0.0 && std::min(sign * s.V, sign * s.VA) >= 0.0) {
+            return s;
         }
+        s.regime = CatenaryRegime::folded;
+        s.V = 0.5 * (w * L + z / (1.0 / std::abs(w) + L / (2.0 * EA)));
+        s.VA = s.V - w * L;
         return s;
     }
     const CatenaryGuess start =
@@ -280,9 +284,15 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
     switch (sol.regime) {
     case CatenaryRegime::slackWeightless:
         return Eigen::Vector2d(x, z) * (s / L);
-    case CatenaryRegime::vertical: {
-        const double sign = z > 0.0 ? 1.0 : -1.0;
-        return {0.0, sign * s + (sol.VA * s + 0.5 * w * s * s) / EA};
+    case CatenaryRegime::vertical:
+    case CatenaryRegime::folded: {
+        // H -> 0 limit of the suspended relation: each strand straight up
+        // or down, the fold where the vertical tension changes sign
+        const double Vs = sol.VA + w * s;
+        const double across = std::abs(Vs) + std::abs(sol.VA);
+        const double ratio = across > 0.0 ? (2.0 * sol.VA + w * s) / across
+                                          : (z >= 0.0 ? 1.0 : -1.0);
+        return {0.0, s * ratio + (sol.VA * s + 0.5 * w * s * s) / EA};
     }
     case CatenaryRegime::suspended: {
         const Span f = suspendedSpan(s, EA, w, H, sol.VA);
@@ -338,22 +348,30 @@ double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
     }
     strain /= 2.0 * EA;
     // Weight: w times the integral of z over the suspended part, composite
-    // 5-point Gauss-Legendre on 8 panels (z(s) is analytic there)
+    // 5-point Gauss-Legendre on 8 panels (z(s) is analytic there; a folded
+    // line is integrated on each side of its fold)
     static const double node[5] = {0.0, 0.5384693101056831, -0.5384693101056831,
                                    0.9061798459386640, -0.9061798459386640};
     static const double weightOf[5] = {0.5688888888888889, 0.4786286704993665,
                                        0.4786286704993665, 0.2369268850561891,
                                        0.2369268850561891};
-    const int panels = 8;
-    const double h = Ls / panels;
-    double zIntegral = 0.0;
-    for (int k = 0; k < panels; ++k) {
-        const double mid = Lb + (k + 0.5) * h;
-        for (int i = 0; i < 5; ++i) {
-            zIntegral += weightOf[i] * 0.5 * h
-                         * catenaryPoint(line, sol, x, z, mid + 0.5 * h * node[i])[1];
+    const auto integrateZ = [&](double from, double to) {
+        const int panels = 8;
+        const double h = (to - from) / panels;
+        double sum = 0.0;
+        for (int k = 0; k < panels; ++k) {
+            const double mid = from + (k + 0.5) * h;
+            for (int i = 0; i < 5; ++i) {
+                sum += weightOf[i] * 0.5 * h
+                       * catenaryPoint(line, sol, x, z, mid + 0.5 * h * node[i])[1];
+            }
         }
-    }
+        return sum;
+    };
+    const double fold = sol.regime == CatenaryRegime::folded
+                            ? std::clamp(-sol.VA / w, Lb, L)
+                            : L;
+    const double zIntegral = integrateZ(Lb, fold) + integrateZ(fold, L);
     return strain + w * zIntegral;
 }
 

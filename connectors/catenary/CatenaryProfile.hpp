@@ -32,10 +32,12 @@
 //    horizontal tension (H = 0); the grounded part is drawn heaped at the
 //    touchdown point;
 //  - vertical: fairlead directly above (or below) the anchor, taut (H = 0);
+//  - folded: both ends on one vertical, slack and off the seabed (H = 0):
+//    one strand hangs (or, buoyant, floats) from each end to a fold where
+//    the tension vanishes, the H -> 0 limit of the suspended relations;
 //  - slackWeightless: w = 0 and the chord shorter than L: no tension, the
 //    shape is undefined and drawn as the straight chord.
-// A slack line with both ends on one vertical and no seabed (it would fold)
-// and a fairlead below the seabed are UndefinedStateError; so is a Newton
+// A fairlead below the seabed is UndefinedStateError; so is a Newton
 // failure, whose message gives the regime and the residual.
 #ifndef CONNECTORS_CATENARY_CATENARYPROFILE_HPP
 #define CONNECTORS_CATENARY_CATENARYPROFILE_HPP
@@ -62,6 +64,7 @@ enum class CatenaryRegime {
     touchdown,
     slackOnSeabed,
     vertical,
+    folded,
     slackWeightless
 };
 

@@ -36,9 +36,9 @@ A.F = -H e_h - V e_z (at P),  B.F = HA e_h + VA e_z (at Q)
 <p>e_h is the horizontal unit vector from Q towards P. H and V are found by
 a damped Newton method warm started from the previous step (outputs
 <code>H</code>, <code>V</code>, part of the FMU state). Slack lines on the
-seabed, vertical lines and slack weightless lines are solved in closed
-form. fmi2Error (with the regime and residual in the message) for a fairlead
-below the seabed, a slack line folded on one vertical and a Newton failure.
+seabed, vertical (taut or folded) lines and slack weightless lines are
+solved in closed form. fmi2Error (with the regime and residual in the
+message) for a fairlead below the seabed and a Newton failure.
 No SUNDIALS dependency. Details: connectors/catenary/README.md.</p>)";
 
 class CatenaryModel final : public fmuExport::Model {

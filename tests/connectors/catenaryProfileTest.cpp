@@ -223,9 +223,6 @@ TEST(CatenaryProfile, SweepFromSlackToTautIsMonotoneAndFinite)
         CatenaryGuess warm{};
         for (double x = 0.0; x <= 102.0; x += 0.5) {
             const double z = 40.0;
-            if (!seabed && x < 1.0) {
-                continue; // both ends on one vertical, slack: undefined
-            }
             const CatenarySolution cold = solveCatenary(l, x, z);
             const CatenarySolution hot = solveCatenary(l, x, z, warm.H > 0 ? &warm : nullptr);
             ASSERT_TRUE(std::isfinite(cold.H) && std::isfinite(cold.V)) << x;
@@ -282,8 +279,35 @@ TEST(CatenaryProfile, FailuresNameTheRegimeAndResidual)
         EXPECT_EQ(m.rfind("catenary: Newton did not converge in 1 iterations (regime ", 0), 0u) << m;
         EXPECT_NE(m.find(", residual "), std::string::npos) << m;
     }
-    CatenaryLine hanging = chain(false);
-    EXPECT_THROW(solveCatenary(hanging, 0.0, 30.0), connectors::UndefinedStateError);
+}
+
+TEST(CatenaryProfile, SlackLineOnOneVerticalFolds)
+{
+    // Two bodies one above the other, slack line: a strand hangs from each
+    // end to a fold without tension (H = 0); the strands' stretched lengths
+    // differ by z: 2V - wL = z/(1/w + L/(2EA)). The limit of the suspended
+    // solution as the horizontal span vanishes.
+    for (const double w : {700.0, -300.0}) {
+        CatenaryLine l = chain(false);
+        l.weight = w;
+        const double z = 30.0;
+        const CatenarySolution f = solveCatenary(l, 0.0, z);
+        EXPECT_EQ(f.regime, CatenaryRegime::folded);
+        const double V = 0.5 * (w * l.length + z / (1 / std::abs(w) + l.length / (2 * l.EA)));
+        EXPECT_NEAR(f.V, V, 1e-9 * std::abs(V));
+        EXPECT_LE(f.V * f.VA, 0.0); // one strand up, one down
+        const CatenarySolution near = solveCatenary(l, 1e-6, z);
+        EXPECT_NEAR(near.V, f.V, 1e-6 * std::abs(V));
+        EXPECT_LT(near.H, 1e-3);
+        // the shape reaches the fairlead and the fold is the lowest (or,
+        // buoyant, highest) point
+        const Eigen::Vector2d end = connectors::catenaryPoint(l, f, 0.0, z, l.length);
+        EXPECT_NEAR(end[1], z, 1e-9);
+        const Eigen::Vector2d fold =
+            connectors::catenaryPoint(l, f, 0.0, z, -f.VA / w);
+        EXPECT_NEAR(fold[1], w > 0 ? -(l.length - z) / 2 : (l.length + z) / 2,
+                    2e-3 * l.length); // plus the strands' elastic stretch
+    }
 }
 
 } // namespace
