@@ -14,7 +14,7 @@ or to the travel U0 TAU (damper).
 """
 import math
 
-from vcommon import fmu_path, run_fmusim, run_rigid, slider, solver_entry, vec
+from vcommon import fmu_path, run_fmusim, run_rigid, slider, solver_entry
 
 M1, M2, K, L0, S0 = 2.0, 3.0, 50.0, 1.0, 0.1
 MU = M1 * M2 / (M1 + M2)

@@ -5,7 +5,6 @@ import platform
 import subprocess
 import time
 
-from studies import OUT
 from vcommon import TOP, read_documented
 
 

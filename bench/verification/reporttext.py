@@ -5,7 +5,6 @@ import os
 import catenary as cat
 import hinge
 import oscillator as osc
-import stability as st
 from stabsection import failure_kinds, nan_count
 from vcommon import TOP
 

@@ -1,6 +1,5 @@
 """Stability maps and measured limits of every connector, with the
 theoretical limits of the schemes (theory.py) under the same criterion."""
-import math
 import os
 
 import catenary as cat

@@ -8,9 +8,7 @@ import catenary as cat
 import hinge
 import oscillator as osc
 import plots
-import stability as st
-import theory
-from vcommon import TOP, bisect_limit, order, write_csv
+from vcommon import TOP, order, write_csv
 
 OUT = os.path.join(TOP, "docs", "verification")
 STEPS_PER_UNIT = (8, 16, 32, 64, 128, 256, 512)
