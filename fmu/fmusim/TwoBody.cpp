@@ -189,7 +189,9 @@ private:
             if (iterations_ > 1) instance_.setState(start);
             const LoadVector l1 = evaluate(a1, b1, t, h);
             residual = l1 - guess;
-            loadScale_ = std::max(loadScale_, l1.norm());
+            // Relative to this step's loads: a diverging iterate must not
+            // loosen the test for the rest of the run.
+            loadScale_ = std::max(l0.norm(), l1.norm());
             if (residual.norm() <= c_.couplingTolerance * loadScale_)
             {
                 a_ = a1;
