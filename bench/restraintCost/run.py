@@ -64,6 +64,9 @@ def main():
     print(f"  built-in linearSpring          {b[0]:8.0f} ns (new step) {b[1]:8.0f} ns (repeated solve)")
     print(f"  linearSpring FMU (fmuConnector) {f[0]:8.0f} ns (new step) {f[1]:8.0f} ns (repeated solve)")
     print(f"  ratio FMU / built-in           {f[0] / b[0]:8.1f}            {f[1] / b[1]:8.1f}")
+    print("A new step also writes the previous step's row of connector outputs to")
+    print("postProcessing/fmuConnectors and saves the FMU state; a repeated solve")
+    print("restores the state, steps the FMU and reads its outputs.")
 
 
 if __name__ == "__main__":

@@ -8,14 +8,6 @@ namespace fmuImport {
 
 namespace {
 
-std::string atTime(double t)
-{
-    std::ostringstream s;
-    s.precision(17);
-    s << " at t = " << t;
-    return s.str();
-}
-
 void checkSizes(const std::vector<unsigned int>& vrs, std::size_t nValues, const char* function)
 {
     if (vrs.size() != nValues)
@@ -53,7 +45,7 @@ void Instance::setupExperiment(double startTime, bool stopTimeDefined, double st
     impl_->beginCall();
     impl_->check(impl_->api().SetupExperiment(impl_->component, fmi2False, 0, startTime,
                                               stopTimeDefined ? fmi2True : fmi2False, stopTime),
-                 "fmi2SetupExperiment", atTime(startTime));
+                 "fmi2SetupExperiment", startTime);
     impl_->time = startTime;
 }
 
@@ -72,7 +64,7 @@ void Instance::exitInitializationMode()
 void Instance::terminate()
 {
     impl_->beginCall();
-    impl_->check(impl_->api().Terminate(impl_->component), "fmi2Terminate", atTime(impl_->time));
+    impl_->check(impl_->api().Terminate(impl_->component), "fmi2Terminate", impl_->time);
 }
 
 void Instance::reset()
@@ -87,7 +79,7 @@ void Instance::setReal(const std::vector<unsigned int>& vrs, const std::vector<d
     checkSizes(vrs, values.size(), "fmi2SetReal");
     impl_->beginCall();
     impl_->check(impl_->api().SetReal(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2SetReal",
-                 atTime(impl_->time));
+                 impl_->time);
 }
 
 std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
@@ -95,7 +87,7 @@ std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
     std::vector<double> values(vrs.size());
     impl_->beginCall();
     impl_->check(impl_->api().GetReal(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2GetReal",
-                 atTime(impl_->time));
+                 impl_->time);
     return values;
 }
 
@@ -104,7 +96,7 @@ void Instance::setInteger(const std::vector<unsigned int>& vrs, const std::vecto
     checkSizes(vrs, values.size(), "fmi2SetInteger");
     impl_->beginCall();
     impl_->check(impl_->api().SetInteger(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2SetInteger",
-                 atTime(impl_->time));
+                 impl_->time);
 }
 
 std::vector<int> Instance::getInteger(const std::vector<unsigned int>& vrs)
@@ -112,7 +104,7 @@ std::vector<int> Instance::getInteger(const std::vector<unsigned int>& vrs)
     std::vector<int> values(vrs.size());
     impl_->beginCall();
     impl_->check(impl_->api().GetInteger(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2GetInteger",
-                 atTime(impl_->time));
+                 impl_->time);
     return values;
 }
 
@@ -122,7 +114,7 @@ void Instance::setBoolean(const std::vector<unsigned int>& vrs, const std::vecto
     const std::vector<fmi2Boolean> raw(values.begin(), values.end());
     impl_->beginCall();
     impl_->check(impl_->api().SetBoolean(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2SetBoolean",
-                 atTime(impl_->time));
+                 impl_->time);
 }
 
 std::vector<bool> Instance::getBoolean(const std::vector<unsigned int>& vrs)
@@ -130,7 +122,7 @@ std::vector<bool> Instance::getBoolean(const std::vector<unsigned int>& vrs)
     std::vector<fmi2Boolean> raw(vrs.size());
     impl_->beginCall();
     impl_->check(impl_->api().GetBoolean(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2GetBoolean",
-                 atTime(impl_->time));
+                 impl_->time);
     return std::vector<bool>(raw.begin(), raw.end());
 }
 
@@ -141,7 +133,7 @@ void Instance::setString(const std::vector<unsigned int>& vrs, const std::vector
     for (const std::string& s : values) raw.push_back(s.c_str());
     impl_->beginCall();
     impl_->check(impl_->api().SetString(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2SetString",
-                 atTime(impl_->time));
+                 impl_->time);
 }
 
 std::vector<std::string> Instance::getString(const std::vector<unsigned int>& vrs)
@@ -149,7 +141,7 @@ std::vector<std::string> Instance::getString(const std::vector<unsigned int>& vr
     std::vector<fmi2String> raw(vrs.size(), nullptr);
     impl_->beginCall();
     impl_->check(impl_->api().GetString(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2GetString",
-                 atTime(impl_->time));
+                 impl_->time);
     std::vector<std::string> values;
     for (const fmi2String s : raw) values.emplace_back(s ? s : "");
     return values;
@@ -160,7 +152,7 @@ void Instance::doStep(double currentTime, double stepSize, bool noSetFMUStatePri
     impl_->beginCall();
     impl_->check(impl_->api().DoStep(impl_->component, currentTime, stepSize,
                                      noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False),
-                 "fmi2DoStep", atTime(currentTime));
+                 "fmi2DoStep", currentTime);
     impl_->time = currentTime + stepSize;
 }
 
@@ -197,7 +189,7 @@ Instance::State Instance::getState()
     State s;
     fmi2FMUstate raw = nullptr;
     impl_->beginCall();
-    impl_->check(impl_->api().GetFMUstate(impl_->component, &raw), "fmi2GetFMUstate", atTime(impl_->time));
+    impl_->check(impl_->api().GetFMUstate(impl_->component, &raw), "fmi2GetFMUstate", impl_->time);
     s.owner_ = impl_;
     s.state_ = raw;
     s.time_ = impl_->time;
@@ -210,7 +202,7 @@ void Instance::setState(const State& state)
         throw Error("fmi2SetFMUstate in FMU '" + impl_->fmu->path + "', instance '" + impl_->name +
                     "': the state is empty or belongs to another instance");
     impl_->beginCall();
-    impl_->check(impl_->api().SetFMUstate(impl_->component, state.state_), "fmi2SetFMUstate", atTime(impl_->time));
+    impl_->check(impl_->api().SetFMUstate(impl_->component, state.state_), "fmi2SetFMUstate", impl_->time);
     if (!std::isnan(state.time_)) impl_->time = state.time_;
 }
 

@@ -1,5 +1,8 @@
 #include "InstanceImpl.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -77,9 +80,17 @@ void Instance::Impl::receive(const std::string& instanceName, int status, const 
     std::cerr << "[" << instanceName << "] " << statusName(status) << " " << category << ": " << message << '\n';
 }
 
-void Instance::Impl::check(fmi2Status status, const char* function, const std::string& detail)
+void Instance::Impl::check(fmi2Status status, const char* function, double time)
 {
     if (status == fmi2OK) return;
+    std::string detail;
+    if (!std::isnan(time))
+    {
+        std::ostringstream s;
+        s.precision(17);
+        s << " at t = " << time;
+        detail = s.str();
+    }
     if (status == fmi2Warning)
     {
         receive(name, fmi2Warning, "logStatusWarning", std::string(function) + " returned fmi2Warning" + detail);

@@ -6,6 +6,7 @@
 #include "FmuImpl.hpp"
 
 #include <memory>
+#include <limits>
 #include <string>
 
 namespace fmuImport {
@@ -33,7 +34,10 @@ struct Instance::Impl
     // Throws Error for fmi2Error, fmi2Fatal, fmi2Discard and fmi2Pending,
     // naming function, the detail (" at t = ..."), the FMU and the
     // instance; reports fmi2Warning to the logger.
-    void check(fmi2Status status, const char* function, const std::string& detail = std::string());
+    // Throws Error for a failed call; the message gives the time when it is
+    // not NaN. Formatting happens only on failure: calls are on hot paths.
+    void check(fmi2Status status, const char* function,
+               double time = std::numeric_limits<double>::quiet_NaN());
 
     // Receives a formatted message from the FMU (or from check).
     void receive(const std::string& instanceName, int status, const std::string& category, const std::string& message);
