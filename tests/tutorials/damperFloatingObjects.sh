@@ -1,0 +1,181 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Smoke test of tutorials/damperFloatingObjects: the two floating cubes joined
+# by the linearDamper connector FMU (fmuConnector restraint,
+# libfoamFmiBridge), coarse mesh (mesh factor 0.5, 20 x 10 x 15 cells),
+# 0.3 s. Runs the case and tutorials/uncoupledFloatingObjects over the same
+# interval, then checks:
+#  - both runs reach the end time; each cube rotates about its fixed centre
+#    of mass and stays inside the tank;
+#  - the damper writes one row per time step with A.F = -B.F and zero total
+#    moment about the origin (a force along the line between the
+#    attachment points);
+#  - it obeys its law: tension = c lengthRate and dissipatedPower =
+#    c lengthRate^2 >= 0 in every row (c = 10 N s/m), with a dissipated
+#    energy above 1 mJ over the run, so it does act; its length equals the
+#    distance between the attachment points (0.1 0 0.17) on A and
+#    (-0.1 0 0.17) on B as moved by the bodies' logged motion;
+#  - it damps the motion: each cube's largest pitch angle (rotation about y)
+#    is at least 20 % smaller than in the uncoupled case over the same 0.3 s
+#    (about 45 % smaller in the smoke run), and the distance between the
+#    attachment points changes at least 20 % less;
+#  - the plots are written.
+# Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so and
+# build/fmus/linearDamper.fmu. Exits non-zero on the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+. "$(dirname "$0")/connectorTestFunctions"
+
+endTime=0.3
+damping=10
+bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
+attachmentA="0.1 0 0.17"
+attachmentB="-0.1 0 0.17"
+restLength=0.2
+
+requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
+    "the bridge library (build it: ./Allwmake)"
+requireFile "$FOAMFMI_FMU_DIR/linearDamper.fmu" \
+    "the damper FMU (build it: ./Allwmake)"
+
+makeWorkDir
+
+damped=$workDir/damperFloatingObjects
+uncoupled=$workDir/uncoupledFloatingObjects
+
+runTutorial uncoupledFloatingObjects "$uncoupled" -mesh-factor 0.5 \
+    -end-time $endTime -no-plot
+runTutorial damperFloatingObjects "$damped" -mesh-factor 0.5 \
+    -end-time $endTime
+
+for c in "$uncoupled" "$damped"
+do
+    checkRanToEnd "$c" $endTime
+    # shellcheck disable=SC2086
+    checkBodies "$c" $bodies
+done
+
+
+# --- The damper's output -----------------------------------------------------
+checkConnectorRows "$damped" damper balanced
+
+dat=$(connectorFile "$damped" damper) || exit 1
+cols=""
+for name in 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
+    'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' \
+    lengthRate tension dissipatedPower
+do
+    c=$(columnOf "$dat" "$name")
+    [ -n "$c" ] || fail "$dat: no column $name in the \"# Time ...\" header"
+    cols="$cols $c"
+done
+
+# Total moment about the origin with the reference points (the fixed centres
+# of mass), and the law. Tolerances: 1e-9 relative to the loads, and for the
+# law c times the rounding of the written rate (12 significant digits).
+awk -v cols="$cols" -v c="$damping" '
+function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
+function abs(x) { return x < 0 ? -x : x }
+BEGIN {
+    split(cols, k, " ")
+    split("-0.2 0.5 0.43", rA, " "); split("0.2 0.5 0.43", rB, " ")
+}
+/^#/ { next }
+{
+    for (i = 1; i <= 3; i++)
+    {
+        FA[i] = $(k[i]); MA[i] = $(k[i + 3]); FB[i] = $(k[i + 6]); MB[i] = $(k[i + 9])
+    }
+    scale = 0
+    for (i = 1; i <= 3; i++) scale += abs(FA[i]) + abs(FB[i])
+    m[1] = MA[1] + rA[2]*FA[3] - rA[3]*FA[2] + MB[1] + rB[2]*FB[3] - rB[3]*FB[2]
+    m[2] = MA[2] + rA[3]*FA[1] - rA[1]*FA[3] + MB[2] + rB[3]*FB[1] - rB[1]*FB[3]
+    m[3] = MA[3] + rA[1]*FA[2] - rA[2]*FA[1] + MB[3] + rB[1]*FB[2] - rB[2]*FB[1]
+    for (i = 1; i <= 3; i++)
+    {
+        if (abs(m[i]) > 1e-9*scale + 1e-14) bad(sprintf("t = %s: total moment about the origin %.3g N.m, component %d", $1, m[i], i))
+        if (abs(m[i]) > worstM) worstM = abs(m[i])
+    }
+    rate = $(k[13]); T = $(k[14]); P = $(k[15])
+    if (P < 0) bad(sprintf("t = %s: dissipatedPower %.12g W < 0", $1, P))
+    if (abs(T - c*rate) > 1e-9*abs(T) + c*1e-12*(abs(rate) + 1e-3))
+        bad(sprintf("t = %s: tension %.12g N, c lengthRate = %.12g N", $1, T, c*rate))
+    if (abs(P - c*rate*rate) > 1e-9*P + 1e-15)
+        bad(sprintf("t = %s: dissipatedPower %.12g W, c lengthRate^2 = %.12g W", $1, P, c*rate*rate))
+    if (n++ > 0) E += 0.5*(P + PPrev)*($1 - tPrev)
+    PPrev = P; tPrev = $1
+    if (abs(T) > maxT) maxT = abs(T)
+}
+END {
+    if (failed) exit 1
+    if (E < 1e-3) bad(sprintf("the damper dissipates only %.3g J over the run", E))
+    printf("|total moment| <= %.2g N.m; tension = c lengthRate, dissipatedPower = c lengthRate^2 >= 0 in %d rows; largest tension %.3g N, dissipated energy %.4g J\n", worstM, n, maxT, E)
+}' "$dat" > "$workDir/check.out" || fail "$dat: see above"
+pass "damper: $(cat "$workDir/check.out")"
+
+
+# The damper's length against the bodies' logged motion. The connector is
+# evaluated at the state the last outer corrector solves for; the logged
+# state is the one the step ends with. They differ by a small part of one
+# step's motion: the tolerance is a tenth of the largest change of length in
+# one step.
+for c in "$uncoupled" "$damped"
+do
+    attachmentDistance \
+        "$c/postProcessing/rigidBodyMotion/floatingObject1.dat" \
+        "$c/postProcessing/rigidBodyMotion/floatingObject2.dat" \
+        "$attachmentA" "$attachmentB" > "$c/attachmentDistance.dat" \
+        || fail "$c: attachment points from the body motion"
+done
+awk -v lengthCol="$(columnOf "$dat" length)" '
+function abs(x) { return x < 0 ? -x : x }
+FNR == 1 { f++ }
+/^#/ { next }
+f == 1 { nD++; tD[nD] = $1; D[nD] = $2; next }
+{
+    n++
+    if (abs($1 - tD[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tD[n] > "/dev/stderr"; exit 1 }
+    L[n] = $lengthCol
+    e = abs(D[n] - L[n])
+    if (e > worst) { worst = e; tWorst = $1 }
+    if (n > 1 && abs(L[n] - L[n - 1]) > maxStep) maxStep = abs(L[n] - L[n - 1])
+}
+END {
+    if (n != nD) { print n " connector rows, " nD " body rows" > "/dev/stderr"; exit 1 }
+    if (worst > 0.1*maxStep) { printf("length differs from the attachment points by %.3g m at t = %s (tolerance %.3g m)\n", worst, tWorst, 0.1*maxStep) > "/dev/stderr"; exit 1 }
+    printf("length = distance between the attachment points within %.2g m (tolerance %.2g m)\n", worst, 0.1*maxStep)
+}' "$damped/attachmentDistance.dat" "$dat" > "$workDir/check.out" \
+    || fail "$dat: length against the body motion"
+pass "damper: $(cat "$workDir/check.out")"
+
+
+# --- The damper reduces the motion -------------------------------------------
+for body in floatingObject1 floatingObject2
+do
+    dampedPitch=$(maxAbsColumn "$damped/postProcessing/rigidBodyMotion/$body.dat" 7)
+    uncoupledPitch=$(maxAbsColumn "$uncoupled/postProcessing/rigidBodyMotion/$body.dat" 7)
+    awk -v d="$dampedPitch" -v u="$uncoupledPitch" 'BEGIN { exit !(d <= 0.8*u) }' \
+        || fail "$body: largest pitch $dampedPitch deg with the damper," \
+            "$uncoupledPitch deg without: not 20 % smaller"
+    pass "$body: largest pitch $dampedPitch deg with the damper," \
+        "$uncoupledPitch deg without"
+done
+
+change()
+{
+    awk -v L0=$restLength '{ d = $2 - L0; if (d < 0) d = -d; if (d > m) m = d } END { printf("%.6g\n", m) }' "$1"
+}
+dampedChange=$(change "$damped/attachmentDistance.dat")
+uncoupledChange=$(change "$uncoupled/attachmentDistance.dat")
+awk -v d="$dampedChange" -v u="$uncoupledChange" 'BEGIN { exit !(d <= 0.8*u) }' \
+    || fail "distance between the attachment points changes by up to" \
+        "$dampedChange m with the damper, $uncoupledChange m without:" \
+        "not 20 % less"
+pass "distance between the attachment points changes by up to" \
+    "$dampedChange m with the damper, $uncoupledChange m without"
+
+
+# --- Plots -------------------------------------------------------------------
+checkPlots "$damped" rotation displacement connector_damper snapshots
+
+#------------------------------------------------------------------------------
