@@ -23,6 +23,7 @@
 # build/fmus/linearSpring.fmu. Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/tutorialTestFunctions"
+. "$(dirname "$0")/connectorTestFunctions"
 
 endTime=0.3
 stiffness=100
@@ -58,12 +59,6 @@ done
 
 
 # --- The connector's output --------------------------------------------------
-# columnOf FILE NAME: column of NAME in the "# Time ..." header line
-columnOf()
-{
-    sed -n '/^# *Time /{p;q}' "$1" \
-  | awk -v n="$2" '{ for (i = 2; i <= NF; i++) if ($i == n) { print i - 1; exit } }'
-}
 
 checkSpring()
 {
@@ -144,24 +139,7 @@ checkSpring()
         "$caseDir/postProcessing/rigidBodyMotion/floatingObject2.dat" \
         "$attachmentA" "$attachmentB" > "$workDir/distance.dat" \
         || fail "$caseDir: attachment points from the body motion"
-    awk -v lengthCol="$(columnOf "$dat" length)" '
-    function abs(x) { return x < 0 ? -x : x }
-    FNR == 1 { f++ }
-    /^#/ { next }
-    f == 1 { nD++; tD[nD] = $1; D[nD] = $2; next }
-    {
-        n++
-        if (abs($1 - tD[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tD[n] > "/dev/stderr"; exit 1 }
-        L[n] = $lengthCol
-        e = abs(D[n] - L[n])
-        if (e > worst) { worst = e; tWorst = $1 }
-        if (n > 1 && abs(L[n] - L[n - 1]) > maxStep) maxStep = abs(L[n] - L[n - 1])
-    }
-    END {
-        if (n != nD) { print n " connector rows, " nD " body rows" > "/dev/stderr"; exit 1 }
-        if (worst > 0.1*maxStep) { printf("length differs from the attachment points by %.3g m at t = %s (tolerance %.3g m)\n", worst, tWorst, 0.1*maxStep) > "/dev/stderr"; exit 1 }
-        printf("length = distance between the attachment points within %.2g m (tolerance %.2g m)\n", worst, 0.1*maxStep)
-    }' "$workDir/distance.dat" "$dat" > "$workDir/check.out" \
+    checkLengthAgainstMotion "$workDir/distance.dat" "$dat" > "$workDir/check.out" \
         || fail "$dat: length against the body motion"
     pass "${caseDir#$workDir/} spring: $(cat "$workDir/check.out")"
 }
@@ -194,12 +172,8 @@ do
         "$attachmentA" "$attachmentB" > "$c/attachmentDistance.dat" \
         || fail "$c: attachment points from the body motion"
 done
-change()
-{
-    awk -v L0=$restLength '{ d = $2 - L0; if (d < 0) d = -d; if (d > m) m = d } END { printf("%.6g\n", m) }' "$1"
-}
-coupledChange=$(change "$serial/attachmentDistance.dat")
-uncoupledChange=$(change "$uncoupled/attachmentDistance.dat")
+coupledChange=$(largestChange "$serial/attachmentDistance.dat" $restLength)
+uncoupledChange=$(largestChange "$uncoupled/attachmentDistance.dat" $restLength)
 awk -v c="$coupledChange" -v u="$uncoupledChange" 'BEGIN { exit !(c <= 0.75*u) }' \
     || fail "distance between the attachment points changes by up to" \
         "$coupledChange m with the spring, $uncoupledChange m without:" \

@@ -127,24 +127,7 @@ do
         "$attachmentA" "$attachmentB" > "$c/attachmentDistance.dat" \
         || fail "$c: attachment points from the body motion"
 done
-awk -v lengthCol="$(columnOf "$dat" length)" '
-function abs(x) { return x < 0 ? -x : x }
-FNR == 1 { f++ }
-/^#/ { next }
-f == 1 { nD++; tD[nD] = $1; D[nD] = $2; next }
-{
-    n++
-    if (abs($1 - tD[n]) > 1e-5*(abs($1) + 1e-3)) { print "row " n ": connector time " $1 ", body time " tD[n] > "/dev/stderr"; exit 1 }
-    L[n] = $lengthCol
-    e = abs(D[n] - L[n])
-    if (e > worst) { worst = e; tWorst = $1 }
-    if (n > 1 && abs(L[n] - L[n - 1]) > maxStep) maxStep = abs(L[n] - L[n - 1])
-}
-END {
-    if (n != nD) { print n " connector rows, " nD " body rows" > "/dev/stderr"; exit 1 }
-    if (worst > 0.1*maxStep) { printf("length differs from the attachment points by %.3g m at t = %s (tolerance %.3g m)\n", worst, tWorst, 0.1*maxStep) > "/dev/stderr"; exit 1 }
-    printf("length = distance between the attachment points within %.2g m (tolerance %.2g m)\n", worst, 0.1*maxStep)
-}' "$damped/attachmentDistance.dat" "$dat" > "$workDir/check.out" \
+checkLengthAgainstMotion "$damped/attachmentDistance.dat" "$dat" > "$workDir/check.out" \
     || fail "$dat: length against the body motion"
 pass "damper: $(cat "$workDir/check.out")"
 
@@ -161,12 +144,8 @@ do
         "$uncoupledPitch deg without"
 done
 
-change()
-{
-    awk -v L0=$restLength '{ d = $2 - L0; if (d < 0) d = -d; if (d > m) m = d } END { printf("%.6g\n", m) }' "$1"
-}
-dampedChange=$(change "$damped/attachmentDistance.dat")
-uncoupledChange=$(change "$uncoupled/attachmentDistance.dat")
+dampedChange=$(largestChange "$damped/attachmentDistance.dat" $restLength)
+uncoupledChange=$(largestChange "$uncoupled/attachmentDistance.dat" $restLength)
 awk -v d="$dampedChange" -v u="$uncoupledChange" 'BEGIN { exit !(d <= 0.8*u) }' \
     || fail "distance between the attachment points changes by up to" \
         "$dampedChange m with the damper, $uncoupledChange m without:" \
