@@ -9,27 +9,6 @@ namespace lineFmu {
 
 using fmuExport::Shape;
 
-namespace {
-
-BodyInputs declareBody(fmuExport::VariableTable& t, const std::string& body,
-                       const std::vector<double>& r0)
-{
-    BodyInputs in;
-    in.r = t.input(body + ".r", Shape::vector3, "m",
-                   "position of " + body + "'s reference point, global frame", r0);
-    in.R = t.input(body + ".R", Shape::matrix3, "1",
-                   "orientation of " + body + ", body frame to global frame",
-                   {1, 0, 0, 0, 1, 0, 0, 0, 1});
-    in.v = t.input(body + ".v", Shape::vector3, "m/s",
-                   "velocity of " + body + "'s reference point, global frame",
-                   {0, 0, 0});
-    in.omega = t.input(body + ".omega", Shape::vector3, "rad/s",
-                       "angular velocity of " + body + ", global frame", {0, 0, 0});
-    return in;
-}
-
-} // namespace
-
 void declareAttachments(fmuExport::VariableTable& t, LineVariables& v)
 {
     v.A_p = t.parameter("A.p", Shape::vector3, "m",
@@ -44,8 +23,8 @@ void declareAttachments(fmuExport::VariableTable& t, LineVariables& v)
 void declareBodies(fmuExport::VariableTable& t, LineVariables& v,
                    const std::vector<double>& B_r0)
 {
-    v.A = declareBody(t, "A", {0, 0, 0});
-    v.B = declareBody(t, "B", B_r0);
+    v.A = fmuExport::declareBodyInputs(t, "A", {0, 0, 0});
+    v.B = fmuExport::declareBodyInputs(t, "B", B_r0);
 }
 
 void declareOutputs(fmuExport::VariableTable& t, LineVariables& v,
@@ -113,27 +92,6 @@ std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
 {
     a.insert(a.end(), b.begin(), b.end());
     return a;
-}
-
-connectors::Vector3 vector3(const double* values, Block block)
-{
-    return {values[block.first], values[block.first + 1],
-            values[block.first + 2]};
-}
-
-connectors::BodyKinematics kinematics(const double* values,
-                                      const BodyInputs& body)
-{
-    connectors::BodyKinematics k;
-    k.p_WBo_W = vector3(values, body.r);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            k.R_WB(i, j) = values[body.R.first + 3 * i + j];
-        }
-    }
-    k.v_WBo_W = vector3(values, body.v);
-    k.w_WB_W = vector3(values, body.omega);
-    return k;
 }
 
 void writeOutputs(double* values, const LineVariables& v,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "BodyInputs.hpp"
 #include "VariableTable.hpp"
 #include "common/Kinematics.hpp"
 
@@ -18,9 +19,7 @@ using fmuExport::Block;
 //- Points along the line in the shape outputs (fixed at build time)
 inline constexpr int shapePoints = 11;
 
-struct BodyInputs {
-    Block r, R, v, omega;
-};
+using fmuExport::BodyInputs;
 
 struct LineVariables {
     Block A_p, B_p;
@@ -60,9 +59,15 @@ std::vector<Block> positionBlocks(const LineVariables& v);
 std::vector<Block> velocityBlocks(const LineVariables& v);
 std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b);
 
-connectors::Vector3 vector3(const double* values, Block block);
-connectors::BodyKinematics kinematics(const double* values,
-                                      const BodyInputs& body);
+inline connectors::Vector3 vector3(const double* values, Block block)
+{
+    return fmuExport::blockVector3(values, block);
+}
+inline connectors::BodyKinematics kinematics(const double* values,
+                                             const BodyInputs& body)
+{
+    return fmuExport::bodyKinematics(values, body);
+}
 
 //- Writes every output; throws std::range_error naming the first
 //  non-finite one (and writes nothing then)

@@ -11,27 +11,6 @@ namespace {
 
 constexpr std::size_t outputCount = 17;
 
-ConnectorModel::BodyInputs declareBody(VariableTable& table,
-                                       const std::string& body,
-                                       const std::vector<double>& r0)
-{
-    ConnectorModel::BodyInputs in;
-    in.r = table.input(
-        body + ".r", Shape::vector3, "m",
-        "position of " + body + "'s reference point, global frame", r0);
-    in.R =
-        table.input(body + ".R", Shape::matrix3, "1",
-                    "orientation of " + body + ", body frame to global frame",
-                    {1, 0, 0, 0, 1, 0, 0, 0, 1});
-    in.v = table.input(
-        body + ".v", Shape::vector3, "m/s",
-        "velocity of " + body + "'s reference point, global frame", {0, 0, 0});
-    in.omega = table.input(body + ".omega", Shape::vector3, "rad/s",
-                           "angular velocity of " + body + ", global frame",
-                           {0, 0, 0});
-    return in;
-}
-
 } // namespace
 
 ConnectorModel::ConnectorModel(ModelIdentity identity)
@@ -46,8 +25,8 @@ ConnectorModel::ConnectorModel(ModelIdentity identity)
                             "reference point (a global point when B is the "
                             "world)",
                             {0, 0, 0});
-    A = declareBody(table(), "A", {0, 0, 0});
-    B = declareBody(table(), "B", {1, 0, 0});
+    A = declareBodyInputs(table(), "A", {0, 0, 0});
+    B = declareBodyInputs(table(), "B", {1, 0, 0});
 }
 
 void ConnectorModel::declareStartAtRest()
@@ -115,29 +94,13 @@ double ConnectorModel::scalar(const double* values, Block block)
 
 connectors::Vector3 ConnectorModel::vector3(const double* values, Block block)
 {
-    return {values[block.first], values[block.first + 1],
-            values[block.first + 2]};
-}
-
-connectors::BodyKinematics
-ConnectorModel::kinematics(const double* values, const BodyInputs& body) const
-{
-    connectors::BodyKinematics k;
-    k.p_WBo_W = vector3(values, body.r);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            k.R_WB(i, j) = values[body.R.first + 3 * i + j];
-        }
-    }
-    k.v_WBo_W = vector3(values, body.v);
-    k.w_WB_W = vector3(values, body.omega);
-    return k;
+    return blockVector3(values, block);
 }
 
 void ConnectorModel::computeOutputs(double* values) const
 {
     const connectors::ConnectorResult r =
-        evaluate(values, kinematics(values, A), kinematics(values, B));
+        evaluate(values, bodyKinematics(values, A), bodyKinematics(values, B));
     const double out[outputCount] = {
         r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
         r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "BodyInputs.hpp"
 #include "Model.hpp"
 #include "common/Kinematics.hpp"
 
@@ -14,10 +15,7 @@ namespace fmuExport {
 
 class ConnectorModel : public Model {
 public:
-    //- Value references of one body's inputs
-    struct BodyInputs {
-        Block r, R, v, omega;
-    };
+    using BodyInputs = fmuExport::BodyInputs;
 
     void computeOutputs(double* values) const final;
 
@@ -60,9 +58,6 @@ protected:
     BodyInputs A, B;
 
 private:
-    connectors::BodyKinematics kinematics(const double* values,
-                                          const BodyInputs& body) const;
-
     //- First value reference of the 17 outputs, in declaration order
     fmi2ValueReference firstOutput_ = 0;
 };

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "BodyInputs.hpp"
 #include "Model.hpp"
 #include "ModelDescription.hpp"
 #include "hinge/Hinge.hpp"
@@ -47,29 +48,6 @@ must be finite and &ge; 0, the axes non-zero (checked in
 fmi2ExitInitializationMode). See connectors/hinge/README.md for the
 stability limit of the penalty in an explicit coupling.</p>)";
 
-struct BodyInputs {
-    Block r, R, v, omega;
-};
-
-BodyInputs declareBody(fmuExport::VariableTable& table, const std::string& body)
-{
-    BodyInputs in;
-    in.r = table.input(
-        body + ".r", Shape::vector3, "m",
-        "position of " + body + "'s reference point, global frame", {0, 0, 0});
-    in.R =
-        table.input(body + ".R", Shape::matrix3, "1",
-                    "orientation of " + body + ", body frame to global frame",
-                    {1, 0, 0, 0, 1, 0, 0, 0, 1});
-    in.v = table.input(
-        body + ".v", Shape::vector3, "m/s",
-        "velocity of " + body + "'s reference point, global frame", {0, 0, 0});
-    in.omega = table.input(body + ".omega", Shape::vector3, "rad/s",
-                           "angular velocity of " + body + ", global frame",
-                           {0, 0, 0});
-    return in;
-}
-
 std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
 {
     a.insert(a.end(), b.begin(), b.end());
@@ -89,20 +67,17 @@ class HingeModel final : public fmuExport::Model {
 
   private:
     connectors::HingeParameters parameters(const double* values) const;
-    connectors::BodyKinematics kinematics(const double* values,
-                                          const BodyInputs& body) const;
     void declareOutputs();
 
     static connectors::Vector3 vector3(const double* values, Block block)
     {
-        return {values[block.first], values[block.first + 1],
-                values[block.first + 2]};
+        return fmuExport::blockVector3(values, block);
     }
 
     Block A_p_, B_p_, A_axis_, B_axis_, A_ref_, B_ref_;
     Block stiffness_, damping_, rotationalStiffness_, rotationalDamping_;
     Block ptoStiffness_, ptoDamping_, ptoRestAngle_;
-    BodyInputs A_, B_;
+    fmuExport::BodyInputs A_, B_;
     //- First output and the `angle` output (the unwrapping state)
     Block firstOutput_, angle_;
 };
@@ -155,8 +130,8 @@ HingeModel::HingeModel()
     ptoRestAngle_ =
         t.parameter("ptoRestAngle", Shape::scalar, "rad",
                     "angle at which the PTO spring is unloaded", {0.0});
-    A_ = declareBody(t, "A");
-    B_ = declareBody(t, "B");
+    A_ = fmuExport::declareBodyInputs(t, "A", {0, 0, 0});
+    B_ = fmuExport::declareBodyInputs(t, "B", {0, 0, 0});
     // Both bodies at the origin with the default hinge points: no load
     t.booleanConstant("inputsStartAtRest",
                       "the start values of inputs and parameters are a "
@@ -247,26 +222,12 @@ connectors::HingeParameters HingeModel::parameters(const double* values) const
     return p;
 }
 
-connectors::BodyKinematics HingeModel::kinematics(const double* values,
-                                                  const BodyInputs& body) const
-{
-    connectors::BodyKinematics k;
-    k.p_WBo_W = vector3(values, body.r);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            k.R_WB(i, j) = values[body.R.first + 3 * i + j];
-        }
-    }
-    k.v_WBo_W = vector3(values, body.v);
-    k.w_WB_W = vector3(values, body.omega);
-    return k;
-}
-
 void HingeModel::computeOutputs(double* values) const
 {
     const connectors::Hinge law(parameters(values));
     const connectors::HingeResult h = law.evaluate(
-        kinematics(values, A_), kinematics(values, B_), values[angle_.first]);
+        fmuExport::bodyKinematics(values, A_), fmuExport::bodyKinematics(values, B_),
+        values[angle_.first]);
     const connectors::ConnectorResult& r = h.loads;
     const double out[] = {
         r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
