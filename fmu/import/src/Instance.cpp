@@ -24,8 +24,8 @@ Instance::Instance(const Fmu& fmu, const std::string& instanceName, Logger logge
     Impl& d = *impl_;
     const std::string resources = fmu.resourceLocation();
     d.beginCall();
-    d.component = d.api().Instantiate(instanceName.c_str(), fmi2CoSimulation, d.fmu->description.guid.c_str(),
-                                      resources.c_str(), &d.callbacks, fmi2False, loggingOn ? fmi2True : fmi2False);
+    d.component = callFmu(d.api().Instantiate, instanceName.c_str(), fmi2CoSimulation, d.fmu->description.guid.c_str(),
+                          resources.c_str(), &d.callbacks, fmi2False, loggingOn ? fmi2True : fmi2False);
     if (!d.component)
     {
         std::string message = "fmi2Instantiate failed in FMU '" + d.fmu->path + "', instance '" + instanceName + "'";
@@ -43,8 +43,8 @@ const std::string& Instance::name() const { return impl_->name; }
 void Instance::setupExperiment(double startTime, bool stopTimeDefined, double stopTime)
 {
     impl_->beginCall();
-    impl_->check(impl_->api().SetupExperiment(impl_->component, fmi2False, 0, startTime,
-                                              stopTimeDefined ? fmi2True : fmi2False, stopTime),
+    impl_->check(callFmu(impl_->api().SetupExperiment, impl_->component, fmi2False, 0, startTime,
+                         stopTimeDefined ? fmi2True : fmi2False, stopTime),
                  "fmi2SetupExperiment", startTime);
     impl_->time = startTime;
 }
@@ -52,25 +52,25 @@ void Instance::setupExperiment(double startTime, bool stopTimeDefined, double st
 void Instance::enterInitializationMode()
 {
     impl_->beginCall();
-    impl_->check(impl_->api().EnterInitializationMode(impl_->component), "fmi2EnterInitializationMode");
+    impl_->check(callFmu(impl_->api().EnterInitializationMode, impl_->component), "fmi2EnterInitializationMode");
 }
 
 void Instance::exitInitializationMode()
 {
     impl_->beginCall();
-    impl_->check(impl_->api().ExitInitializationMode(impl_->component), "fmi2ExitInitializationMode");
+    impl_->check(callFmu(impl_->api().ExitInitializationMode, impl_->component), "fmi2ExitInitializationMode");
 }
 
 void Instance::terminate()
 {
     impl_->beginCall();
-    impl_->check(impl_->api().Terminate(impl_->component), "fmi2Terminate", impl_->time);
+    impl_->check(callFmu(impl_->api().Terminate, impl_->component), "fmi2Terminate", impl_->time);
 }
 
 void Instance::reset()
 {
     impl_->beginCall();
-    impl_->check(impl_->api().Reset(impl_->component), "fmi2Reset");
+    impl_->check(callFmu(impl_->api().Reset, impl_->component), "fmi2Reset");
     impl_->time = 0;
 }
 
@@ -78,7 +78,7 @@ void Instance::setReal(const std::vector<unsigned int>& vrs, const std::vector<d
 {
     checkSizes(vrs, values.size(), "fmi2SetReal");
     impl_->beginCall();
-    impl_->check(impl_->api().SetReal(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2SetReal",
+    impl_->check(callFmu(impl_->api().SetReal, impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2SetReal",
                  impl_->time);
 }
 
@@ -86,7 +86,7 @@ std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
 {
     std::vector<double> values(vrs.size());
     impl_->beginCall();
-    impl_->check(impl_->api().GetReal(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2GetReal",
+    impl_->check(callFmu(impl_->api().GetReal, impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2GetReal",
                  impl_->time);
     return values;
 }
@@ -95,16 +95,16 @@ void Instance::setInteger(const std::vector<unsigned int>& vrs, const std::vecto
 {
     checkSizes(vrs, values.size(), "fmi2SetInteger");
     impl_->beginCall();
-    impl_->check(impl_->api().SetInteger(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2SetInteger",
-                 impl_->time);
+    impl_->check(callFmu(impl_->api().SetInteger, impl_->component, vrs.data(), vrs.size(), values.data()),
+                 "fmi2SetInteger", impl_->time);
 }
 
 std::vector<int> Instance::getInteger(const std::vector<unsigned int>& vrs)
 {
     std::vector<int> values(vrs.size());
     impl_->beginCall();
-    impl_->check(impl_->api().GetInteger(impl_->component, vrs.data(), vrs.size(), values.data()), "fmi2GetInteger",
-                 impl_->time);
+    impl_->check(callFmu(impl_->api().GetInteger, impl_->component, vrs.data(), vrs.size(), values.data()),
+                 "fmi2GetInteger", impl_->time);
     return values;
 }
 
@@ -113,16 +113,16 @@ void Instance::setBoolean(const std::vector<unsigned int>& vrs, const std::vecto
     checkSizes(vrs, values.size(), "fmi2SetBoolean");
     const std::vector<fmi2Boolean> raw(values.begin(), values.end());
     impl_->beginCall();
-    impl_->check(impl_->api().SetBoolean(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2SetBoolean",
-                 impl_->time);
+    impl_->check(callFmu(impl_->api().SetBoolean, impl_->component, vrs.data(), vrs.size(), raw.data()),
+                 "fmi2SetBoolean", impl_->time);
 }
 
 std::vector<bool> Instance::getBoolean(const std::vector<unsigned int>& vrs)
 {
     std::vector<fmi2Boolean> raw(vrs.size());
     impl_->beginCall();
-    impl_->check(impl_->api().GetBoolean(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2GetBoolean",
-                 impl_->time);
+    impl_->check(callFmu(impl_->api().GetBoolean, impl_->component, vrs.data(), vrs.size(), raw.data()),
+                 "fmi2GetBoolean", impl_->time);
     return std::vector<bool>(raw.begin(), raw.end());
 }
 
@@ -132,7 +132,7 @@ void Instance::setString(const std::vector<unsigned int>& vrs, const std::vector
     std::vector<fmi2String> raw;
     for (const std::string& s : values) raw.push_back(s.c_str());
     impl_->beginCall();
-    impl_->check(impl_->api().SetString(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2SetString",
+    impl_->check(callFmu(impl_->api().SetString, impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2SetString",
                  impl_->time);
 }
 
@@ -140,7 +140,7 @@ std::vector<std::string> Instance::getString(const std::vector<unsigned int>& vr
 {
     std::vector<fmi2String> raw(vrs.size(), nullptr);
     impl_->beginCall();
-    impl_->check(impl_->api().GetString(impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2GetString",
+    impl_->check(callFmu(impl_->api().GetString, impl_->component, vrs.data(), vrs.size(), raw.data()), "fmi2GetString",
                  impl_->time);
     std::vector<std::string> values;
     for (const fmi2String s : raw) values.emplace_back(s ? s : "");
@@ -150,8 +150,8 @@ std::vector<std::string> Instance::getString(const std::vector<unsigned int>& vr
 void Instance::doStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint)
 {
     impl_->beginCall();
-    impl_->check(impl_->api().DoStep(impl_->component, currentTime, stepSize,
-                                     noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False),
+    impl_->check(callFmu(impl_->api().DoStep, impl_->component, currentTime, stepSize,
+                         noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False),
                  "fmi2DoStep", currentTime);
     impl_->time = currentTime + stepSize;
 }
@@ -160,7 +160,7 @@ Instance::State::State() : state_(nullptr), time_(std::numeric_limits<double>::q
 
 Instance::State::~State()
 {
-    if (owner_ && state_) owner_->api().FreeFMUstate(owner_->component, &state_);
+    if (owner_ && state_) callFmu(owner_->api().FreeFMUstate, owner_->component, &state_);
 }
 
 Instance::State::State(State&& other) noexcept
@@ -189,7 +189,7 @@ Instance::State Instance::getState()
     State s;
     fmi2FMUstate raw = nullptr;
     impl_->beginCall();
-    impl_->check(impl_->api().GetFMUstate(impl_->component, &raw), "fmi2GetFMUstate", impl_->time);
+    impl_->check(callFmu(impl_->api().GetFMUstate, impl_->component, &raw), "fmi2GetFMUstate", impl_->time);
     s.owner_ = impl_;
     s.state_ = raw;
     s.time_ = impl_->time;
@@ -202,7 +202,7 @@ void Instance::setState(const State& state)
         throw Error("fmi2SetFMUstate in FMU '" + impl_->fmu->path + "', instance '" + impl_->name +
                     "': the state is empty or belongs to another instance");
     impl_->beginCall();
-    impl_->check(impl_->api().SetFMUstate(impl_->component, state.state_), "fmi2SetFMUstate", impl_->time);
+    impl_->check(callFmu(impl_->api().SetFMUstate, impl_->component, state.state_), "fmi2SetFMUstate", impl_->time);
     if (!std::isnan(state.time_)) impl_->time = state.time_;
 }
 
@@ -213,11 +213,11 @@ std::vector<char> Instance::serializeState(const State& state)
                     "': the state is empty or belongs to another instance");
     std::size_t size = 0;
     impl_->beginCall();
-    impl_->check(impl_->api().SerializedFMUstateSize(impl_->component, state.state_, &size),
+    impl_->check(callFmu(impl_->api().SerializedFMUstateSize, impl_->component, state.state_, &size),
                  "fmi2SerializedFMUstateSize");
     std::vector<char> bytes(size);
     impl_->beginCall();
-    impl_->check(impl_->api().SerializeFMUstate(impl_->component, state.state_, bytes.data(), size),
+    impl_->check(callFmu(impl_->api().SerializeFMUstate, impl_->component, state.state_, bytes.data(), size),
                  "fmi2SerializeFMUstate");
     return bytes;
 }
@@ -227,7 +227,7 @@ Instance::State Instance::deserializeState(const std::vector<char>& bytes)
     State s;
     fmi2FMUstate raw = nullptr;
     impl_->beginCall();
-    impl_->check(impl_->api().DeSerializeFMUstate(impl_->component, bytes.data(), bytes.size(), &raw),
+    impl_->check(callFmu(impl_->api().DeSerializeFMUstate, impl_->component, bytes.data(), bytes.size(), &raw),
                  "fmi2DeSerializeFMUstate");
     s.owner_ = impl_;
     s.state_ = raw;

@@ -65,7 +65,7 @@ Instance::Impl::Impl(std::shared_ptr<Fmu::Impl> fmuImpl, const std::string& inst
 
 Instance::Impl::~Impl()
 {
-    if (component) api().FreeInstance(component);
+    if (component) callFmu(api().FreeInstance, component);
 }
 
 void Instance::Impl::receive(const std::string& instanceName, int status, const std::string& category,

@@ -4,6 +4,7 @@
 #define FMUIMPORT_INSTANCEIMPL_HPP
 
 #include "FmuImpl.hpp"
+#include "FpTraps.hpp"
 
 #include <memory>
 #include <limits>

@@ -1,5 +1,6 @@
 #include "Library.hpp"
 
+#include "FpTraps.hpp"
 #include "fmuImport/fmuImport.hpp"
 
 #include <dlfcn.h>
@@ -8,7 +9,7 @@ namespace fmuImport {
 
 Library::Library(const std::string& file, const std::string& fmuPath)
 {
-    handle_ = dlopen(file.c_str(), RTLD_LOCAL | RTLD_NOW);
+    handle_ = callFmu(dlopen, file.c_str(), RTLD_LOCAL | RTLD_NOW);  // runs the FMU's constructors
     if (!handle_)
     {
         const char* reason = dlerror();
@@ -22,11 +23,11 @@ Library::Library(const std::string& file, const std::string& fmuPath)
 #undef FMUIMPORT_RESOLVE
     if (!missing.empty())
     {
-        dlclose(handle_);
+        callFmu(dlclose, handle_);
         throw Error("FMU '" + fmuPath + "': its binary does not export " + missing);
     }
 }
 
-Library::~Library() { dlclose(handle_); }
+Library::~Library() { callFmu(dlclose, handle_); }  // runs the FMU's destructors
 
 }  // namespace fmuImport

@@ -1,0 +1,73 @@
+// Floating-point traps of the host (OpenFOAM's FOAM_SIGFPE) must not reach
+// into the FMU: an overflow the FMU reports as fmi2Error stays an Error, and
+// the caller's traps are as they were after the call.
+#include "zipFixtures.hpp"
+
+#include "fmuImport/fmuImport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cfenv>
+
+namespace {
+
+using fixtures::fmuPath;
+
+const int foamTraps = FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW;  // what FOAM_SIGFPE enables
+
+// Enables the traps for the lifetime of the object, as OpenFOAM does.
+class TrapsEnabled
+{
+public:
+    TrapsEnabled()
+    {
+        std::feclearexcept(FE_ALL_EXCEPT);
+        feenableexcept(foamTraps);
+    }
+    ~TrapsEnabled()
+    {
+        fedisableexcept(FE_ALL_EXCEPT);
+        std::feclearexcept(FE_ALL_EXCEPT);
+    }
+    TrapsEnabled(const TrapsEnabled&) = delete;
+    TrapsEnabled& operator=(const TrapsEnabled&) = delete;
+};
+
+TEST(FpTraps, OverflowInTheFmuIsItsErrorNotSigfpe)
+{
+    const fmuImport::Fmu fmu(fmuPath("overflowStep"));
+    const TrapsEnabled traps;
+    fmuImport::Instance instance(fmu, "overflow", [](const std::string&, int, const std::string&, const std::string&) {});
+    instance.setupExperiment(0.0);
+    instance.enterInitializationMode();
+    instance.exitInitializationMode();
+    try
+    {
+        instance.doStep(0.0, 0.1);
+        ADD_FAILURE() << "the overflowing step did not throw";
+    }
+    catch (const fmuImport::Error& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("y = gain * DBL_MAX overflowed (gain = 10)"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(fegetexcept(), foamTraps) << "the caller's trap mask changed";
+    EXPECT_EQ(std::fetestexcept(FE_OVERFLOW), 0) << "the FMU's overflow flag leaked to the caller";
+}
+
+TEST(FpTraps, CallersTrapsAndFlagsSurviveEveryCall)
+{
+    const TrapsEnabled traps;
+    {
+        const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
+        fmuImport::Instance lag(fmu, "lag1");
+        lag.setupExperiment(0.0);
+        lag.enterInitializationMode();
+        lag.exitInitializationMode();
+        lag.doStep(0.0, 0.1);
+        EXPECT_EQ(fegetexcept(), foamTraps);
+    }
+    EXPECT_EQ(fegetexcept(), foamTraps) << "freeing the instance or closing the FMU changed the trap mask";
+}
+
+}  // namespace
