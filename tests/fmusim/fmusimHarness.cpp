@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -55,12 +56,23 @@ std::string scratch(const std::string& name)
     return (dir / name).string();
 }
 
-Result fmusim(const std::string& arguments)
+Result fmusim(const std::string& arguments, double limitSeconds)
 {
     const std::string out = scratch("stdout.txt"), err = scratch("stderr.txt");
-    const std::string command = std::string(FMUSIM) + " " + arguments + " > " + out + " 2> " + err;
+    // exec: fmusim replaces the shell, so its exit status is the shell's.
+    const std::string command = "ulimit -c 0; exec timeout -s KILL " + std::to_string(limitSeconds) + " " +
+                                std::string(FMUSIM) + " " + arguments + " > " + out + " 2> " + err;
+    const auto start = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // timeout(1) reports a child killed by signal N as killed by N itself,
+    // and a shell as exit status 128 + N.
+    if (WIFSIGNALED(status))
+        r.signal = WTERMSIG(status);
+    else if (r.exitCode > 128)
+        r.signal = r.exitCode - 128;
+    return r;
 }
 
 std::string fixture(const std::string& name) { return std::string(FIXTURE_FMU_DIR) + "/" + name + ".fmu"; }

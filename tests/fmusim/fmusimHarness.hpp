@@ -10,12 +10,15 @@ namespace harness {
 
 struct Result
 {
-    int exitCode;
+    int exitCode;  // -1 when fmusim did not exit but was killed by a signal
     std::string out, err;
+    int signal = 0;      // the signal that killed fmusim, else 0
+    double seconds = 0;  // wall-clock time of the run
 };
 
-// Runs `fmusim <arguments>` through the shell (quote arguments yourself).
-Result fmusim(const std::string& arguments);
+// Runs `fmusim <arguments>` through the shell (quote arguments yourself),
+// without core dumps; killed (SIGKILL) after limitSeconds.
+Result fmusim(const std::string& arguments, double limitSeconds = 600);
 
 // <build>/tests/fixture-fmus/<name>.fmu
 std::string fixture(const std::string& name);
