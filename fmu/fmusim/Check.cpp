@@ -139,6 +139,10 @@ int checkCommand(const std::vector<std::string>& arguments)
     options.verbose = args.flag("verbose");
 
     const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
+    // An FMU that cannot be instantiated (a GUID mismatch, a failing
+    // fmi2Instantiate) is a load error, exit code 3 as for run and twobody,
+    // not a failed check: there is nothing to check.
+    instantiate(fmu, "check", options.verbose);
     const Connector connector(fmu);
 
     int passed = 0, failed = 0;

@@ -61,6 +61,12 @@ TEST(FmusimCheck, NonConnectorFailsTheInterface)
 TEST(FmusimCheck, Errors)
 {
     EXPECT_EQ(fmusim("check " + fixture("notAZip")).exitCode, 3);
+    // Cannot be instantiated: a load error (3), as for run, not a failed check (1).
+    const harness::Result guid = fmusim("check " + fixture("guidMismatch"));
+    EXPECT_EQ(guid.exitCode, 3) << guid.out << guid.err;
+    EXPECT_TRUE(contains(guid.err, "fmusim: cannot load the FMU: fmi2Instantiate failed in FMU '" +
+                                       fixture("guidMismatch") + "', instance 'check'"))
+        << guid.err;
     EXPECT_EQ(fmusim("check " + fixture("testSpring") + " --seed -1").exitCode, 2);
     EXPECT_EQ(fmusim("check").exitCode, 2);
 }
