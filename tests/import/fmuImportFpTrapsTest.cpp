@@ -37,7 +37,8 @@ TEST(FpTraps, OverflowInTheFmuIsItsErrorNotSigfpe)
 {
     const fmuImport::Fmu fmu(fmuPath("overflowStep"));
     const TrapsEnabled traps;
-    fmuImport::Instance instance(fmu, "overflow", [](const std::string&, int, const std::string&, const std::string&) {});
+    fmuImport::Instance instance(fmu, "overflow",
+                                 [](const std::string&, int, const std::string&, const std::string&) {});
     instance.setupExperiment(0.0);
     instance.enterInitializationMode();
     instance.exitInitializationMode();

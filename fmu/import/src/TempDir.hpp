@@ -1,7 +1,10 @@
-// A private temporary directory (mkdtemp), removed with its contents when
-// the object is destroyed.
+// A private temporary directory (mkdtemp: $TMPDIR/fmuImport-<pid>-XXXXXX),
+// removed with its contents when the object is destroyed, or, when the
+// process ends without destroying it, by UnpackRegistry.
 #ifndef FMUIMPORT_TEMPDIR_HPP
 #define FMUIMPORT_TEMPDIR_HPP
+
+#include "UnpackRegistry.hpp"
 
 #include <filesystem>
 
@@ -19,6 +22,7 @@ public:
 
 private:
     std::filesystem::path path_;
+    UnpackRegistry::Slot* slot_ = nullptr;
 };
 
 }  // namespace fmuImport

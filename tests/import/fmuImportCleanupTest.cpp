@@ -1,0 +1,118 @@
+// Unpack directories are removed on the paths that skip destructors: exit()
+// (OpenFOAM's FatalError), fatal signals and termination requests, with
+// handlers of the host installed before or after the importer's. Each case
+// runs cleanupHelper.cpp as a child process with TMPDIR set to an empty
+// directory.
+#include "zipFixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+struct Outcome
+{
+    bool signalled = false;
+    int code = 0;        // exit status, or the signal that ended the child
+    std::string marker;  // what the child's handler wrote
+    std::vector<std::string> leftovers;
+};
+
+Outcome runHelper(const std::string& how)
+{
+    fixtures::PrivateTmpDir tmp;  // sets TMPDIR, which the child inherits
+    const std::string marker = (tmp.path().parent_path() / (tmp.path().filename().string() + ".marker")).string();
+    const std::string fmu = fixtures::fmuPath("firstOrderLag");
+    std::vector<std::string> args = {CLEANUP_HELPER, fmu, how, marker};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+
+    pid_t pid = 0;
+    if (posix_spawn(&pid, CLEANUP_HELPER, nullptr, nullptr, argv.data(), environ) != 0)
+        throw std::runtime_error(std::string("cannot start ") + CLEANUP_HELPER);
+    int status = 0;
+    waitpid(pid, &status, 0);
+
+    Outcome outcome;
+    outcome.signalled = WIFSIGNALED(status);
+    outcome.code = outcome.signalled ? WTERMSIG(status) : WEXITSTATUS(status);
+    std::ifstream in(marker);
+    std::stringstream text;
+    text << in.rdbuf();
+    outcome.marker = text.str();
+    std::remove(marker.c_str());
+    outcome.leftovers = tmp.contents();
+    return outcome;
+}
+
+std::string describe(const Outcome& o)
+{
+    std::string s = o.signalled ? "killed by signal " + std::to_string(o.code) + " (" + strsignal(o.code) + ")"
+                                : "exit status " + std::to_string(o.code);
+    for (const std::string& name : o.leftovers) s += ", left " + name;
+    return s;
+}
+
+void expectSignalled(const Outcome& o, int sig)
+{
+    EXPECT_TRUE(o.signalled && o.code == sig) << describe(o);
+    EXPECT_TRUE(o.leftovers.empty()) << describe(o);
+}
+
+TEST(UnpackCleanup, ExitRemovesTheUnpackDirectory)
+{
+    const Outcome o = runHelper("exit");
+    EXPECT_TRUE(!o.signalled && o.code == 1) << describe(o);
+    EXPECT_TRUE(o.leftovers.empty()) << describe(o);
+}
+
+TEST(UnpackCleanup, SigtermRemovesTheUnpackDirectory) { expectSignalled(runHelper("term"), SIGTERM); }
+
+TEST(UnpackCleanup, SigintRemovesTheUnpackDirectory) { expectSignalled(runHelper("int"), SIGINT); }
+
+TEST(UnpackCleanup, SegmentationFaultRemovesTheUnpackDirectory) { expectSignalled(runHelper("segv"), SIGSEGV); }
+
+TEST(UnpackCleanup, AbortRemovesTheUnpackDirectory) { expectSignalled(runHelper("abort"), SIGABRT); }
+
+TEST(UnpackCleanup, HostHandlerInstalledBeforeStillRuns)
+{
+    const Outcome o = runHelper("term-before");
+    expectSignalled(o, SIGTERM);
+    EXPECT_EQ(o.marker, "handler ran\n");
+}
+
+TEST(UnpackCleanup, HostHandlerInstalledAfterStillRuns)
+{
+    const Outcome o = runHelper("term-after");
+    expectSignalled(o, SIGTERM);
+    EXPECT_EQ(o.marker, "handler ran\n");
+}
+
+TEST(UnpackCleanup, HostSegvHandlerInstalledAfterStillRuns)
+{
+    const Outcome o = runHelper("segv-after");
+    expectSignalled(o, SIGSEGV);
+    EXPECT_EQ(o.marker, "handler ran\n");
+}
+
+TEST(UnpackCleanup, HostHandlerThatGoesOnKeepsTheFilesUntilTheEnd)
+{
+    const Outcome o = runHelper("term-graceful");
+    EXPECT_TRUE(!o.signalled && o.code == 0) << describe(o);
+    EXPECT_EQ(o.marker, "handler ran\n");
+    EXPECT_TRUE(o.leftovers.empty()) << describe(o);
+}
+
+}  // namespace
