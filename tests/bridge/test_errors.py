@@ -11,7 +11,7 @@ import tempfile
 from bridgecase import Case, fmu_path, rigid_body, vec
 
 
-def model(fmu, parameters, body_b=""):
+def model(fmu, parameters, body_b="", body="hull", extra=""):
     return f"""
     solver {{ type symplectic; }}
     bodies
@@ -23,10 +23,11 @@ def model(fmu, parameters, body_b=""):
         mooring
         {{
             type fmuConnector;
-            body hull;
+            body {body};
             {body_b}
             fmu "{fmu}";
             parameters {{ {parameters} }}
+            {extra}
         }}
     }}
 """
@@ -48,7 +49,39 @@ def main():
             model(spring, GOOD + " stiffnes 3;"),
             ["mooring", "stiffnes", "not declared"],
         ),
-        "wrong vector size": (model(spring, GOOD.replace("A.p (0.0 0.0 0.0)", "A.p (1 2)")), ["A.p", "expects 3"]),
+        "wrong vector size": (
+            model(spring, GOOD.replace("A.p (0.0 0.0 0.0)", "A.p (1 2)")),
+            ["mooring", "'A.p' expects a list of 3 numbers", "got '( 1 2 )'"],
+        ),
+        "scalar for a vector": (
+            model(spring, GOOD.replace("A.p (0.0 0.0 0.0)", "A.p 5")),
+            ["mooring", "'A.p' expects a list of 3 numbers", "got '5'"],
+        ),
+        "list for a scalar": (
+            model(spring, GOOD.replace("stiffness 10", "stiffness (10 2)")),
+            ["mooring", "'stiffness' expects one number"],
+        ),
+        "vector and element": (
+            model(spring, GOOD + " A.p[2] 1;"),
+            ["mooring", "entries 'A.p' and 'A.p[2]' both set the FMU parameter A.p[2]"],
+        ),
+        "misspelt parameters": (
+            model(spring, GOOD, extra="paramters { stiffness 3; }"),
+            ["mooring", "unknown entry 'paramters'", "bodyB", "parameters"],
+        ),
+        "misspelt bodyB": (
+            model(spring, GOOD, extra="bodyb hull;"),
+            ["mooring", "unknown entry 'bodyb'"],
+        ),
+        "parameters not a dictionary": (
+            model(spring, GOOD, extra="parameters 5;").replace(f"parameters {{ {GOOD} }}", ""),
+            ["mooring", "entry 'parameters' must be a dictionary"],
+        ),
+        "unknown restart mode": (
+            model(spring, GOOD, extra="restart later;"),
+            ["restart", "later", "exact", "fresh"],
+        ),
+        "unknown body": (model(spring, GOOD, body="barge"), ["restraint mooring", "barge", "hull"]),
         "unknown bodyB": (model(spring, GOOD, "bodyB barge;"), ["mooring", "barge", "hull"]),
         "negative stiffness": (model(spring, GOOD.replace("stiffness 10", "stiffness -10")), ["mooring", "stiffness"]),
     }

@@ -8,10 +8,61 @@ connector's output series must continue where it left off.
 """
 import os
 import shutil
+import subprocess
 import sys
 
 from bridgecase import Case
 from test_two_bodies import model
+
+
+def restart_from_half(full, name, edit=lambda text: text, keep_state=True):
+    """A copy of the case restarted from 0.5 s, its model edited by edit and
+    the connector's state file removed unless keep_state; returns (case,
+    rigidBodySim's exit code, log)."""
+    case = Case(name, edit(model("symplectic")), 1.0, 0.005, write_interval=0.5)
+    shutil.copytree(os.path.join(full.dir, "0.5"), os.path.join(case.dir, "0.5"))
+    if not keep_state:
+        os.remove(os.path.join(case.dir, "0.5", "uniform", "fmuConnectors", "spring"))
+    case.set_time(0.5, 1.0, 0.005, 0.5)
+    result = subprocess.run(
+        ["rigidBodySim", "-case", case.dir, "-nIter", "2"],
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+    )
+    return case, result.returncode, result.stdout
+
+
+def restart_variants(full):
+    """(name, ok, detail) of restarts that must not pass silently."""
+    results = []
+
+    # The bodies continue from 0.5 s; a connector starting anew would not
+    case, code, log = restart_from_half(full, "restart.missing", keep_state=False)
+    ok = code != 0 and all(
+        s in log for s in ("restraint spring", "connector's state", "is missing", "restart fresh")
+    )
+    results.append(("missing state file is fatal", ok, f"exit code {code}"))
+    case.cleanup()
+
+    # ... unless the restraint asks for it
+    def fresh(text):
+        return text.replace("type fmuConnector;", "type fmuConnector; restart fresh;")
+
+    case, code, log = restart_from_half(full, "restart.fresh", fresh, keep_state=False)
+    rows = case.connector("spring", start="0.5")["Time"] if code == 0 else []
+    results.append(("restart fresh runs without a state", code == 0 and len(rows) == 100,
+                    f"exit code {code}, {len(rows)} rows"))
+    case.cleanup()
+
+    # A changed parameter cannot reach an FMU whose state brings the old
+    # one back: the user is told which, with both values
+    def stiffer(text):
+        return text.replace("stiffness 50.0;", "stiffness 80.0;")
+
+    case, code, log = restart_from_half(full, "restart.changed", stiffer)
+    ok = code == 0 and "parameters differ from the state" in log and "stiffness 80" in log and "50" in log
+    results.append(("changed parameter reported", ok, f"exit code {code}"))
+    case.cleanup()
+    return results
 
 
 def main():
@@ -68,6 +119,11 @@ def main():
         print(f"FAIL connector output after restart: max difference {diff:.2e}")
     else:
         print(f"PASS connector output after restart: {n} rows, max difference {diff:.2e} N")
+
+    for name, ok, detail in restart_variants(case):
+        checks += 1
+        failures += 0 if ok else 1
+        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
 
     case.cleanup()
     restarted.cleanup()

@@ -29,6 +29,45 @@ std::string Foam::connectorFmu::where() const
 }
 
 
+void Foam::connectorFmu::restorePending
+(
+    const kinematics& A,
+    const kinematics& B
+)
+{
+    if (restoreBytes_.empty())
+    {
+        return;
+    }
+
+    try
+    {
+        instance_->setState(instance_->deserializeState(restoreBytes_));
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalErrorInFunction
+            << "restraint " << restraintName_ << ": cannot restore the"
+            << " state written at t = " << restoreTime_ << " in "
+            << restoreSource_ << ": " << err.what() << exit(FatalError);
+    }
+
+    // The state carries the inputs it was written with
+    setInputs(A_, A);
+    if (declaresBodyB())
+    {
+        setInputs(B_, B);
+    }
+
+    Info<< "Connector " << restraintName_ << ": FMU state restored at t = "
+        << restoreTime_ << " from " << restoreSource_ << endl;
+
+    checkRestoredParameters();
+
+    restoreBytes_.clear();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::connectorFmu::connectorFmu
@@ -46,7 +85,10 @@ Foam::connectorFmu::connectorFmu
     initialised_(false),
     stepStartTime_(startTime),
     stepEndTime_(startTime - 1),
-    warnedNoRollback_(false)
+    foamStepTime_(startTime),
+    warnedNoRollback_(false),
+    parameters_(parameters),
+    restoreTime_(startTime)
 {
     file_.expand();
 
@@ -139,7 +181,7 @@ void Foam::connectorFmu::evaluate
 {
     try
     {
-        const bool newStep = (deltaT > 0 && t != stepEndTime_);
+        const bool newStep = (deltaT > 0 && t != foamStepTime_);
 
         if (newStep && initialised_ && stepEndTime_ >= stepStartTime_)
         {
@@ -161,6 +203,7 @@ void Foam::connectorFmu::evaluate
         {
             instance_->exitInitializationMode();
             initialised_ = true;
+            restorePending(A, B);
             if (newStep && canRollback_)
             {
                 stepStartState_ = instance_->getState();
@@ -171,8 +214,9 @@ void Foam::connectorFmu::evaluate
         {
             if (newStep)
             {
-                stepEndTime_ = t;
-                instance_->doStep(stepStartTime_, t - stepStartTime_);
+                foamStepTime_ = t;
+                stepEndTime_ = stepStartTime_ + deltaT;
+                instance_->doStep(stepStartTime_, deltaT);
             }
             else if (canRollback_)
             {
@@ -182,7 +226,7 @@ void Foam::connectorFmu::evaluate
                 {
                     setInputs(B_, B);
                 }
-                instance_->doStep(stepStartTime_, t - stepStartTime_);
+                instance_->doStep(stepStartTime_, deltaT);
             }
             else if (!warnedNoRollback_)
             {
@@ -232,27 +276,21 @@ std::vector<char> Foam::connectorFmu::serialize(scalar& time) const
 void Foam::connectorFmu::deserialize
 (
     const std::vector<char>& bytes,
-    const scalar time
+    const scalar time,
+    const fileName& source
 )
 {
-    try
-    {
-        if (!initialised_)
-        {
-            instance_->exitInitializationMode();
-            initialised_ = true;
-        }
-        instance_->setState(instance_->deserializeState(bytes));
-        stepStartTime_ = time;
-        stepEndTime_ = time - 1;
-    }
-    catch (const fmuImport::Error& err)
+    if (initialised_)
     {
         FatalErrorInFunction
-            << "restraint " << restraintName_ << ": cannot restore the"
-            << " state written at t = " << time << ": " << err.what()
-            << exit(FatalError);
+            << where().c_str() << "a restart state can only be restored"
+            << " before the first evaluation" << abort(FatalError);
     }
+    restoreBytes_ = bytes;
+    restoreTime_ = time;
+    restoreSource_ = source;
+    stepStartTime_ = time;
+    stepEndTime_ = time - 1;
 }
 
 

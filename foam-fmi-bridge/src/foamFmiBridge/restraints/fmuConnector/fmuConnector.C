@@ -11,7 +11,7 @@ License
 #include "rigidBodyModel.H"
 #include "jointBody.H"
 #include "Time.H"
-#include "OSspecific.H"
+#include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -33,6 +33,76 @@ namespace restraints
 }
 }
 }
+
+
+const Foam::Enum
+<
+    Foam::RBD::restraints::fmuConnector::restartMode
+>
+Foam::RBD::restraints::fmuConnector::restartModeNames
+({
+    { restartMode::exact, "exact" },
+    { restartMode::fresh, "fresh" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The model's bodies that a restraint can name: without the bodies made
+//  for composite joints
+Foam::wordList restrainableBodies(const Foam::RBD::rigidBodyModel& model)
+{
+    Foam::wordList names;
+    for (Foam::label i = 1; i < model.nBodies(); ++i)
+    {
+        if (!Foam::isType<Foam::RBD::jointBody>(model.bodies()[i]))
+        {
+            names.append(model.name(i));
+        }
+    }
+    return names;
+}
+
+
+//- The restraint dictionary, once its entry 'key' is known to name a body
+//  of the model (the base class would fail without naming the restraint)
+const Foam::dictionary& checkBody
+(
+    const Foam::word& restraintName,
+    const Foam::dictionary& dict,
+    const Foam::RBD::rigidBodyModel& model,
+    const Foam::word& key
+)
+{
+    using namespace Foam;
+
+    const wordList bodies(restrainableBodies(model));
+    const word body(dict.getOrDefault<word>(key, word::null));
+
+    if (!dict.found(key, keyType::LITERAL) || !bodies.found(body))
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << restraintName << ": entry " << key;
+        if (dict.found(key, keyType::LITERAL))
+        {
+            FatalIOError
+                << " names " << body << ", which is not a body of the model";
+        }
+        else
+        {
+            FatalIOError<< " is missing";
+        }
+        FatalIOError
+            << "; the model's bodies are " << bodies << exit(FatalIOError);
+    }
+
+    return dict;
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -73,42 +143,37 @@ void Foam::RBD::restraints::fmuConnector::load()
             << exit(FatalIOError);
     }
 
-    stateIO_.reset(new fmuConnectorState(name_, runTime, *fmu_));
-
-    const fileName dir
+    stateIO_.reset
     (
-        runTime.globalPath()/"postProcessing"/"fmuConnectors"
-       /runTime.timeName()
+        new fmuConnectorState
+        (
+            name_,
+            runTime,
+            *fmu_,
+            restart_ == restartMode::fresh,
+            coeffs_
+        )
     );
-    mkDir(dir);
-    outputFile_.reset(new OFstream(dir/(name_ + ".dat")));
 
-    OFstream& os = *outputFile_;
-    os  << "# Connector " << name_ << ": FMU " << file << ", body A "
+    if (!fmu_->canSerialize() && restart_ != restartMode::fresh)
+    {
+        WarningInFunction
+            << "restraint " << name_ << ": FMU " << file << " cannot"
+            << " serialize its state, so none is written for restarts; a"
+            << " run restarted from a written time needs 'restart fresh;'"
+            << " in this restraint" << endl;
+    }
+
+    OStringStream description;
+    description
+        << "Connector " << name_ << ": FMU " << file << ", body A "
         << model_.name(bodyID_) << ", body B "
-        << (bodyBName_.empty() ? word("world") : bodyBName_) << nl
-        << "# Time";
-    for (const word& output : fmu_->outputNames())
-    {
-        os  << ' ' << output;
-    }
-    os  << endl;
-}
+        << (bodyBName_.empty() ? word("world") : bodyBName_);
 
-
-void Foam::RBD::restraints::fmuConnector::writeOutputs() const
-{
-    if (outputFile_.valid() && pendingTime_ > -GREAT)
-    {
-        OFstream& os = *outputFile_;
-        os  << pendingTime_;
-        for (const scalar value : fmu_->outputs())
-        {
-            os  << ' ' << value;
-        }
-        os  << endl;
-        pendingTime_ = -GREAT;
-    }
+    output_.reset
+    (
+        new fmuConnectorOutput(name_, runTime, *fmu_, description.str())
+    );
 }
 
 
@@ -121,10 +186,10 @@ Foam::RBD::restraints::fmuConnector::fmuConnector
     const rigidBodyModel& model
 )
 :
-    restraint(name, dict, model),
+    restraint(name, checkBody(name, dict, model, "body"), model),
     bodyBID_(-1),
     bodyBIndex_(-1),
-    pendingTime_(-GREAT)
+    restart_(restartMode::exact)
 {
     read(dict);
 
@@ -138,9 +203,7 @@ Foam::RBD::restraints::fmuConnector::fmuConnector
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
 Foam::RBD::restraints::fmuConnector::~fmuConnector()
-{
-    writeOutputs();
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -165,17 +228,11 @@ void Foam::RBD::restraints::fmuConnector::restrain
       : bodyKinematics(bodyBID_)
     );
 
-    // A new time step: the outputs of the previous one are final
-    if (state.deltaT() > 0 && state.t() != pendingTime_)
-    {
-        writeOutputs();
-    }
-
     fmu_->evaluate(state.t(), state.deltaT(), A, B);
 
     if (state.deltaT() > 0)
     {
-        pendingTime_ = state.t();
+        output_->record(state.t());
     }
 
     // OpenFOAM's spatial forces carry the moment about the global origin
@@ -216,32 +273,44 @@ bool Foam::RBD::restraints::fmuConnector::read
 {
     restraint::read(dict);
 
+    // A misspelt keyword would silently leave an FMU default in place or
+    // connect the body to the world instead of bodyB
+    static const wordList keywords
+    ({
+        "type", "body", "bodyB", "fmu", "parameters", "report", "restart"
+    });
+    for (const entry& e : coeffs_)
+    {
+        if (!keywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "restraint " << name_ << ": unknown entry '"
+                << e.keyword() << "'; the entries of an fmuConnector"
+                << " restraint are " << keywords << exit(FatalIOError);
+        }
+    }
+
     coeffs_.readEntry("fmu", fmuFile_);
+
+    if (coeffs_.found("parameters") && !coeffs_.isDict("parameters"))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "restraint " << name_ << ": entry 'parameters' must be a"
+            << " dictionary of the FMU's parameters, e.g."
+            << " parameters { stiffness 100; }" << exit(FatalIOError);
+    }
     parameters_ = coeffs_.subOrEmptyDict("parameters");
     report_ = coeffs_.lookupOrDefault<Switch>("report", false);
+    restart_ =
+        restartModeNames.getOrDefault("restart", coeffs_, restartMode::exact);
 
     bodyBName_ = coeffs_.lookupOrDefault<word>("bodyB", word::null);
     bodyBID_ = -1;
     bodyBIndex_ = -1;
 
-    if (!bodyBName_.empty())
+    if (coeffs_.found("bodyB"))
     {
-        // The model's bodies, without those made for composite joints
-        wordList bodyNames;
-        for (label i = 1; i < model_.nBodies(); ++i)
-        {
-            if (!isType<jointBody>(model_.bodies()[i]))
-            {
-                bodyNames.append(model_.name(i));
-            }
-        }
-        if (!bodyNames.found(bodyBName_))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "restraint " << name_ << ": bodyB " << bodyBName_
-                << " is not a body of the model; its bodies are "
-                << bodyNames << exit(FatalIOError);
-        }
+        checkBody(name_, coeffs_, model_, "bodyB");
         bodyBID_ = model_.bodyID(bodyBName_);
         bodyBIndex_ = model_.master(bodyBID_);
 
@@ -270,6 +339,7 @@ void Foam::RBD::restraints::fmuConnector::write
         os.writeEntry("bodyB", bodyBName_);
     }
     os.writeEntry("report", report_);
+    os.writeEntry("restart", restartModeNames[restart_]);
     os.beginBlock("parameters");
     parameters_.write(os, false);
     os.endBlock();

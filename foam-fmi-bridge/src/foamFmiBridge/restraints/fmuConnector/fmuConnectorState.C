@@ -60,7 +60,9 @@ Foam::fmuConnectorState::fmuConnectorState
 (
     const word& name,
     const objectRegistry& time,
-    connectorFmu& fmu
+    connectorFmu& fmu,
+    const bool fresh,
+    const dictionary& restraintDict
 )
 :
     regIOobject
@@ -77,10 +79,54 @@ Foam::fmuConnectorState::fmuConnectorState
     ),
     fmu_(fmu)
 {
-    if (headerOk())
+    const Time& runTime = time.time();
+    const fileName bodiesState
+    (
+        runTime.timePath()/"uniform"/"rigidBodyMotionState"
+    );
+    const bool stateFile = headerOk();
+
+    if (fresh)
+    {
+        if (stateFile)
+        {
+            Info<< "Connector " << name << ": restart fresh: the FMU starts"
+                << " from its initial state, " << objectPath()
+                << " is not read" << endl;
+        }
+        return;
+    }
+
+    if (stateFile && !fmu_.canSerialize())
+    {
+        FatalIOErrorInFunction(restraintDict)
+            << "restraint " << name << ": " << objectPath() << " holds a"
+            << " connector state, but FMU " << fmu_.file() << " cannot"
+            << " restore a serialized state (canGetAndSetFMUstate and"
+            << " canSerializeFMUstate must both be true). Set 'restart"
+            << " fresh;' in the restraint to start the connector from its"
+            << " initial state" << exit(FatalIOError);
+    }
+
+    if (stateFile)
     {
         readData(readStream(typeName));
         close();
+    }
+    else if (isFile(bodiesState))
+    {
+        FatalIOErrorInFunction(restraintDict)
+            << "restraint " << name << ": the run starts from t = "
+            << runTime.timeName() << ", written by an earlier run ("
+            << bodiesState << "), but the connector's state "
+            << objectPath() << " is missing"
+            << (
+                   fmu_.canSerialize() ? ""
+                 : " (FMU cannot serialize its state, so none was written)"
+               )
+            << ". The connector would start from its initial state while"
+            << " the bodies continue. Set 'restart fresh;' in the restraint"
+            << " to accept that" << exit(FatalIOError);
     }
 }
 
@@ -120,10 +166,7 @@ bool Foam::fmuConnectorState::readData(Istream& is)
         bytes[i] = static_cast<char>(16*hi + lo);
     }
 
-    fmu_.deserialize(bytes, time);
-
-    Info<< "Connector " << name() << ": FMU state restored at t = " << time
-        << " from " << objectPath() << endl;
+    fmu_.deserialize(bytes, time, objectPath());
 
     return true;
 }
@@ -135,7 +178,11 @@ bool Foam::fmuConnectorState::writeData(Ostream& os) const
     const std::vector<char> bytes = fmu_.serialize(time);
 
     os.writeEntry("fmu", fmu_.file());
+
+    // Every digit of the FMU's time: a restart continues its time line
+    const label precision = os.precision(17);
     os.writeEntry("time", time);
+    os.precision(precision);
     const string hex(toHex(bytes));
     List<string> lines((hex.size() + hexLine - 1)/hexLine);
     forAll(lines, i)

@@ -1,0 +1,208 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fmuConnectorOutput.H"
+#include "Time.H"
+#include "OSspecific.H"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <vector>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(fmuConnectorOutput, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Buffered bytes that make the buffer go to the file between write times
+const std::string::size_type bufferLimit = 1 << 16;
+
+//- The outputs that exist: a FatalError ends the process with exit(), which
+//  destroys no restraint, so an exit handler writes their completed rows.
+//  Never destroyed, as the handler may run after static destructors.
+std::vector<Foam::fmuConnectorOutput*>& liveOutputs()
+{
+    static auto* live = new std::vector<Foam::fmuConnectorOutput*>;
+    return *live;
+}
+
+void writeCompletedRows()
+{
+    for (Foam::fmuConnectorOutput* output : liveOutputs())
+    {
+        output->flush(false);
+    }
+}
+
+//- Append the shortest decimal form that reads back as the same double
+void appendNumber(std::string& s, const double x)
+{
+    char digits[32];
+    const std::to_chars_result r =
+        std::to_chars(digits, digits + sizeof(digits), x);
+    s.append(digits, r.ptr);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fmuConnectorOutput::commit()
+{
+    if (!pending_)
+    {
+        return;
+    }
+
+    appendNumber(buffer_, pendingTime_);
+    for (const scalar value : pendingValues_)
+    {
+        buffer_ += ' ';
+        appendNumber(buffer_, value);
+    }
+    buffer_ += '\n';
+    pending_ = false;
+
+    if (buffer_.size() > bufferLimit)
+    {
+        writeBuffer();
+    }
+}
+
+
+void Foam::fmuConnectorOutput::writeBuffer()
+{
+    file_.write(buffer_.data(), buffer_.size());
+    file_.flush();
+    buffer_.clear();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fmuConnectorOutput::fmuConnectorOutput
+(
+    const word& name,
+    const Time& runTime,
+    const connectorFmu& fmu,
+    const string& description
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            "fmuConnectorOutput." + name,
+            runTime.timeName(),
+            runTime,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        )
+    ),
+    fmu_(fmu),
+    pending_(false),
+    pendingTime_(0)
+{
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"fmuConnectors"
+       /runTime.timeName()
+    );
+    mkDir(dir);
+    const fileName path(dir/(name + ".dat"));
+
+    file_.open(path);
+    if (!file_)
+    {
+        FatalErrorInFunction
+            << "connector " << name << ": cannot open " << path
+            << " for writing" << exit(FatalError);
+    }
+
+    buffer_ = "# " + description + "\n# Time";
+    for (const word& output : fmu_.outputNames())
+    {
+        buffer_ += ' ' + output;
+    }
+    buffer_ += '\n';
+    writeBuffer();
+
+    static const bool handlerInstalled =
+        (std::atexit(writeCompletedRows) == 0);
+    if (!handlerInstalled)
+    {
+        WarningInFunction
+            << "cannot install the exit handler: a run ended by an error"
+            << " may lose the rows of " << path << " since the last write"
+            << " time" << endl;
+    }
+    liveOutputs().push_back(this);
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::fmuConnectorOutput::~fmuConnectorOutput()
+{
+    std::vector<fmuConnectorOutput*>& live = liveOutputs();
+    live.erase(std::remove(live.begin(), live.end(), this), live.end());
+
+    flush(true);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fmuConnectorOutput::record(const scalar t)
+{
+    if (pending_ && t != pendingTime_)
+    {
+        commit();
+    }
+    pending_ = true;
+    pendingTime_ = t;
+    pendingValues_ = fmu_.outputs();
+}
+
+
+void Foam::fmuConnectorOutput::flush(const bool final)
+{
+    if (final)
+    {
+        commit();
+    }
+    writeBuffer();
+}
+
+
+bool Foam::fmuConnectorOutput::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
+) const
+{
+    // The time is written after the step's last solve: its row is final
+    const_cast<fmuConnectorOutput&>(*this).flush(true);
+    return file_.good();
+}
+
+
+// ************************************************************************* //
