@@ -4,6 +4,7 @@
 #ifndef TESTS_IMPORT_ZIPFIXTURES_HPP
 #define TESTS_IMPORT_ZIPFIXTURES_HPP
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,6 +23,47 @@ struct ZipEntry
 
 // Copies the archive source to target and adds entries to the copy.
 void copyWithEntries(const std::string& source, const std::string& target, const std::vector<ZipEntry>& entries);
+
+// Writes a new archive holding entries.
+void writeArchive(const std::string& target, const std::vector<ZipEntry>& entries);
+
+// Adds an entry of size zero bytes, streamed (deflated, so a 300 MiB entry
+// takes about 300 KiB in the archive), to the archive at path.
+void addZeroEntry(const std::string& path, const std::string& name, std::uint64_t size);
+
+// Rewrites the uncompressed size of the entry name in the archive's local
+// header and central directory: a zip directory that lies.
+void patchDeclaredSize(const std::string& path, const std::string& name, std::uint32_t size);
+
+// Sets an environment variable for the lifetime of the object.
+class ScopedEnv
+{
+public:
+    ScopedEnv(const std::string& name, const std::string& value);
+    ~ScopedEnv();
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    std::string name_, previous_;
+    bool hadPrevious_;
+};
+
+// Limits the size of any file this process writes (RLIMIT_FSIZE) for the
+// lifetime of the object, SIGXFSZ ignored: a larger write fails with EFBIG.
+// Shows that nothing large was written.
+class FileSizeLimit
+{
+public:
+    explicit FileSizeLimit(std::uint64_t bytes);
+    ~FileSizeLimit();
+    FileSizeLimit(const FileSizeLimit&) = delete;
+    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+private:
+    std::uint64_t previous_;
+    void (*previousHandler_)(int);
+};
 
 // Points TMPDIR at a fresh empty directory for the lifetime of the object
 // and restores it afterwards.

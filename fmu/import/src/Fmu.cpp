@@ -36,17 +36,21 @@ Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(fmuPath, ec))
         throw Error("FMU '" + fmuPath + "' does not exist or is not a file");
-    unzip(fmuPath, directory.path());
+    FmuArchive archive(fmuPath, UnpackLimits::fromEnvironment());
 
-    const std::filesystem::path xml = directory.path() / "modelDescription.xml";
-    if (!std::filesystem::is_regular_file(xml, ec)) throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
+    // The description first, from memory: it names the binary to unpack.
+    const std::string xmlName = "modelDescription.xml";
+    if (!archive.has(xmlName)) throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
+    const std::string xml = archive.read(xmlName);
     description = readModelDescription(xml, fmuPath);
     for (std::size_t i = 0; i < description.variables.size(); ++i) index.emplace(description.variables[i].name, i);
-
     const std::string binary = "binaries/linux64/" + description.modelIdentifier + ".so";
-    if (!std::filesystem::is_regular_file(directory.path() / binary, ec))
-        throw Error("FMU '" + fmuPath + "' has no binary " + binary);
-    library = std::make_unique<Library>((directory.path() / binary).string(), fmuPath);
+    if (!archive.has(binary)) throw Error("FMU '" + fmuPath + "' has no binary " + binary);
+
+    directory.emplace();
+    archive.write(xmlName, xml, directory->path());
+    archive.extract(binary, "resources/", directory->path());
+    library = std::make_unique<Library>((directory->path() / binary).string(), fmuPath);
 }
 
 Fmu::Fmu(const std::string& fmuPath) : impl_(std::make_shared<Impl>(fmuPath)) {}
@@ -68,8 +72,8 @@ const Variable& Fmu::variable(const std::string& name) const
     return impl_->description.variables[found->second];
 }
 
-std::string Fmu::resourceLocation() const { return fileUri(impl_->directory.path() / "resources"); }
+std::string Fmu::resourceLocation() const { return fileUri(impl_->directory->path() / "resources"); }
 
-std::string Fmu::unpackDirectory() const { return impl_->directory.path().string(); }
+std::string Fmu::unpackDirectory() const { return impl_->directory->path().string(); }
 
 }  // namespace fmuImport

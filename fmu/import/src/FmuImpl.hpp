@@ -1,6 +1,7 @@
 // What an Fmu and its instances share: the unpacked files, the description
 // and the loaded library. Members are destroyed in reverse order, so the
-// library is closed before the directory is removed.
+// library is closed before the directory is removed. The directory is made
+// only once the archive and its description passed every check.
 #ifndef FMUIMPORT_FMUIMPL_HPP
 #define FMUIMPORT_FMUIMPL_HPP
 
@@ -10,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace fmuImport {
@@ -17,7 +19,7 @@ namespace fmuImport {
 struct Fmu::Impl
 {
     std::string path;
-    TempDir directory;
+    std::optional<TempDir> directory;
     ModelDescription description;
     std::map<std::string, std::size_t> index;  // variable name -> position in description.variables
     std::unique_ptr<Library> library;

@@ -2,6 +2,7 @@
 
 #include <pugixml.hpp>
 
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <set>
@@ -11,6 +12,16 @@ namespace fmuImport {
 namespace {
 
 std::string fmuName(const std::string& fmuPath) { return "FMU '" + fmuPath + "'"; }
+
+bool isCIdentifier(const std::string& s)
+{
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (const char c : s)
+    {
+        if (!(c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
+    }
+    return true;
+}
 
 Causality parseCausality(const std::string& s, const std::string& where)
 {
@@ -87,11 +98,11 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
 
 }  // namespace
 
-ModelDescription readModelDescription(const std::filesystem::path& xmlFile, const std::string& fmuPath)
+ModelDescription readModelDescription(const std::string& xml, const std::string& fmuPath)
 {
     const std::string fmu = fmuName(fmuPath);
     pugi::xml_document doc;
-    const pugi::xml_parse_result parsed = doc.load_file(xmlFile.c_str());
+    const pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
     if (!parsed)
         throw Error(fmu + ": modelDescription.xml is not well-formed XML (" + parsed.description() + " at byte " +
                     std::to_string(parsed.offset) + ")");
@@ -112,6 +123,11 @@ ModelDescription readModelDescription(const std::filesystem::path& xmlFile, cons
         throw Error(fmu + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
     md.modelIdentifier = cs.attribute("modelIdentifier").as_string();
     if (md.modelIdentifier.empty()) throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
+    // It names the binary, binaries/linux64/<modelIdentifier>.so: a C
+    // identifier, as FMI 2.0 requires, cannot reach outside that folder.
+    if (!isCIdentifier(md.modelIdentifier))
+        throw Error(fmu + ": modelIdentifier '" + md.modelIdentifier +
+                    "' is not a C identifier (letters, digits and '_', not starting with a digit)");
     md.canHandleVariableCommunicationStepSize = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
     md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
     md.canSerializeFMUstate = cs.attribute("canSerializeFMUstate").as_bool();
