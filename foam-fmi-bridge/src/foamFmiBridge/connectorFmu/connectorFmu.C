@@ -53,11 +53,7 @@ void Foam::connectorFmu::restorePending
     }
 
     // The state carries the inputs it was written with
-    setInputs(A_, A);
-    if (declaresBodyB())
-    {
-        setInputs(B_, B);
-    }
+    setInputs(A, B);
 
     Info<< "Connector " << restraintName_ << ": FMU state restored at t = "
         << restoreTime_ << " from " << restoreSource_ << endl;
@@ -182,6 +178,8 @@ void Foam::connectorFmu::evaluate
     try
     {
         const bool newStep = (deltaT > 0 && t != foamStepTime_);
+        const bool repeatedSolve =
+            deltaT > 0 && !newStep && initialised_ && canRollback_;
 
         if (newStep && initialised_ && stepEndTime_ >= stepStartTime_)
         {
@@ -192,12 +190,13 @@ void Foam::connectorFmu::evaluate
         {
             stepStartState_ = instance_->getState();
         }
-
-        setInputs(A_, A);
-        if (declaresBodyB())
+        if (repeatedSolve)
         {
-            setInputs(B_, B);
+            // Back to the start of the step, before the inputs are set
+            instance_->setState(stepStartState_);
         }
+
+        setInputs(A, B);
 
         if (!initialised_)
         {
@@ -210,32 +209,23 @@ void Foam::connectorFmu::evaluate
             }
         }
 
-        if (deltaT > 0)
+        if (newStep)
         {
-            if (newStep)
-            {
-                foamStepTime_ = t;
-                stepEndTime_ = stepStartTime_ + deltaT;
-                instance_->doStep(stepStartTime_, deltaT);
-            }
-            else if (canRollback_)
-            {
-                instance_->setState(stepStartState_);
-                setInputs(A_, A);
-                if (declaresBodyB())
-                {
-                    setInputs(B_, B);
-                }
-                instance_->doStep(stepStartTime_, deltaT);
-            }
-            else if (!warnedNoRollback_)
-            {
-                warnedNoRollback_ = true;
-                WarningInFunction
-                    << where().c_str() << "repeated solve at t = " << t
-                    << " without rollback: the FMU is not stepped again"
-                    << endl;
-            }
+            foamStepTime_ = t;
+            stepEndTime_ = stepStartTime_ + deltaT;
+            instance_->doStep(stepStartTime_, deltaT);
+        }
+        else if (repeatedSolve)
+        {
+            instance_->doStep(stepStartTime_, deltaT);
+        }
+        else if (deltaT > 0 && !warnedNoRollback_)
+        {
+            warnedNoRollback_ = true;
+            WarningInFunction
+                << where().c_str() << "repeated solve at t = " << t
+                << " without rollback: the FMU is not stepped again"
+                << endl;
         }
 
         readOutputs();

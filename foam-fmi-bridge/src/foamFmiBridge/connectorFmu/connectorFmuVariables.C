@@ -173,6 +173,15 @@ void Foam::connectorFmu::lookupVariables()
         require(B_.M, "B.M[1..3]", "output");
     }
 
+    for (const bodyVariables* vars : {&A_, &B_})
+    {
+        for (const auto* refs : {&vars->r, &vars->R, &vars->v, &vars->omega})
+        {
+            inputRefs_.insert(inputRefs_.end(), refs->begin(), refs->end());
+        }
+    }
+    inputValues_.resize(inputRefs_.size());
+
     for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
     {
         if
@@ -487,31 +496,29 @@ void Foam::connectorFmu::checkRestoredParameters() const
 
 void Foam::connectorFmu::setInputs
 (
-    const bodyVariables& vars,
-    const kinematics& k
+    const kinematics& A,
+    const kinematics& B
 )
 {
-    std::vector<unsigned int> refs;
-    std::vector<double> values;
-
-    auto add = [&](const std::vector<unsigned int>& r, const double* v)
+    // In the order of inputRefs_ (lookupVariables); OpenFOAM's tensor
+    // stores its components row by row, as A.R[i,j] does
+    double* value = inputValues_.data();
+    auto add = [&value](const std::vector<unsigned int>& refs, const double* v)
     {
-        for (size_t i = 0; i < r.size(); ++i)
-        {
-            refs.push_back(r[i]);
-            values.push_back(v[i]);
-        }
+        value = std::copy(v, v + refs.size(), value);
     };
 
-    // OpenFOAM's tensor stores its components row by row, as A.R[i,j] does
-    add(vars.r, k.r.cdata());
-    add(vars.R, k.R.cdata());
-    add(vars.v, k.v.cdata());
-    add(vars.omega, k.omega.cdata());
-
-    if (!refs.empty())
+    for (const auto& body : {std::make_pair(&A_, &A), std::make_pair(&B_, &B)})
     {
-        instance_->setReal(refs, values);
+        add(body.first->r, body.second->r.cdata());
+        add(body.first->R, body.second->R.cdata());
+        add(body.first->v, body.second->v.cdata());
+        add(body.first->omega, body.second->omega.cdata());
+    }
+
+    if (!inputRefs_.empty())
+    {
+        instance_->setReal(inputRefs_, inputValues_);
     }
 }
 
