@@ -20,6 +20,11 @@ Description
     step (it restores its state and steps again), as PIMPLE outer correctors
     cause.
 
+    For an fmuConnector the first evaluation of a step is also split into
+    its parts, each timed on its own in the same rounds: the evaluation
+    (inputs set, FMU stepped, outputs read), the state save
+    (fmi2GetFMUstate) and the row of outputs (fmuConnectorOutput::record).
+
 Usage
     restraintCost [-evaluations <n>] [-rounds <n>] [-case <dir>]
 
@@ -30,6 +35,8 @@ Usage
 #include "IOdictionary.H"
 #include "rigidBodyMotion.H"
 #include "rigidBodyRestraint.H"
+#include "fmuConnector.H"
+#include "fmuImport/fmuImport.hpp"
 
 #include <chrono>
 
@@ -65,6 +72,92 @@ scalar timeEvaluations
 
     return std::chrono::duration<scalar>(end - start).count()/nEval;
 }
+
+
+//- Seconds per call of f, for n calls
+template<class Call>
+scalar timeCalls(const label n, const Call& f)
+{
+    const auto start = std::chrono::steady_clock::now();
+    for (label i = 0; i < n; ++i)
+    {
+        f(i);
+    }
+    const auto end = std::chrono::steady_clock::now();
+
+    return std::chrono::duration<scalar>(end - start).count()/n;
+}
+
+
+//- The parts of an fmuConnector's new-step evaluation, each on its own
+class fmuConnectorParts
+{
+    connectorFmu fmu_;
+    fmuConnectorOutput output_;
+    fmuImport::Fmu rawFmu_;
+    fmuImport::Instance rawInstance_;
+    fmuImport::Instance::State state_;
+    scalar t_;
+
+public:
+
+    fmuConnectorParts
+    (
+        const word& name,
+        const dictionary& dict,
+        const Time& runTime
+    )
+    :
+        fmu_
+        (
+            dict.get<fileName>("fmu").expand(),
+            name,
+            dict,
+            dict.subOrEmptyDict("parameters"),
+            0
+        ),
+        output_("cost." + name, runTime, fmu_, "restraintCost " + name),
+        rawFmu_(fmu_.file()),
+        rawInstance_(rawFmu_, name),
+        t_(0)
+    {
+        // Defaults of the raw instance: the state's size does not depend on
+        // the parameters
+        rawInstance_.setupExperiment(0);
+        rawInstance_.enterInitializationMode();
+        rawInstance_.exitInitializationMode();
+    }
+
+    //- Seconds per evaluation of a new step without the state save and the
+    //  output row (an FMU evaluation that saves its state, minus the save)
+    scalar evaluation(const label n, const scalar deltaT)
+    {
+        const connectorFmu::kinematics A{vector(0.1, 0, 0.2), tensor::I, Zero, Zero};
+        const connectorFmu::kinematics B(connectorFmu::kinematics::world());
+        const scalar total = timeCalls
+        (
+            n,
+            [&](label) { t_ += deltaT; fmu_.evaluate(t_, deltaT, A, B); }
+        );
+        return total - stateSave(n);
+    }
+
+    //- Seconds per save of the FMU state
+    scalar stateSave(const label n)
+    {
+        return timeCalls(n, [&](label) { state_ = rawInstance_.getState(); });
+    }
+
+    //- Seconds per row of outputs
+    scalar output(const label n)
+    {
+        return timeCalls
+        (
+            n,
+            [&](label i) { output_.record(t_ + i); }
+        );
+    }
+};
 
 } // End anonymous namespace
 
@@ -121,6 +214,28 @@ int main(int argc, char *argv[])
     scalarList newStep(restraints.size(), GREAT);
     scalarList repeated(restraints.size(), GREAT);
 
+    // The parts of each fmuConnector's evaluation
+    PtrList<fmuConnectorParts> parts(restraints.size());
+    forAll(restraints, i)
+    {
+        if (isA<RBD::restraints::fmuConnector>(restraints[i]))
+        {
+            parts.set
+            (
+                i,
+                new fmuConnectorParts
+                (
+                    names[i],
+                    restraintsDict.subDict(names[i]),
+                    runTime
+                )
+            );
+        }
+    }
+    scalarList evaluation(restraints.size(), GREAT);
+    scalarList stateSave(restraints.size(), GREAT);
+    scalarList output(restraints.size(), GREAT);
+
     for (label round = 0; round < nRounds; ++round)
     {
         forAll(restraints, i)
@@ -135,14 +250,27 @@ int main(int argc, char *argv[])
                 repeated[i],
                 timeEvaluations(restraints[i], state, tau, fx, nEval, false)
             );
+            if (parts.set(i))
+            {
+                evaluation[i] =
+                    min(evaluation[i], parts[i].evaluation(nEval, 1e-3));
+                stateSave[i] = min(stateSave[i], parts[i].stateSave(nEval));
+                output[i] = min(output[i], parts[i].output(nEval));
+            }
         }
     }
 
-    Info<< "restraint  type  new-step-ns  repeated-ns" << nl;
+    // Parts not timed (built-in restraints) are printed as 0
+    Info<< "restraint  type  new-step-ns  repeated-ns"
+        << "  evaluation-ns  state-save-ns  output-ns" << nl;
     forAll(restraints, i)
     {
+        const bool split = parts.set(i);
         Info<< names[i] << ' ' << restraints[i].type() << ' '
-            << 1e9*newStep[i] << ' ' << 1e9*repeated[i] << nl;
+            << 1e9*newStep[i] << ' ' << 1e9*repeated[i] << ' '
+            << (split ? 1e9*evaluation[i] : 0) << ' '
+            << (split ? 1e9*stateSave[i] : 0) << ' '
+            << (split ? 1e9*output[i] : 0) << nl;
     }
     Info<< endl;
 
