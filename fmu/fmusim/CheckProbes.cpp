@@ -28,13 +28,15 @@ public:
     }
 
     // An instance initialised with the start values, at t = 0.
-    fmuImport::Instance started(const std::string& name)
+    WatchedInstance started(const std::string& name)
     {
         const bool verbose = options_.verbose;
-        fmuImport::Instance instance(
-            fmu_, name, [verbose](const std::string& i, int status, const std::string& category, const std::string& m) {
+        WatchedInstance instance(
+            fmu_, name,
+            [verbose](const std::string& i, int status, const std::string& category, const std::string& m) {
                 if (verbose) stderrLogger(true)(i, status, category, m);
-            });
+            },
+            false);
         instance.setupExperiment(0.0);
         instance.enterInitializationMode();
         instance.exitInitializationMode();
@@ -55,7 +57,7 @@ public:
     }
 
     // Sets the kinematics and steps from t to t + stepSize.
-    void step(fmuImport::Instance& instance, double t, const Kinematics& A, const Kinematics& B)
+    void step(WatchedInstance& instance, double t, const Kinematics& A, const Kinematics& B)
     {
         connector_.setKinematics(instance, A, B);
         instance.doStep(t, options_.stepSize);
@@ -63,7 +65,7 @@ public:
 
     // A step with random kinematics of both bodies (B is the world for a
     // one-body connector); advances t.
-    void randomStep(fmuImport::Instance& instance, double& t, Kinematics* A = nullptr, Kinematics* B = nullptr)
+    void randomStep(WatchedInstance& instance, double& t, Kinematics* A = nullptr, Kinematics* B = nullptr)
     {
         const Kinematics a = random();
         const Kinematics b = connector_.twoBody() ? random() : Kinematics();
@@ -73,7 +75,7 @@ public:
         if (B) *B = b;
     }
 
-    std::vector<double> outputs(fmuImport::Instance& instance)
+    std::vector<double> outputs(WatchedInstance& instance)
     {
         std::vector<unsigned int> vrs;
         for (const fmuImport::Variable* v : outputs_) vrs.push_back(v->valueReference);
@@ -115,7 +117,7 @@ void randomProbes(Prober& p, const std::function<void(const CheckResult&)>& repo
     std::string stepError, nonFinite, forces, moments;
     try
     {
-        fmuImport::Instance instance = p.started("random");
+        WatchedInstance instance = p.started("random");
         double t = 0;
         for (int n = 0; n < p.options_.samples; ++n)
         {
@@ -180,7 +182,7 @@ void restProbe(Prober& p, const std::function<void(const CheckResult&)>& report)
             fail(name, "inputs without a start value: " + noStart.front() + (noStart.size() > 1 ? " and others" : "")));
     try
     {
-        fmuImport::Instance instance = p.started("rest");
+        WatchedInstance instance = p.started("rest");
         instance.doStep(0.0, p.options_.stepSize);
         Loads a, b;
         p.connector_.getLoads(instance, a, b);
@@ -219,11 +221,11 @@ void stateProbes(Prober& p, const std::function<void(const CheckResult&)>& repor
     {
         try
         {
-            fmuImport::Instance instance = p.started("state");
+            WatchedInstance instance = p.started("state");
             double t = 0;
             p.randomStep(instance, t);
             p.randomStep(instance, t);
-            const fmuImport::Instance::State saved = instance.getState();
+            const WatchedInstance::State saved = instance.getState();
             savedOutputs = p.outputs(instance);
             p.randomStep(instance, t, &A1, &B1);
             first = p.outputs(instance);
@@ -254,7 +256,7 @@ void stateProbes(Prober& p, const std::function<void(const CheckResult&)>& repor
     try
     {
         // A restart: the serialized state in a fresh instance.
-        fmuImport::Instance other = p.started("restart");
+        WatchedInstance other = p.started("restart");
         other.setState(other.deserializeState(bytes));
         const std::string restored = p.difference(savedOutputs, p.outputs(other));
         if (!restored.empty()) return report(fail("state-serialize", "after deserializing " + restored));
@@ -274,7 +276,7 @@ void stepSizeProbe(Prober& p, const std::function<void(const CheckResult&)>& rep
 {
     try
     {
-        fmuImport::Instance instance = p.started("stepSize");
+        WatchedInstance instance = p.started("stepSize");
         double t = 0;
         for (const double h : {1.0, 2.5, 0.4, 1e-3})
         {
@@ -309,7 +311,7 @@ void nonFiniteProbe(Prober& p, const std::function<void(const CheckResult&)>& re
         const double value = bad[k++ % 3];
         try
         {
-            fmuImport::Instance instance = p.started("nonFinite");
+            WatchedInstance instance = p.started("nonFinite");
             double t = 0;
             p.randomStep(instance, t);
             Kinematics A = p.random(), B = p.connector_.twoBody() ? p.random() : Kinematics();

@@ -128,7 +128,7 @@ std::vector<std::string> Connector::missingRequired() const
     return missing;
 }
 
-void Connector::setKinematics(fmuImport::Instance& instance, const Kinematics& A, const Kinematics& B) const
+void Connector::setKinematics(WatchedInstance& instance, const Kinematics& A, const Kinematics& B) const
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;
@@ -143,7 +143,7 @@ void Connector::setKinematics(fmuImport::Instance& instance, const Kinematics& A
     instance.setReal(vrs, values);
 }
 
-void Connector::setMassProperties(fmuImport::Instance& instance, const MassProperties& A, const MassProperties& B) const
+void Connector::setMassProperties(WatchedInstance& instance, const MassProperties& A, const MassProperties& B) const
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;
@@ -157,7 +157,7 @@ void Connector::setMassProperties(fmuImport::Instance& instance, const MassPrope
     if (!vrs.empty()) instance.setReal(vrs, values);
 }
 
-void Connector::getLoads(fmuImport::Instance& instance, Loads& A, Loads& B) const
+void Connector::getLoads(WatchedInstance& instance, Loads& A, Loads& B) const
 {
     std::vector<unsigned int> vrs = A_.F.vrs;
     vrs.insert(vrs.end(), A_.M.vrs.begin(), A_.M.vrs.end());

@@ -4,6 +4,8 @@
 #ifndef FMUSIM_CONNECTOR_HPP
 #define FMUSIM_CONNECTOR_HPP
 
+#include "WatchedInstance.hpp"
+
 #include "fmuImport/fmuImport.hpp"
 
 #include <Eigen/Dense>
@@ -82,11 +84,11 @@ public:
     bool hasVelocities() const { return A_.v.declared || A_.omega.declared || B_.v.declared || B_.omega.declared; }
 
     // Sets the declared inputs; for a one-body connector B is ignored.
-    void setKinematics(fmuImport::Instance& instance, const Kinematics& A, const Kinematics& B) const;
-    void setMassProperties(fmuImport::Instance& instance, const MassProperties& A, const MassProperties& B) const;
+    void setKinematics(WatchedInstance& instance, const Kinematics& A, const Kinematics& B) const;
+    void setMassProperties(WatchedInstance& instance, const MassProperties& A, const MassProperties& B) const;
 
     // Loads on A and B (zero for B when B.F, B.M are not declared).
-    void getLoads(fmuImport::Instance& instance, Loads& A, Loads& B) const;
+    void getLoads(WatchedInstance& instance, Loads& A, Loads& B) const;
 
     // The value references of the declared kinematic inputs, for probing.
     std::vector<std::pair<std::string, unsigned int>> kinematicInputs() const;

@@ -49,7 +49,8 @@ private:
     std::vector<std::vector<double>> values_;  // [row][column]
 };
 
-// Writes rows to a file, or to standard output when the path is empty.
+// Writes rows to a file, or to standard output when the path is empty;
+// each row is flushed as it is written.
 class CsvWriter
 {
 public:

@@ -93,8 +93,7 @@ std::vector<InputColumn> matchInputs(const fmuImport::Fmu& fmu, const InputTable
     return columns;
 }
 
-void setInputs(fmuImport::Instance& instance, const InputTable* table, const std::vector<InputColumn>& columns,
-               double t)
+void setInputs(WatchedInstance& instance, const InputTable* table, const std::vector<InputColumn>& columns, double t)
 {
     std::vector<unsigned int> realVrs, intVrs, boolVrs;
     std::vector<double> reals;
@@ -164,7 +163,7 @@ int runCommand(const std::vector<std::string>& arguments)
     }
     const std::vector<const fmuImport::Variable*> outputs = outputVariables(fmu, o);
 
-    fmuImport::Instance instance = instantiate(fmu, md.modelIdentifier, o.logging);
+    WatchedInstance instance = instantiate(fmu, md.modelIdentifier, o.logging);
     instance.setupExperiment(t0, true, t1);
     applySettings(fmu, instance, o.settings);
     instance.enterInitializationMode();

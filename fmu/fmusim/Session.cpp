@@ -28,11 +28,11 @@ fmuImport::Logger stderrLogger(bool verbose)
     };
 }
 
-fmuImport::Instance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn)
+WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn)
 {
     try
     {
-        return fmuImport::Instance(fmu, name, stderrLogger(loggingOn), loggingOn);
+        return WatchedInstance(fmu, name, stderrLogger(loggingOn), loggingOn);
     }
     catch (const fmuImport::Error& e)
     {

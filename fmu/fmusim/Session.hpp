@@ -3,6 +3,8 @@
 #ifndef FMUSIM_SESSION_HPP
 #define FMUSIM_SESSION_HPP
 
+#include "WatchedInstance.hpp"
+
 #include "fmuImport/fmuImport.hpp"
 
 #include <string>
@@ -13,7 +15,7 @@ fmuImport::Fmu loadFmu(const std::string& path);
 
 // An instance whose log messages go to standard error, prefixed by the
 // status; loggingOn switches on the FMU's debug logging.
-fmuImport::Instance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn);
+WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn);
 
 // Logs to standard error everything but fmi2OK messages, unless verbose.
 fmuImport::Logger stderrLogger(bool verbose);

@@ -62,7 +62,7 @@ bool isSettable(const fmuImport::Variable& v)
            v.variability == fmuImport::Variability::tunable;
 }
 
-void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance, const std::vector<Setting>& settings)
+void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const std::vector<Setting>& settings)
 {
     using fmuImport::Type;
     for (const Setting& s : settings)
@@ -96,8 +96,7 @@ void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance, con
     }
 }
 
-std::vector<std::string> readValues(fmuImport::Instance& instance,
-                                    const std::vector<const fmuImport::Variable*>& variables)
+std::vector<std::string> readValues(WatchedInstance& instance, const std::vector<const fmuImport::Variable*>& variables)
 {
     using fmuImport::Type;
     // One fmi2Get call per type: gather the value references, then scatter.

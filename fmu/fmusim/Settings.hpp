@@ -3,6 +3,8 @@
 #ifndef FMUSIM_SETTINGS_HPP
 #define FMUSIM_SETTINGS_HPP
 
+#include "WatchedInstance.hpp"
+
 #include "fmuImport/fmuImport.hpp"
 
 #include <string>
@@ -33,10 +35,10 @@ bool isSettable(const fmuImport::Variable& v);
 // Unknown or unsettable variables and values of the wrong type throw
 // FileError (settings from a file) or UsageError (from --set), naming the
 // origin.
-void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance, const std::vector<Setting>& settings);
+void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const std::vector<Setting>& settings);
 
 // The current values of the variables, as text for CSV output.
-std::vector<std::string> readValues(fmuImport::Instance& instance,
+std::vector<std::string> readValues(WatchedInstance& instance,
                                     const std::vector<const fmuImport::Variable*>& variables);
 
 }  // namespace fmusim

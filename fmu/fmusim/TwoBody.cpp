@@ -174,7 +174,7 @@ private:
 
     void implicitStep(double t, double h)
     {
-        const fmuImport::Instance::State start = instance_.getState();
+        const WatchedInstance::State start = instance_.getState();
         const LoadVector l0 = pack(loadsA_, loadsB_);
         // First guess: linear extrapolation of the loads of the last two steps.
         LoadVector guess = havePrevious_ ? LoadVector(2 * l0 - previousLoads_) : l0;
@@ -230,7 +230,7 @@ private:
     const TwoBodyConfig& c_;
     const fmuImport::Fmu& fmu_;
     const Connector& connector_;
-    fmuImport::Instance instance_;
+    WatchedInstance instance_;
     CsvWriter out_;
     std::vector<const fmuImport::Variable*> outputs_;
     BodyState a_, b_;

@@ -3,6 +3,7 @@
 #include "Errors.hpp"
 #include "Run.hpp"
 #include "TwoBody.hpp"
+#include "Watchdog.hpp"
 
 #include "fmuImport/fmuImport.hpp"
 
@@ -65,6 +66,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& args)
 
 int main(int argc, char** argv)
 {
+    fmusim::installCrashReport();
     const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
     if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
     {
