@@ -2,7 +2,13 @@
 #include "ModelDescriptionXml.hpp"
 #include "Unzip.hpp"
 
+#include <sys/stat.h>
+
 #include <cctype>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <system_error>
 
 namespace fmuImport {
@@ -29,13 +35,54 @@ std::string fileUri(const std::filesystem::path& path)
     return uri;
 }
 
+// Identifies a file's current content well enough to share its unpacked
+// copy: a rewritten .fmu gets a new size or modification time.
+struct FileKey
+{
+    std::string canonicalPath;
+    dev_t device;
+    ino_t inode;
+    off_t size;
+    std::int64_t mtimeNs;
+
+    bool operator<(const FileKey& o) const
+    {
+        return std::tie(canonicalPath, device, inode, size, mtimeNs) <
+               std::tie(o.canonicalPath, o.device, o.inode, o.size, o.mtimeNs);
+    }
+};
+
+// Weak references: an entry keeps nothing alive, and an expired one is
+// dropped at the next load.
+std::mutex cacheMutex;
+std::map<FileKey, std::weak_ptr<Fmu::Impl>> cache;
+
 }  // namespace
+
+std::shared_ptr<Fmu::Impl> Fmu::Impl::load(const std::string& fmuPath)
+{
+    struct stat st;
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::canonical(fmuPath, ec);
+    if (ec || stat(canonical.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        throw Error("FMU '" + fmuPath + "' does not exist or is not a file");
+    const FileKey key{canonical.string(), st.st_dev, st.st_ino, st.st_size,
+                      std::int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec};
+
+    // Held while loading, so that two threads loading one file share it.
+    const std::lock_guard<std::mutex> lock(cacheMutex);
+    for (auto it = cache.begin(); it != cache.end();) it = it->second.expired() ? cache.erase(it) : std::next(it);
+    if (const auto found = cache.find(key); found != cache.end())
+    {
+        if (std::shared_ptr<Impl> shared = found->second.lock()) return shared;
+    }
+    auto impl = std::make_shared<Impl>(fmuPath);
+    cache[key] = impl;
+    return impl;
+}
 
 Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
 {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(fmuPath, ec))
-        throw Error("FMU '" + fmuPath + "' does not exist or is not a file");
     FmuArchive archive(fmuPath, UnpackLimits::fromEnvironment());
 
     // The description first, from memory: it names the binary to unpack.
@@ -53,13 +100,13 @@ Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
     library = std::make_unique<Library>((directory->path() / binary).string(), fmuPath);
 }
 
-Fmu::Fmu(const std::string& fmuPath) : impl_(std::make_shared<Impl>(fmuPath)) {}
+Fmu::Fmu(const std::string& fmuPath) : impl_(Impl::load(fmuPath)), path_(fmuPath) {}
 
 Fmu::~Fmu() = default;
 Fmu::Fmu(Fmu&&) noexcept = default;
 Fmu& Fmu::operator=(Fmu&&) noexcept = default;
 
-const std::string& Fmu::path() const { return impl_->path; }
+const std::string& Fmu::path() const { return path_; }
 
 const ModelDescription& Fmu::modelDescription() const { return impl_->description; }
 
@@ -68,7 +115,7 @@ bool Fmu::hasVariable(const std::string& name) const { return impl_->index.count
 const Variable& Fmu::variable(const std::string& name) const
 {
     const auto found = impl_->index.find(name);
-    if (found == impl_->index.end()) throw Error("FMU '" + impl_->path + "' has no variable '" + name + "'");
+    if (found == impl_->index.end()) throw Error("FMU '" + path_ + "' has no variable '" + name + "'");
     return impl_->description.variables[found->second];
 }
 

@@ -20,15 +20,16 @@ void checkSizes(const std::vector<unsigned int>& vrs, std::size_t nValues, const
 Instance::Instance(const Fmu& fmu, const std::string& instanceName, Logger logger, bool loggingOn)
 {
     if (!fmu.impl_) throw Error("Instance '" + instanceName + "': the FMU was moved from");
-    impl_ = std::make_shared<Impl>(fmu.impl_, instanceName, std::move(logger));
+    impl_ = std::make_shared<Impl>(fmu.impl_, fmu.path(), instanceName, std::move(logger));
     Impl& d = *impl_;
+    d.admit();
     const std::string resources = fmu.resourceLocation();
     d.beginCall();
     d.component = callFmu(d.api().Instantiate, instanceName.c_str(), fmi2CoSimulation, d.fmu->description.guid.c_str(),
                           resources.c_str(), &d.callbacks, fmi2False, loggingOn ? fmi2True : fmi2False);
     if (!d.component)
     {
-        std::string message = "fmi2Instantiate failed in FMU '" + d.fmu->path + "', instance '" + instanceName + "'";
+        std::string message = "fmi2Instantiate failed in FMU '" + d.fmuPath + "', instance '" + instanceName + "'";
         if (!d.lastError.empty()) message += ": " + d.lastError;
         throw Error(message);
     }
@@ -199,7 +200,7 @@ Instance::State Instance::getState()
 void Instance::setState(const State& state)
 {
     if (!state.valid() || state.owner_ != impl_)
-        throw Error("fmi2SetFMUstate in FMU '" + impl_->fmu->path + "', instance '" + impl_->name +
+        throw Error("fmi2SetFMUstate in FMU '" + impl_->fmuPath + "', instance '" + impl_->name +
                     "': the state is empty or belongs to another instance");
     impl_->beginCall();
     impl_->check(callFmu(impl_->api().SetFMUstate, impl_->component, state.state_), "fmi2SetFMUstate", impl_->time);
@@ -209,7 +210,7 @@ void Instance::setState(const State& state)
 std::vector<char> Instance::serializeState(const State& state)
 {
     if (!state.valid() || state.owner_ != impl_)
-        throw Error("fmi2SerializeFMUstate in FMU '" + impl_->fmu->path + "', instance '" + impl_->name +
+        throw Error("fmi2SerializeFMUstate in FMU '" + impl_->fmuPath + "', instance '" + impl_->name +
                     "': the state is empty or belongs to another instance");
     std::size_t size = 0;
     impl_->beginCall();

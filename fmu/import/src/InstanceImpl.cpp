@@ -53,8 +53,9 @@ extern "C" void fmuImportLogger(fmi2ComponentEnvironment environment, fmi2String
 
 }  // namespace
 
-Instance::Impl::Impl(std::shared_ptr<Fmu::Impl> fmuImpl, const std::string& instanceName, Logger log)
-    : fmu(std::move(fmuImpl)), name(instanceName), logger(std::move(log))
+Instance::Impl::Impl(std::shared_ptr<Fmu::Impl> fmuImpl, const std::string& path, const std::string& instanceName,
+                     Logger log)
+    : fmu(std::move(fmuImpl)), fmuPath(path), name(instanceName), logger(std::move(log))
 {
     callbacks.logger = fmuImportLogger;
     callbacks.allocateMemory = std::calloc;
@@ -66,6 +67,18 @@ Instance::Impl::Impl(std::shared_ptr<Fmu::Impl> fmuImpl, const std::string& inst
 Instance::Impl::~Impl()
 {
     if (component) callFmu(api().FreeInstance, component);
+    if (admitted) --fmu->liveInstances;
+}
+
+void Instance::Impl::admit()
+{
+    const int others = fmu->liveInstances++;
+    admitted = true;
+    if (others > 0 && fmu->description.canBeInstantiatedOnlyOncePerProcess)
+    {
+        throw Error("FMU '" + fmuPath + "' declares canBeInstantiatedOnlyOncePerProcess=\"true\" and an instance " +
+                    "of it exists already: cannot instantiate '" + name + "' (free the other instance first)");
+    }
 }
 
 void Instance::Impl::receive(const std::string& instanceName, int status, const std::string& category,
@@ -96,8 +109,8 @@ void Instance::Impl::check(fmi2Status status, const char* function, double time)
         receive(name, fmi2Warning, "logStatusWarning", std::string(function) + " returned fmi2Warning" + detail);
         return;
     }
-    std::string message = std::string(function) + " failed" + detail + " in FMU '" + fmu->path + "', instance '" +
-                          name + "' (" + statusName(status) + ")";
+    std::string message = std::string(function) + " failed" + detail + " in FMU '" + fmuPath + "', instance '" + name +
+                          "' (" + statusName(status) + ")";
     if (!lastError.empty()) message += ": " + lastError;
     throw Error(message);
 }

@@ -15,19 +15,26 @@ namespace fmuImport {
 struct Instance::Impl
 {
     std::shared_ptr<Fmu::Impl> fmu;
+    std::string fmuPath;  // as the Fmu it was made from names it
     std::string name;
     Logger logger;
     fmi2CallbackFunctions callbacks;  // the FMU may keep a pointer to it
     fmi2Component component = nullptr;
     double time = 0;
     std::string lastError;  // last error the FMU logged during the current call
+    bool admitted = false;  // counted in fmu->liveInstances
 
-    Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& name, Logger logger);
+    Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& fmuPath, const std::string& name, Logger logger);
     ~Impl();
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;
 
     const Fmi2Api& api() const { return fmu->library->api(); }
+
+    // Counts this instance among the live instances of its binary; throws
+    // Error if the FMU declares canBeInstantiatedOnlyOncePerProcess and
+    // another one is alive. Call before fmi2Instantiate.
+    void admit();
 
     // Call before each fmi2 call: forgets the error text of earlier calls.
     void beginCall() { lastError.clear(); }

@@ -132,6 +132,7 @@ ModelDescription readModelDescription(const std::string& xml, const std::string&
     md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
     md.canSerializeFMUstate = cs.attribute("canSerializeFMUstate").as_bool();
     md.providesDirectionalDerivative = cs.attribute("providesDirectionalDerivative").as_bool();
+    md.canBeInstantiatedOnlyOncePerProcess = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
 
     if (const pugi::xml_node de = root.child("DefaultExperiment"))
     {

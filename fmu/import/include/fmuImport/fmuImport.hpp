@@ -69,6 +69,7 @@ struct ModelDescription
     bool canGetAndSetFMUstate = false;
     bool canSerializeFMUstate = false;
     bool providesDirectionalDerivative = false;
+    bool canBeInstantiatedOnlyOncePerProcess = false;  // then Instance refuses a second live instance
     bool hasDefaultExperiment = false;
     double startTime = 0, stopTime = 0, stepSize = 0;  // <DefaultExperiment>, 0 when not given
     std::vector<Variable> variables;                   // in the order of the XML
@@ -79,12 +80,30 @@ struct ModelDescription
 using Logger = std::function<void(const std::string& instanceName, int status, const std::string& category,
                                   const std::string& message)>;
 
-// An unpacked and loaded .fmu. Unpacks into a private temporary directory,
-// parses and checks modelDescription.xml (fmiVersion 2.0, <CoSimulation>),
-// loads binaries/linux64/<modelIdentifier>.so and resolves every fmi2
-// function. The directory is removed on failure and when the FMU and every
-// Instance made from it are gone (instances keep the binary loaded). A
-// moved-from Fmu or Instance may only be destroyed or assigned to.
+// An unpacked and loaded .fmu. Reads and checks modelDescription.xml from
+// the archive (fmiVersion 2.0, <CoSimulation>), then unpacks it, the binary
+// binaries/linux64/<modelIdentifier>.so and everything under resources/
+// (nothing else) into a private temporary directory,
+// $TMPDIR/fmuImport-<pid>-XXXXXX, loads the binary and resolves every fmi2
+// function.
+//
+// Limits: an entry may unpack to at most 256 MiB, all of them together to
+// at most 1 GiB, or to the number of bytes in the environment variable
+// FMUIMPORT_MAX_UNPACK_BYTES (which also caps an entry). They are checked
+// on the sizes the zip directory declares, before anything is written, and
+// again on the bytes written.
+//
+// Fmu objects of one file (the same canonical path, size and modification
+// time) made while an earlier one or its instances are alive share one
+// unpack directory and one loaded binary.
+//
+// The directory is removed on failure and when the last Fmu and Instance of
+// it are gone (instances keep the binary loaded), and also when the process
+// ends by exit() or by SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGFPE, SIGABRT or
+// SIGBUS (handlers installed at the first load; they chain to the handlers
+// installed before or after them). Host floating-point traps are masked
+// during every call into the FMU. A moved-from Fmu or Instance may only be
+// destroyed or assigned to.
 class Fmu
 {
 public:
@@ -95,7 +114,7 @@ public:
     Fmu(const Fmu&) = delete;
     Fmu& operator=(const Fmu&) = delete;
 
-    const std::string& path() const;
+    const std::string& path() const;  // as given to the constructor
     const ModelDescription& modelDescription() const;
     bool hasVariable(const std::string& name) const;
     const Variable& variable(const std::string& name) const;
@@ -107,6 +126,7 @@ public:
 private:
     friend class Instance;
     std::shared_ptr<Impl> impl_;
+    std::string path_;
 };
 
 // One co-simulation fmi2Component. Every fmi2 call is checked: fmi2Error,
@@ -117,6 +137,8 @@ class Instance
 {
 public:
     // The FMU's log messages go to logger, or to stderr when it is empty.
+    // Throws Error if the FMU declares canBeInstantiatedOnlyOncePerProcess
+    // and another instance of its binary is alive.
     Instance(const Fmu& fmu, const std::string& instanceName, Logger logger = Logger(), bool loggingOn = false);
     ~Instance();
     Instance(Instance&&) noexcept;
