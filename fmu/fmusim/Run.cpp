@@ -27,7 +27,8 @@ const char* runUsage()
            "  --output-variables a,b  default: every output\n"
            "  --logging               switch on the FMU's debug logging\n"
            "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
-           "  row for t + h is written after it (the connector interface's convention).\n";
+           "  row for t + h is written after it (the connector interface's convention).\n"
+           "  A NaN or infinite value in a Real column stops the run (exit code 5).\n";
 }
 
 namespace {

@@ -113,7 +113,15 @@ std::vector<std::string> readValues(WatchedInstance& instance, const std::vector
     if (!vrs[0].empty())
     {
         const std::vector<double> values = instance.getReal(vrs[0]);
-        for (std::size_t k = 0; k < values.size(); ++k) text[where[0][k]] = formatNumber(values[k]);
+        for (std::size_t k = 0; k < values.size(); ++k)
+        {
+            const fmuImport::Variable& v = *variables[where[0][k]];
+            if (!std::isfinite(values[k]))
+                throw SimulationError(nonFiniteMessage(
+                    instance, (v.causality == fmuImport::Causality::output ? "output '" : "variable '") + v.name + "'",
+                    values[k], instance.time()));
+            text[where[0][k]] = formatNumber(values[k]);
+        }
     }
     if (!vrs[1].empty())
     {
@@ -131,6 +139,12 @@ std::vector<std::string> readValues(WatchedInstance& instance, const std::vector
         for (std::size_t k = 0; k < values.size(); ++k) text[where[3][k]] = csvField(values[k]);
     }
     return text;
+}
+
+std::string nonFiniteMessage(const WatchedInstance& instance, const std::string& what, double value, double time)
+{
+    return "FMU '" + instance.fmuPath() + "', instance '" + instance.name() + "': " + what + " is " +
+           formatNumber(value) + " at t = " + formatNumber(time) + ", expected a finite number";
 }
 
 }  // namespace fmusim

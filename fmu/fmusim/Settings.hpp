@@ -37,9 +37,14 @@ bool isSettable(const fmuImport::Variable& v);
 // origin.
 void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const std::vector<Setting>& settings);
 
-// The current values of the variables, as text for CSV output.
+// The current values of the variables, as text for CSV output. A NaN or
+// infinite Real throws SimulationError (nonFiniteMessage).
 std::vector<std::string> readValues(WatchedInstance& instance,
                                     const std::vector<const fmuImport::Variable*>& variables);
+
+// "FMU 'x.fmu', instance 'x': output 'y' is nan at t = 0.5, expected a
+// finite number"; what: "output 'y'" or "variable 'y'".
+std::string nonFiniteMessage(const WatchedInstance& instance, const std::string& what, double value, double time);
 
 }  // namespace fmusim
 

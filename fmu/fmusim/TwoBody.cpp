@@ -44,7 +44,8 @@ const char* twoBodyUsage()
            "        phase [rad]: sinusoidal motion x = x0 + amplitude sin(2 pi f t + phase),\n"
            "        R = exp(rotation-amplitude sin(2 pi f t + phase)) R0\n"
            "  Vectors are three numbers separated by blanks or commas. --set and\n"
-           "  --parameters set FMU parameters as in 'fmusim run'.\n";
+           "  --parameters set FMU parameters as in 'fmusim run'. A NaN or infinite FMU\n"
+           "  output stops the run (exit code 5).\n";
 }
 
 namespace {
@@ -79,6 +80,18 @@ void appendBody(std::vector<std::string>& row, const Body& body, const BodyState
     for (const double value : {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z(), s.v.x(), s.v.y(), s.v.z(),
                                s.omega.x(), s.omega.y(), s.omega.z(), kineticEnergy(body, s)})
         row.push_back(formatNumber(value));
+}
+
+// The names of the components of a LoadVector.
+const std::vector<std::string>& loadNames()
+{
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const char* base : {"A.F", "A.M", "B.F", "B.M"})
+            for (const std::string& name : componentNames(base, Shape::vector)) all.push_back(name);
+        return all;
+    }();
+    return names;
 }
 
 bool finite(const BodyState& s)
@@ -154,7 +167,9 @@ private:
         write(c_.startTime);
     }
 
-    // Sets the kinematics at t + h, steps the FMU from t, reads the loads.
+    // Sets the kinematics at t + h, steps the FMU from t, reads the loads;
+    // a non-finite load stops the run (SimulationError) before it moves a
+    // body or reaches the output.
     LoadVector evaluate(const BodyState& a1, const BodyState& b1, double t, double h)
     {
         connector_.setKinematics(instance_, kinematicsOf(a1), kinematicsOf(b1));
@@ -162,7 +177,11 @@ private:
         ++doSteps_;
         Loads la, lb;
         connector_.getLoads(instance_, la, lb);
-        return pack(la, lb);
+        const LoadVector loads = pack(la, lb);
+        for (int i = 0; i < loads.size(); ++i)
+            if (!std::isfinite(loads[i]))
+                throw SimulationError(nonFiniteMessage(instance_, "output '" + loadNames()[i] + "'", loads[i], t + h));
+        return loads;
     }
 
     void explicitStep(double t, double h)

@@ -23,8 +23,8 @@ const char* const exitCodes =
     "  3  the FMU could not be loaded or instantiated\n"
     "  4  bad file: input table, parameter or configuration file unreadable or\n"
     "     malformed, or naming an unknown variable; output file not writable\n"
-    "  5  simulation error: an FMU call failed, the coupling did not converge or\n"
-    "     a body state became non-finite\n";
+    "  5  simulation error: an FMU call failed, an output became NaN or infinite,\n"
+    "     the coupling did not converge or a body state became non-finite\n";
 
 void printHelp(std::ostream& out)
 {

@@ -29,6 +29,38 @@ void expectRowsUpTo(const std::string& csv, double h, int last)
     }
 }
 
+// Steps of 1/4 s, exact in binary: A.F[1] is NaN from the step at 0.5 on,
+// so from the row for 0.75.
+TEST(FmusimReliability, RunStopsAtANonFiniteOutput)
+{
+    const std::string out = scratch("out.csv");
+    const harness::Result r = fmusim("run " + fixture("faultySpring") +
+                                     " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --output-file " + out);
+    EXPECT_EQ(r.exitCode, 5) << r.err;
+    EXPECT_TRUE(contains(r.err, "FMU '" + fixture("faultySpring") +
+                                    "', instance 'faultySpring': output 'A.F[1]' is "
+                                    "nan at t = 0.75, expected a finite number"))
+        << r.err;
+    expectRowsUpTo(out, 0.25, 2);
+}
+
+TEST(FmusimReliability, TwoBodyStopsAtANonFiniteOutput)
+{
+    // Both bodies fixed: the NaN load moves nothing, only the check stops it.
+    const std::string out = scratch("out.csv");
+    const harness::Result r =
+        fmusim("twobody " + fixture("faultySpring") +
+               " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --B.position 1,0,0 --A.motion fixed --B.motion fixed"
+               " --output-file " +
+               out);
+    EXPECT_EQ(r.exitCode, 5) << r.err;
+    EXPECT_TRUE(
+        contains(r.err, "FMU '" + fixture("faultySpring") +
+                            "', instance 'twobody': output 'A.F[1]' is nan at t = 0.75, expected a finite number"))
+        << r.err;
+    expectRowsUpTo(out, 0.25, 2);
+}
+
 // A segmentation fault in fmi2DoStep at t = 0.75 with steps of 1/1024 s:
 // fmusim dies of it, says where, and the 769 rows before are on disk (30 kB,
 // more than an output buffer holds, and not a multiple of it).
