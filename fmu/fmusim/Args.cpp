@@ -24,6 +24,16 @@ std::optional<double> Args::number(const std::string& option) const
     return value;
 }
 
+double timeoutOption(const Args& args)
+{
+    const std::optional<std::string> text = args.last("timeout");
+    if (!text) return 0;
+    const std::optional<double> seconds = toNumber(*text);
+    if (!seconds || *seconds < 0)
+        throw UsageError("--timeout must be a non-negative number of seconds, found '" + *text + "'");
+    return *seconds;
+}
+
 Args parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
                const std::set<std::string>& flagOptions)
 {

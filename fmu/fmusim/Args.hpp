@@ -24,6 +24,10 @@ struct Args
     bool flag(const std::string& name) const { return flags.count(name) != 0; }
 };
 
+// --timeout: the longest a call into the FMU may take [s], 0 (the default)
+// for no limit; UsageError unless a non-negative number.
+double timeoutOption(const Args& args);
+
 // Throws UsageError for an option not in valueOptions or flagOptions, or an
 // option without its value.
 Args parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,

@@ -4,6 +4,7 @@
 #include "CheckProbes.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
+#include "Watchdog.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -12,7 +13,7 @@ namespace fmusim {
 
 const char* checkUsage()
 {
-    return "fmusim check connector.fmu [--seed N] [--samples N] [--verbose]\n"
+    return "fmusim check connector.fmu [--seed N] [--samples N] [--verbose] [--timeout SECONDS]\n"
            "  Validates a connector FMU against docs/connector-fmu-interface.md: required\n"
            "  and optional variables (causality, variability, units), capabilities and\n"
            "  parameter start values; then probes it: equal and opposite forces and zero\n"
@@ -22,7 +23,8 @@ const char* checkUsage()
            "  variable step sizes, and fmi2Error (never a non-finite output) for\n"
            "  non-finite inputs. Prints 'PASS name', 'FAIL name: reason' or\n"
            "  'SKIP name: reason' per check and 'N passed, M failed' at the end.\n"
-           "  --verbose prints the FMU's log messages.\n";
+           "  --verbose prints the FMU's log messages. --timeout ends the check (exit code\n"
+           "  6) when one call into the FMU takes longer; default 0: no limit.\n";
 }
 
 namespace {
@@ -121,7 +123,7 @@ std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu, const Connec
 
 int checkCommand(const std::vector<std::string>& arguments)
 {
-    const Args args = parseArgs(arguments, {"seed", "samples"}, {"verbose"});
+    const Args args = parseArgs(arguments, {"seed", "samples", "timeout"}, {"verbose"});
     if (args.positional.size() != 1) throw UsageError("check needs exactly one FMU file");
     ProbeOptions options;
     if (const auto seed = args.number("seed"))
@@ -137,6 +139,7 @@ int checkCommand(const std::vector<std::string>& arguments)
         options.samples = static_cast<int>(*samples);
     }
     options.verbose = args.flag("verbose");
+    startWatchdog(timeoutOption(args));
 
     const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
     // An FMU that cannot be instantiated (a GUID mismatch, a failing

@@ -13,7 +13,8 @@ enum ExitCode
     exitUsage = 2,        // bad command line
     exitLoad = 3,         // the FMU could not be loaded or instantiated
     exitFile = 4,         // an input file is unreadable or malformed, or an output file cannot be written
-    exitSimulation = 5    // an FMU call failed or the simulation broke down
+    exitSimulation = 5,   // an FMU call failed or the simulation broke down
+    exitTimeout = 6       // an FMU call did not return within --timeout
 };
 
 // The command line is wrong.

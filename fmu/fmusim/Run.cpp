@@ -5,6 +5,7 @@
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "Settings.hpp"
+#include "Watchdog.hpp"
 
 #include <cmath>
 #include <optional>
@@ -26,6 +27,8 @@ const char* runUsage()
            "  --output-file out.csv   default: standard output\n"
            "  --output-variables a,b  default: every output\n"
            "  --logging               switch on the FMU's debug logging\n"
+           "  --timeout SECONDS       end the run (exit code 6) when one call into the FMU\n"
+           "                          takes longer; default 0: no limit\n"
            "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
            "  row for t + h is written after it (the connector interface's convention).\n"
            "  A NaN or infinite value in a Real column stops the run (exit code 5).\n";
@@ -47,14 +50,15 @@ struct RunOptions
     std::string inputFile, outputFile;
     std::optional<std::string> outputVariables;
     bool logging = false;
+    double timeout = 0;  // [s], 0: none
 };
 
 RunOptions parseRunOptions(const std::vector<std::string>& arguments)
 {
-    const Args args = parseArgs(
-        arguments,
-        {"start-time", "stop-time", "step-size", "set", "parameters", "input-file", "output-file", "output-variables"},
-        {"logging"});
+    const Args args = parseArgs(arguments,
+                                {"start-time", "stop-time", "step-size", "set", "parameters", "input-file",
+                                 "output-file", "output-variables", "timeout"},
+                                {"logging"});
     if (args.positional.size() != 1) throw UsageError("run needs exactly one FMU file");
     RunOptions o;
     o.fmuPath = args.positional[0];
@@ -72,6 +76,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments)
     o.outputFile = args.last("output-file").value_or("");
     o.outputVariables = args.last("output-variables");
     o.logging = args.flag("logging");
+    o.timeout = timeoutOption(args);
     return o;
 }
 
@@ -145,6 +150,7 @@ std::vector<const fmuImport::Variable*> outputVariables(const fmuImport::Fmu& fm
 int runCommand(const std::vector<std::string>& arguments)
 {
     const RunOptions o = parseRunOptions(arguments);
+    startWatchdog(o.timeout);
     const fmuImport::Fmu fmu = loadFmu(o.fmuPath);
     const fmuImport::ModelDescription& md = fmu.modelDescription();
 

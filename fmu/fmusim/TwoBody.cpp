@@ -4,6 +4,7 @@
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "TwoBodyConfig.hpp"
+#include "Watchdog.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -33,6 +34,8 @@ const char* twoBodyUsage()
            "    coupling-tolerance (1e-10): change of the loads relative to the largest\n"
            "      loads so far; max-coupling-iterations (50); initial-relaxation (0.5)\n"
            "    gravity (0 0 0) [m/s2]; output-file (standard output); write-every (1)\n"
+           "    timeout (0, no limit) [s]: end the run (exit code 6) when one call into\n"
+           "      the FMU takes longer\n"
            "    per body, prefix A. or B.:\n"
            "      motion: free (default), fixed, sinusoidal, world (B only; the default for\n"
            "        B when the connector declares no B. inputs)\n"
@@ -266,6 +269,7 @@ private:
 int twoBodyCommand(const std::vector<std::string>& args)
 {
     TwoBodyConfig config = parseTwoBodyConfig(args);
+    startWatchdog(config.timeout);
     const fmuImport::Fmu fmu = loadFmu(config.fmuPath);
     const Connector connector(fmu);
     const std::vector<std::string> missing = connector.missingRequired();

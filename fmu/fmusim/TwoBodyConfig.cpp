@@ -138,6 +138,8 @@ void apply(TwoBodyConfig& c, const Setting& s)
         c.maxCouplingIterations = static_cast<int>(scalar(s));
     else if (key == "initial-relaxation")
         c.initialRelaxation = scalar(s);
+    else if (key == "timeout")
+        c.timeout = scalar(s);
     else if (key == "scheme")
     {
         if (s.value == "explicit")
@@ -170,7 +172,8 @@ const std::vector<std::string>& twoBodyKeys()
                                    "write-every",
                                    "coupling-tolerance",
                                    "max-coupling-iterations",
-                                   "initial-relaxation"};
+                                   "initial-relaxation",
+                                   "timeout"};
         for (const std::string body : {"A.", "B."})
             for (const char* key : {"motion", "mass", "inertia", "position", "orientation", "velocity",
                                     "angular-velocity", "amplitude", "rotation-amplitude", "frequency", "phase"})
@@ -220,6 +223,7 @@ TwoBodyConfig parseTwoBodyConfig(const std::vector<std::string>& arguments)
     if (!(c.initialRelaxation > 0 && c.initialRelaxation <= 1))
         throw UsageError("initial-relaxation must be in (0, 1]");
     if (c.A.motion == MotionKind::world) throw UsageError("A.motion: only body B may be the world");
+    if (!(c.timeout >= 0)) throw UsageError("timeout must be a non-negative number of seconds");
     return c;
 }
 

@@ -33,6 +33,7 @@ struct TwoBodyConfig
     double initialRelaxation = 0.5;    // implicit: first Aitken factor of each step
     std::vector<Setting> fmuSettings;  // --set, --parameters
     bool logging = false;
+    double timeout = 0;  // the longest one call into the FMU may take [s], 0: no limit
 };
 
 // The configuration keys, for the help text and the option parser.

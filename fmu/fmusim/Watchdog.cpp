@@ -1,13 +1,20 @@
 #include "Watchdog.hpp"
 
+#include "Csv.hpp"
+#include "Errors.hpp"
+
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <thread>
 
 namespace fmusim {
 
@@ -26,7 +33,7 @@ struct CurrentCall
 CurrentCall current;
 
 // Writes text to standard error with write(2) only: usable in a signal
-// handler.
+// handler and while another thread holds std::cerr.
 void writeError(const char* text)
 {
     std::size_t left = std::strlen(text);
@@ -51,6 +58,52 @@ void describeCall(char* buffer, std::size_t size, const CallSite& site, const ch
     else
         std::snprintf(buffer, size, "%s at t = %.17g in FMU '%s', instance '%s'", function, time, site.fmuPath.c_str(),
                       site.instanceName.c_str());
+}
+
+[[noreturn]] void timeOut(const CallSite& site, const char* function, double time, double seconds)
+{
+    char call[2048], message[2304];
+    describeCall(call, sizeof call, site, function, time);
+    std::snprintf(message, sizeof message, "fmusim: time-out: %s did not return within %s s (--timeout)\n", call,
+                  formatNumber(seconds).c_str());
+    writeError(message);
+    // The FMU is still running in the main thread: no destructor will remove
+    // its unpacked copy, so remove it here (the mapped binary stays mapped).
+    std::error_code ignored;
+    std::filesystem::remove_all(site.unpackDirectory, ignored);
+    // Rows are written through (CsvWriter), so nothing is left to flush.
+    ::_exit(exitTimeout);
+}
+
+// Polls the call counter: a call still in progress, with the same count,
+// `seconds` after it was first seen has taken at least that long. It is
+// reported at most two polling periods late; calls cost nothing but the
+// counter updates.
+void watch(double seconds)
+{
+    using Clock = std::chrono::steady_clock;
+    const std::chrono::duration<double> limit(seconds), period(std::clamp(seconds / 8, 1e-3, 0.1));
+    std::uint64_t seen = 0;
+    Clock::time_point since;
+    for (;;)
+    {
+        std::this_thread::sleep_for(period);
+        const std::uint64_t count = current.count.load(std::memory_order_acquire);
+        if (count % 2 == 0) continue;
+        const Clock::time_point now = Clock::now();
+        if (count != seen)
+        {
+            seen = count;
+            since = now;
+            continue;
+        }
+        if (now - since < limit) continue;
+        const CallSite* site = current.site.load(std::memory_order_relaxed);
+        const char* function = current.function.load(std::memory_order_relaxed);
+        const double time = current.time.load(std::memory_order_relaxed);
+        if (current.count.load(std::memory_order_acquire) != count || !site || !function) continue;
+        timeOut(*site, function, time, seconds);
+    }
 }
 
 const char* signalName(int signal)
@@ -104,6 +157,12 @@ void crashed(int signal)
 }
 
 }  // namespace
+
+void startWatchdog(double seconds)
+{
+    if (!(seconds > 0)) return;
+    std::thread(watch, seconds).detach();
+}
 
 void installCrashReport()
 {

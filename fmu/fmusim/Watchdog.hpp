@@ -1,12 +1,15 @@
 // Every call into an FMU is announced here (an FmuCall for the length of
-// the call), so that fmusim can say which call crashed: a fatal-signal
-// handler (installCrashReport) names the call an FMU crashed in (SIGSEGV,
-// SIGBUS, SIGFPE, SIGILL, SIGABRT), with the FMU, the instance, the fmi2
-// function and the time, then lets the signal end the process as it would
-// have.
+// the call), so that fmusim can say which call never returned or crashed:
 //
-// It flushes no output: CsvWriter writes each row through, so the rows are
-// on disk before every call.
+// - a watchdog thread (startWatchdog) ends the process with exitTimeout
+//   when one call outlasts the time-out, with a message naming the FMU, the
+//   instance, the fmi2 function and the time;
+// - a fatal-signal handler (installCrashReport) names the call an FMU
+//   crashed in (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT), then lets the
+//   signal end the process as it would have.
+//
+// Neither flushes output: CsvWriter writes each row through, so the rows
+// are on disk before every call.
 #ifndef FMUSIM_WATCHDOG_HPP
 #define FMUSIM_WATCHDOG_HPP
 
@@ -14,12 +17,17 @@
 
 namespace fmusim {
 
-// What a message about a call names: the FMU file and the instance.
+// What a message about a call names: the FMU file and the instance, and the
+// directory the FMU is unpacked in (removed on a time-out).
 struct CallSite
 {
     std::string fmuPath;
     std::string instanceName;
+    std::string unpackDirectory;
 };
+
+// Starts the watchdog thread; seconds <= 0: no time-out. Once per process.
+void startWatchdog(double seconds);
 
 // Installs the fatal-signal handlers. Once per process, before the first
 // FMU is loaded (fmuImport then chains its own to them).

@@ -6,7 +6,7 @@ namespace fmusim {
 
 WatchedInstance::WatchedInstance(const fmuImport::Fmu& fmu, const std::string& name, fmuImport::Logger logger,
                                  bool loggingOn)
-    : site_(new CallSite{fmu.path(), name})
+    : site_(new CallSite{fmu.path(), name, fmu.unpackDirectory()})
 {
     const FmuCall call(*site_, "fmi2Instantiate", std::numeric_limits<double>::quiet_NaN());
     instance_ = std::make_unique<fmuImport::Instance>(fmu, name, std::move(logger), loggingOn);

@@ -1,5 +1,5 @@
 // An fmuImport::Instance whose every call into the FMU is announced to the
-// crash report (Watchdog.hpp): the same calls, each wrapped
+// watchdog and the crash report (Watchdog.hpp): the same calls, each wrapped
 // in an FmuCall naming its fmi2 function and communication point. fmusim
 // drives FMUs only through this class.
 #ifndef FMUSIM_WATCHEDINSTANCE_HPP

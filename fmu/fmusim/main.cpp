@@ -24,7 +24,8 @@ const char* const exitCodes =
     "  4  bad file: input table, parameter or configuration file unreadable or\n"
     "     malformed, or naming an unknown variable; output file not writable\n"
     "  5  simulation error: an FMU call failed, an output became NaN or infinite,\n"
-    "     the coupling did not converge or a body state became non-finite\n";
+    "     the coupling did not converge or a body state became non-finite\n"
+    "  6  time-out: a call into the FMU did not return within --timeout seconds\n";
 
 void printHelp(std::ostream& out)
 {

@@ -89,4 +89,70 @@ TEST(FmusimReliability, RowsSurviveACrashInTwoBody)
     expectRowsUpTo(out, 0.00390625, 192);
 }
 
+// fmi2DoStep at t = 0.75 never returns: --timeout 1 ends the run within a
+// few seconds, with exit code 6, a message naming the call, and the rows
+// before it on disk.
+TEST(FmusimReliability, RunTimesOutInAnEndlessStep)
+{
+    const std::string out = scratch("out.csv");
+    const harness::Result r = fmusim("run " + fixture("faultySpring") +
+                                         " --set hangTime=0.75 --step-size 0.00390625 --timeout 1 --output-file " + out,
+                                     60);
+    EXPECT_EQ(r.exitCode, 6) << r.err;
+    EXPECT_LT(r.seconds, 10);
+    EXPECT_TRUE(contains(r.err, "fmusim: time-out: fmi2DoStep at t = 0.75 in FMU '" + fixture("faultySpring") +
+                                    "', instance 'faultySpring' did not return within 1 s (--timeout)"))
+        << r.err;
+    expectRowsUpTo(out, 0.00390625, 192);
+}
+
+TEST(FmusimReliability, TwoBodyTimesOutInAnEndlessStep)
+{
+    const std::string out = scratch("out.csv");
+    const harness::Result r = fmusim(
+        "twobody " + fixture("faultySpring") +
+            " --set hangTime=0.3 --B.position 1,0,0 --step-size 0.25 --stop-time 2 --timeout 0.5 --output-file " + out,
+        60);
+    EXPECT_EQ(r.exitCode, 6) << r.err;
+    EXPECT_LT(r.seconds, 10);
+    EXPECT_TRUE(contains(r.err, "fmi2DoStep at t = 0.5 in FMU '" + fixture("faultySpring") +
+                                    "', instance 'twobody' did not return within 0.5 s"))
+        << r.err;
+    expectRowsUpTo(out, 0.25, 2);
+}
+
+TEST(FmusimReliability, CheckTimesOutInAnEndlessStep)
+{
+    const harness::Result r = fmusim("check " + fixture("hangingSpring") + " --timeout 1", 60);
+    EXPECT_EQ(r.exitCode, 6) << r.out << r.err;
+    EXPECT_LT(r.seconds, 10);
+    EXPECT_TRUE(contains(r.out, "PASS initialization\n")) << r.out;  // the checks before it are reported
+    EXPECT_TRUE(contains(r.err, "fmi2DoStep at t = 0 in FMU '" + fixture("hangingSpring") +
+                                    "', instance 'random' did not return within 1 s"))
+        << r.err;
+}
+
+TEST(FmusimReliability, TimeOutIsANonNegativeNumber)
+{
+    for (const char* command : {"run", "check", "twobody"})
+    {
+        const harness::Result negative = fmusim(std::string(command) + " " + fixture("testSpring") + " --timeout -1");
+        EXPECT_EQ(negative.exitCode, 2) << command;
+        EXPECT_TRUE(contains(negative.err, "timeout must be a non-negative number of seconds")) << negative.err;
+        EXPECT_EQ(fmusim(std::string(command) + " " + fixture("testSpring") + " --timeout soon").exitCode, 2)
+            << command;
+    }
+    // 0, the default: no time-out.
+    EXPECT_EQ(fmusim("run " + fixture("faultySpring") + " --timeout 0 --stop-time 0.1").exitCode, 0);
+}
+
+TEST(FmusimReliability, HelpDocumentsTheTimeOut)
+{
+    const harness::Result r = fmusim("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* part : {"--timeout SECONDS       end the run (exit code 6)", "[--timeout SECONDS]",
+                             "timeout (0, no limit) [s]", "6  time-out: a call into the FMU did not return"})
+        EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
+}
+
 }  // namespace
