@@ -234,9 +234,9 @@ do
     # measured 2.3e-5 m/s sheared against 9.3e-6 m/s aligned with
     # interFoamAliasSafe (the sheared cells change it by a factor of 2.5).
     # 10 times the reference leaves room for other machines; a wrong
-    # reconstruction grows about fivefold per 0.01 s time step and passes
-    # 10 times the reference by t = 0.05 s (Debian's interFoam: 2.6e-4 m/s
-    # at 0.05 s, 0.64 m/s at 0.1 s, then it stops).
+    # reconstruction grows three- to fivefold per 0.01 s time step and
+    # passes 10 times the reference at t = 0.05 s (Debian's interFoam:
+    # 2.6e-4 m/s at 0.05 s, 0.64 m/s at 0.1 s, then it stops).
     atRest=false
     if [ "$maxU" != none ] \
     && awk -v u="$maxU" -v r="$refU" 'BEGIN{exit !(u <= 10*r)}' \
