@@ -53,6 +53,25 @@ std::string joined(const std::vector<std::string>& problems)
     return text;
 }
 
+// fmi2Instantiate and fmi2FreeInstance, the FMU's messages shown only when
+// verbose (as in the probes); LoadError if it cannot be instantiated.
+void instantiateQuietly(const fmuImport::Fmu& fmu, bool verbose)
+{
+    try
+    {
+        WatchedInstance(
+            fmu, "check",
+            [verbose](const std::string& i, int status, const std::string& category, const std::string& m) {
+                if (verbose) stderrLogger(true)(i, status, category, m);
+            },
+            false);
+    }
+    catch (const fmuImport::Error& e)
+    {
+        throw LoadError(e.what());
+    }
+}
+
 CheckResult verdict(const std::string& name, const std::vector<std::string>& problems)
 {
     return problems.empty() ? CheckResult{name, CheckResult::pass, ""}
@@ -142,10 +161,6 @@ int checkCommand(const std::vector<std::string>& arguments)
     startWatchdog(timeoutOption(args));
 
     const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
-    // An FMU that cannot be instantiated (a GUID mismatch, a failing
-    // fmi2Instantiate) is a load error, exit code 3 as for run and twobody,
-    // not a failed check: there is nothing to check.
-    instantiate(fmu, "check", options.verbose);
     const Connector connector(fmu);
 
     int passed = 0, failed = 0;
@@ -163,6 +178,20 @@ int checkCommand(const std::vector<std::string>& arguments)
         std::cout.flush();
     };
     for (const CheckResult& r : interfaceChecks(fmu, connector)) report(r);
+    // An FMU that cannot be instantiated (a GUID mismatch, a failing
+    // fmi2Instantiate) is a load error, exit code 3 as for run and twobody,
+    // not merely a failed check: nothing else can be checked. The report
+    // still ends with its reason and the count.
+    try
+    {
+        instantiateQuietly(fmu, options.verbose);
+    }
+    catch (const LoadError& e)
+    {
+        report({"initialization", CheckResult::fail, e.what()});
+        std::cout << passed << " passed, " << failed << " failed\n";
+        throw;
+    }
     if (connector.missingRequired().empty())
         runProbes(fmu, connector, options, report);
     else

@@ -61,12 +61,14 @@ TEST(FmusimCheck, NonConnectorFailsTheInterface)
 TEST(FmusimCheck, Errors)
 {
     EXPECT_EQ(fmusim("check " + fixture("notAZip")).exitCode, 3);
-    // Cannot be instantiated: a load error (3), as for run, not a failed check (1).
+    // Cannot be instantiated: a load error (3), as for run, not a failed
+    // check (1); the report still gives the reason.
     const harness::Result guid = fmusim("check " + fixture("guidMismatch"));
     EXPECT_EQ(guid.exitCode, 3) << guid.out << guid.err;
-    EXPECT_TRUE(contains(guid.err, "fmusim: cannot load the FMU: fmi2Instantiate failed in FMU '" +
-                                       fixture("guidMismatch") + "', instance 'check'"))
-        << guid.err;
+    const std::string reason = "fmi2Instantiate failed in FMU '" + fixture("guidMismatch") + "', instance 'check'";
+    EXPECT_TRUE(contains(guid.err, "fmusim: cannot load the FMU: " + reason)) << guid.err;
+    EXPECT_TRUE(contains(guid.out, "FAIL initialization: " + reason)) << guid.out;
+    EXPECT_TRUE(contains(guid.out, "4 passed, 2 failed\n")) << guid.out;
     EXPECT_EQ(fmusim("check " + fixture("testSpring") + " --seed -1").exitCode, 2);
     EXPECT_EQ(fmusim("check").exitCode, 2);
 }
