@@ -79,11 +79,10 @@ Foam::fmuConnectorState::fmuConnectorState
     ),
     fmu_(fmu)
 {
+    // A time written by an earlier run has a time index (uniform/time);
+    // a case's initial time has none, even when it gives the bodies' state
     const Time& runTime = time.time();
-    const fileName bodiesState
-    (
-        runTime.timePath()/"uniform"/"rigidBodyMotionState"
-    );
+    const bool restarted = runTime.startTimeIndex() > 0;
     const bool stateFile = headerOk();
 
     if (fresh)
@@ -113,12 +112,14 @@ Foam::fmuConnectorState::fmuConnectorState
         readData(readStream(typeName));
         close();
     }
-    else if (isFile(bodiesState))
+    else if (restarted)
     {
         FatalIOErrorInFunction(restraintDict)
             << "restraint " << name << ": the run starts from t = "
-            << runTime.timeName() << ", written by an earlier run ("
-            << bodiesState << "), but the connector's state "
+            << runTime.timeName() << ", written by an earlier run (time"
+            << " index " << runTime.startTimeIndex() << " in "
+            << runTime.timePath()/"uniform"/"time"
+            << "), but the connector's state "
             << objectPath() << " is missing"
             << (
                    fmu_.canSerialize() ? ""
