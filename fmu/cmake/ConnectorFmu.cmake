@@ -4,7 +4,11 @@
 # fmuExport::createModel():
 #   <name>          MODULE library <name>.so (no lib prefix, hidden
 #                   visibility; a version script exports the fmi2 functions
-#                   and nothing else, the static libraries stay hidden)
+#                   and nothing else, the static libraries stay hidden).
+#                   Self-contained: libstdc++ and SUNDIALS linked in, so
+#                   that it needs only the system's C libraries (libc, libm,
+#                   libgcc_s) of glibc 2.34 or later (glibcCompat.c), and
+#                   runs beside any host's C++ runtime
 #   <name>Generator writes modelDescription.xml and documentation/index.html
 #                   from the model's variable table
 #   <name>Fmu       (part of `all`) zips the staging directory
@@ -29,12 +33,15 @@ function(add_connector_fmu)
 
   add_library(${name} MODULE
     $<TARGET_OBJECTS:${name}Model>
-    $<TARGET_OBJECTS:fmuExportEntryPoints>)
+    $<TARGET_OBJECTS:fmuExportEntryPoints>
+    ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/glibcCompat.c)
   target_link_libraries(${name} PRIVATE fmuExport)
   set(exports ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/fmi2Exports.map)
   target_link_options(${name} PRIVATE
     -Wl,--version-script=${exports}
-    -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,--as-needed)
+    -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,--as-needed
+    -static-libstdc++
+    -Wl,--wrap=hypot,--wrap=pow,--wrap=getentropy,--wrap=arc4random)
   set_target_properties(${name} PROPERTIES
     PREFIX ""
     SUFFIX ".so"

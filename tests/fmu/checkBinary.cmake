@@ -1,6 +1,10 @@
-# cmake -DFMU=<x.fmu> -DNAME=<modelIdentifier> -DWORK_DIR=<dir> -P checkBinary.cmake
+# cmake -DFMU=<x.fmu> -DNAME=<modelIdentifier> -DWORK_DIR=<dir>
+#       -DMAX_GLIBC=<2.xx> -P checkBinary.cmake
 # The binary of an FMU exports exactly the 44 fmi2 functions of the standard
-# and depends only on system libraries.
+# and is self-contained: it needs only the C libraries every Linux x86-64
+# system has (no libstdc++, no SUNDIALS), of glibc MAX_GLIBC at most, and
+# loads with nothing else on the library path.
+cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -E tar xf ${FMU} WORKING_DIRECTORY ${WORK_DIR})
@@ -41,3 +45,58 @@ foreach(line IN LISTS lines)
   endif()
 endforeach()
 message(STATUS "${so}: ${count} fmi2 symbols exported, system libraries only")
+
+# Only the C libraries: libstdc++ and SUNDIALS are linked in. libgcc_s
+# (the unwinder) is part of every glibc system: glibc loads it itself.
+set(allowed libc.so.6 libm.so.6 libdl.so.2 libpthread.so.0 libgcc_s.so.1
+            ld-linux-x86-64.so.2)
+execute_process(COMMAND readelf -d ${so} OUTPUT_VARIABLE dynamic RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "readelf failed on ${so}")
+endif()
+string(REGEX MATCHALL "NEEDED\\)[^[]*\\[([^]]+)\\]" entries "${dynamic}")
+foreach(entry IN LISTS entries)
+  string(REGEX REPLACE ".*\\[([^]]+)\\]" "\\1" library "${entry}")
+  if(NOT library IN_LIST allowed)
+    message(FATAL_ERROR "${so} needs ${library}; an FMU binary may need only ${allowed}")
+  endif()
+endforeach()
+
+# The lowest glibc it runs on: the highest symbol version it asks for
+execute_process(COMMAND objdump -T ${so} OUTPUT_VARIABLE imports RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "objdump failed on ${so}")
+endif()
+string(REGEX MATCHALL "(GLIBCXX|CXXABI)_[0-9.]+" cxx "${imports}")
+if(cxx)
+  list(REMOVE_DUPLICATES cxx)
+  message(FATAL_ERROR "${so} asks for the C++ runtime's ${cxx}: libstdc++ must be linked in")
+endif()
+string(REGEX MATCHALL "GLIBC_[0-9.]+" versions "${imports}")
+set(highest 0)
+foreach(version IN LISTS versions)
+  string(REPLACE "GLIBC_" "" version "${version}")
+  if(version VERSION_GREATER highest)
+    set(highest ${version})
+  endif()
+endforeach()
+if(highest VERSION_GREATER MAX_GLIBC)
+  message(FATAL_ERROR "${so} needs glibc ${highest}; the FMUs promise ${MAX_GLIBC} (fmu/cmake/glibcCompat.c)")
+endif()
+
+# Loads, and its fmi2GetVersion answers, with an empty library path and
+# neither libstdc++ nor SUNDIALS mapped into the process
+set(probe "import ctypes, sys
+lib = ctypes.CDLL(sys.argv[1])
+lib.fmi2GetVersion.restype = ctypes.c_char_p
+version = lib.fmi2GetVersion().decode()
+maps = open('/proc/self/maps').read()
+foreign = [name for name in ('libstdc++', 'libsundials') if name in maps]
+print(version, foreign)
+sys.exit(1 if version != '2.0' or foreign else 0)")
+execute_process(COMMAND ${CMAKE_COMMAND} -E env LD_LIBRARY_PATH= python3 -c "${probe}" ${so}
+  OUTPUT_VARIABLE loaded ERROR_VARIABLE loadError RESULT_VARIABLE failed)
+if(failed)
+  message(FATAL_ERROR "${so} does not load on its own: ${loaded}${loadError}")
+endif()
+message(STATUS "${so}: needs glibc ${highest} (promised ${MAX_GLIBC}), C libraries only; loaded alone: ${loaded}")
