@@ -7,7 +7,7 @@
 // how:
 //   exit          exit(1), as OpenFOAM's FatalError does
 //   term, int     raise the signal
-//   segv          dereference a null pointer
+//   segv          store to a page without access
 //   abort         abort()
 //   term-before   install a handler before loading the FMU, then raise
 //                 SIGTERM; the handler writes the marker, resets SIGTERM to
@@ -16,12 +16,17 @@
 //   term-after, segv-after
 //                 the same handler, installed after loading the FMU; it
 //                 restores the handler it replaced before raising again
+//   stack-overflow
+//                 install a SIGSEGV handler on an alternate stack before
+//                 loading the FMU (as fmusim does), then overflow the stack
+//   ill           an illegal instruction (__builtin_trap)
 //   term-graceful a handler that only writes the marker (a program that
 //                 stops at its next write); the process goes on: the unpack
 //                 directory must still be there, then it returns normally
 #include "fmuImport/fmuImport.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -55,14 +60,27 @@ extern "C" void resetAndRaise(int sig)
 
 extern "C" void onlyMark(int) { writeMarker("handler ran\n"); }
 
-void install(int sig, void (*handler)(int))
+void install(int sig, void (*handler)(int), int flags = 0)
 {
     struct sigaction action;
     std::memset(&action, 0, sizeof action);
     action.sa_handler = handler;
+    action.sa_flags = flags;
     sigemptyset(&action.sa_mask);
     sigaction(sig, &action, &replaced[sig]);
 }
+
+volatile bool deeper = true;  // always true; keeps the compiler from calling the recursion infinite
+
+// Does not return: each frame keeps 4 KiB of stack until the stack is gone.
+int recurse(int depth)
+{
+    volatile char frame[4096];
+    frame[depth % sizeof frame] = static_cast<char>(depth);
+    return (deeper ? recurse(depth + 1) : 0) + frame[0];
+}
+
+char alternateStack[64 * 1024];
 
 }  // namespace
 
@@ -79,6 +97,14 @@ int main(int argc, char** argv)
     setrlimit(RLIMIT_CORE, &noCore);
 
     if (how == "term-before") install(SIGTERM, resetAndRaise);
+    if (how == "stack-overflow")
+    {
+        stack_t stack{};
+        stack.ss_sp = alternateStack;
+        stack.ss_size = sizeof alternateStack;
+        sigaltstack(&stack, nullptr);
+        install(SIGSEGV, resetAndRaise, SA_ONSTACK);
+    }
     fmuImport::Fmu fmu(argv[1]);
     fmuImport::Instance instance(fmu, "cleanup");
     const std::filesystem::path unpacked = fmu.unpackDirectory();
@@ -91,10 +117,14 @@ int main(int argc, char** argv)
     if (how == "int") raise(SIGINT);
     if (how == "segv" || how == "segv-after")
     {
-        volatile int* nowhere = nullptr;
-        *nowhere = 1;
+        // A real fault, without undefined behaviour for UBSan to catch
+        // first: a store to a page without access.
+        void* page = mmap(nullptr, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        *static_cast<volatile int*>(page) = 1;
     }
     if (how == "abort") std::abort();
+    if (how == "stack-overflow") return recurse(0);
+    if (how == "ill") __builtin_trap();
 
     if (how == "term-graceful")
     {

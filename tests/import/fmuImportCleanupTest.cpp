@@ -86,6 +86,17 @@ TEST(UnpackCleanup, SegmentationFaultRemovesTheUnpackDirectory) { expectSignalle
 
 TEST(UnpackCleanup, AbortRemovesTheUnpackDirectory) { expectSignalled(runHelper("abort"), SIGABRT); }
 
+TEST(UnpackCleanup, IllegalInstructionRemovesTheUnpackDirectory) { expectSignalled(runHelper("ill"), SIGILL); }
+
+// The host handles SIGSEGV on an alternate stack (fmusim does, to report a
+// stack overflow in an FMU): the importer's handler must run there too.
+TEST(UnpackCleanup, StackOverflowWithTheHostsAlternateStack)
+{
+    const Outcome o = runHelper("stack-overflow");
+    expectSignalled(o, SIGSEGV);
+    EXPECT_EQ(o.marker, "handler ran\n");
+}
+
 TEST(UnpackCleanup, HostHandlerInstalledBeforeStillRuns)
 {
     const Outcome o = runHelper("term-before");

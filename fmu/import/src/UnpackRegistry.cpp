@@ -44,10 +44,10 @@ struct Chunk
 std::atomic<Chunk*> chunks{nullptr};
 std::mutex addMutex;  // serialises add(); removeAll() needs no lock
 
-const int handledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGFPE, SIGABRT, SIGBUS};
+const int handledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV, SIGFPE, SIGABRT, SIGBUS, SIGILL};
 struct sigaction previousActions[NSIG];  // written once, before our handlers are installed
 
-bool isFault(int sig) { return sig == SIGSEGV || sig == SIGFPE || sig == SIGABRT || sig == SIGBUS; }
+bool isFault(int sig) { return sig == SIGSEGV || sig == SIGFPE || sig == SIGABRT || sig == SIGBUS || sig == SIGILL; }
 
 bool isDefault(const struct sigaction& action)
 {
@@ -58,9 +58,9 @@ bool isDefault(const struct sigaction& action)
 // before. The directory removal uses only async-signal-safe calls (see
 // RemoveTree.hpp): the process may be stopped anywhere, in malloc or
 // holding a lock, and is about to die.
-//  - A fault (SIGSEGV, SIGFPE, SIGABRT, SIGBUS) ends the process: remove
-//    first, then chain.
-//  - SIGINT, SIGTERM, SIGHUP may be handled by a program that goes on, such
+//  - A fault (SIGSEGV, SIGFPE, SIGABRT, SIGBUS, SIGILL) ends the process:
+//    remove first, then chain.
+//  - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE may be handled by a program that goes on, such
 //    as OpenFOAM's stopAtWriteNow, which needs its FMU files until it
 //    stops: remove first only if the previous disposition was the default
 //    one; otherwise call the previous handler and remove only if it reset
@@ -105,7 +105,10 @@ void installHandlers()
         struct sigaction action;
         std::memset(&action, 0, sizeof action);
         action.sa_sigaction = onFatalSignal;
-        action.sa_flags = SA_SIGINFO | (previous.sa_flags & SA_RESTART);
+        // SA_ONSTACK: on the alternate stack when the thread has one (fmusim
+        // sets one up to report stack overflows in an FMU); removal needs
+        // about 1.5 KiB of stack.
+        action.sa_flags = SA_SIGINFO | SA_ONSTACK | (previous.sa_flags & SA_RESTART);
         sigemptyset(&action.sa_mask);
         sigaction(sig, &action, nullptr);
     }

@@ -14,7 +14,8 @@ public:
     struct Slot;
 
     // Registers directory, to be removed at exit and on SIGINT, SIGTERM,
-    // SIGHUP, SIGSEGV, SIGFPE, SIGABRT and SIGBUS. The first registration
+    // SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV, SIGFPE, SIGABRT, SIGBUS and SIGILL.
+    // The first registration
     // installs the atexit handler and the signal handlers; a signal whose
     // disposition is SIG_IGN then is left alone. Returns nullptr if the path
     // is too long to keep (the directory is then removed by its owner only).

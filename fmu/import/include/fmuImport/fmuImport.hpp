@@ -99,9 +99,9 @@ using Logger = std::function<void(const std::string& instanceName, int status, c
 //
 // The directory is removed on failure and when the last Fmu and Instance of
 // it are gone (instances keep the binary loaded), and also when the process
-// ends by exit() or by SIGINT, SIGTERM, SIGHUP, SIGSEGV, SIGFPE, SIGABRT or
-// SIGBUS (handlers installed at the first load; they chain to the handlers
-// installed before or after them). Host floating-point traps are masked
+// ends by exit() or by SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV,
+// SIGFPE, SIGABRT, SIGBUS or SIGILL (handlers installed at the first load;
+// they chain to the handlers installed before or after them). Host floating-point traps are masked
 // during every call into the FMU. A moved-from Fmu or Instance may only be
 // destroyed or assigned to.
 class Fmu
