@@ -23,8 +23,8 @@ ParameterError::ParameterError(const std::string& law, const std::string& name,
                                double value, const std::string& unit,
                                const std::string& allowed)
     : ConnectorError(law + ": parameter " + name + " = " + formatValue(value)
-                     + " " + unit + " is out of range (allowed: " + allowed
-                     + ")")
+                     + (unit.empty() || unit == "1" ? "" : " " + unit)
+                     + " is out of range (allowed: " + allowed + ")")
 {
 }
 

@@ -122,7 +122,24 @@ SavedState deserializeState(const char* bytes, std::size_t size,
     // Internal state: present when the bytes go on after the value array
     std::size_t internalCount = 0;
     const std::size_t base = serializedSize(valueCount);
-    if (header.valueCount == valueCount && size >= base + sizeof(std::uint64_t)) {
+    const std::string sizeText =
+        "serialized state has " + std::to_string(size) + " bytes";
+    if (header.valueCount != valueCount) {
+        throw UsageError(sizeText + " of " + std::to_string(header.valueCount)
+                         + " values, expected " + std::to_string(valueCount)
+                         + " values");
+    }
+    if (size < base) {
+        throw UsageError(sizeText + ", shorter than its value array ("
+                         + std::to_string(base) + " bytes)");
+    }
+    if (size > base && size < base + sizeof(std::uint64_t)) {
+        throw UsageError(sizeText + ", expected " + std::to_string(base)
+                         + " without internal state, or at least "
+                         + std::to_string(base + sizeof(std::uint64_t))
+                         + " with one");
+    }
+    if (size >= base + sizeof(std::uint64_t)) {
         std::uint64_t count = 0;
         std::memcpy(&count, bytes + base, sizeof count);
         if (count > 0 && count < (std::uint64_t(1) << 40)) {
@@ -130,7 +147,7 @@ SavedState deserializeState(const char* bytes, std::size_t size,
         }
     }
     const std::size_t expected = serializedSize(valueCount, internalCount);
-    if (header.valueCount != valueCount || size != expected) {
+    if (size != expected) {
         throw UsageError("serialized state has " + std::to_string(size)
                          + " bytes, expected " + std::to_string(expected));
     }

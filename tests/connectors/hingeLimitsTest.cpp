@@ -162,7 +162,7 @@ TEST(HingeLimits, BadParametersAreNamed)
         "finite)");
     expectThrowWithMessage<ParameterError>(
         [&] { Hinge(with([&](HingeParameters& p) { p.axis_B[1] = nan; })); },
-        "hinge: parameter B.axis[2] = nan 1 is out of range (allowed: finite)");
+        "hinge: parameter B.axis[2] = nan is out of range (allowed: finite)");
     expectThrowWithMessage<ConnectorError>(
         [&] {
             Hinge(with([](HingeParameters& p) { p.axis_A = Vector3::Zero(); }));

@@ -144,10 +144,15 @@ TEST_P(FmuStates, DeserializingGarbageFails)
     longer.push_back(0);
     EXPECT_EQ(f.DeSerializeFMUstate(in.c, longer.data(), longer.size(), &s),
               fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
-                                    + std::to_string(longer.size())
-                                    + " bytes, expected "
-                                    + std::to_string(good.size()));
+    // the size of this FMU's states first (then, for an FMU without
+    // internal state, the size a state with one would need)
+    EXPECT_EQ(in.lastMessage().rfind("fmi2DeSerializeFMUstate: serialized state has "
+                                         + std::to_string(longer.size())
+                                         + " bytes, expected "
+                                         + std::to_string(good.size()),
+                                     0),
+              0u)
+        << in.lastMessage();
     EXPECT_EQ(s, nullptr);
     // The instance is untouched by the rejected calls.
     EXPECT_EQ(f.DoStep(in.c, 0.5, 0.1, fmi2False), fmi2OK);

@@ -161,6 +161,23 @@ TEST(MooringLineFmu, SerializedStateContinuesInAnotherInstance)
     EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
                                        + std::to_string(cut.size()) + " bytes, expected "
                                        + std::to_string(bytes.size()));
+    // cut within the count of the internal state, and within the values:
+    // the message says where, not a size the line's state never has
+    const std::size_t internalBytes = sizeof(std::uint64_t) + (7 + 6 * 9) * sizeof(double); // N = 10
+    const std::size_t values = bytes.size() - internalBytes;
+    cut.assign(bytes.begin(), bytes.begin() + values + 4);
+    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
+    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
+                                       + std::to_string(cut.size())
+                                       + " bytes, expected " + std::to_string(values)
+                                       + " without internal state, or at least "
+                                       + std::to_string(values + 8) + " with one");
+    cut.assign(bytes.begin(), bytes.begin() + values - 8);
+    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
+    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
+                                       + std::to_string(cut.size())
+                                       + " bytes, shorter than its value array ("
+                                       + std::to_string(values) + " bytes)");
 }
 
 TEST(MooringLineFmu, ParameterErrorsAreNamed)
@@ -168,6 +185,9 @@ TEST(MooringLineFmu, ParameterErrorsAreNamed)
     LoadedFmu fmu("mooringLine");
     for (const auto& [name, value, message] :
          {std::tuple<std::string, double, std::string>{
+              "relativeTolerance", 0.0,
+              "mooringLine: parameter relativeTolerance = 0 is out of range (allowed: finite and > 0)"},
+          {
               "segments", 2.5,
               "mooringLine: parameter segments = 2.5 is out of range (allowed: an "
               "integer from 2 to 1000)"},
