@@ -157,6 +157,38 @@ void Instance::doStep(double currentTime, double stepSize, bool noSetFMUStatePri
     impl_->time = currentTime + stepSize;
 }
 
+Instance::StepResult Instance::tryDoStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint)
+{
+    impl_->beginCall();
+    const fmi2Status status = callFmu(impl_->api().DoStep, impl_->component, currentTime, stepSize,
+                                      noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False);
+    if (status != fmi2Discard)
+    {
+        impl_->check(status, "fmi2DoStep", currentTime);
+        impl_->time = currentTime + stepSize;
+        return StepResult::completed;
+    }
+    // Asking does not forget why the step was discarded
+    const std::string reason = impl_->lastNotice;
+    fmi2Boolean terminated = fmi2False;
+    impl_->check(callFmu(impl_->api().GetBooleanStatus, impl_->component, fmi2Terminated, &terminated),
+                 "fmi2GetBooleanStatus(fmi2Terminated)", currentTime);
+    impl_->lastNotice = reason;
+    return terminated ? StepResult::terminated : StepResult::discarded;
+}
+
+double Instance::lastSuccessfulTime()
+{
+    const std::string reason = impl_->lastNotice;
+    fmi2Real time = 0;
+    impl_->check(callFmu(impl_->api().GetRealStatus, impl_->component, fmi2LastSuccessfulTime, &time),
+                 "fmi2GetRealStatus(fmi2LastSuccessfulTime)", impl_->time);
+    impl_->lastNotice = reason;
+    return time;
+}
+
+std::string Instance::lastMessage() const { return impl_->lastNotice; }
+
 Instance::State::State() : state_(nullptr), time_(std::numeric_limits<double>::quiet_NaN()) {}
 
 Instance::State::~State()

@@ -85,6 +85,7 @@ void Instance::Impl::receive(const std::string& instanceName, int status, const 
                              const std::string& message)
 {
     if (status >= fmi2Error) lastError = message;
+    if (status >= fmi2Warning) lastNotice = message;
     if (logger)
     {
         logger(instanceName, status, category, message);

@@ -22,6 +22,7 @@ struct Instance::Impl
     fmi2Component component = nullptr;
     double time = 0;
     std::string lastError;  // last error the FMU logged during the current call
+    std::string lastNotice;  // last message at fmi2Warning or above, the same
     bool admitted = false;  // counted in fmu->liveInstances
 
     Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& fmuPath, const std::string& name, Logger logger);
@@ -37,7 +38,11 @@ struct Instance::Impl
     void admit();
 
     // Call before each fmi2 call: forgets the error text of earlier calls.
-    void beginCall() { lastError.clear(); }
+    void beginCall()
+    {
+        lastError.clear();
+        lastNotice.clear();
+    }
 
     // Throws Error for fmi2Error, fmi2Fatal, fmi2Discard and fmi2Pending,
     // naming function, the detail (" at t = ..."), the FMU and the

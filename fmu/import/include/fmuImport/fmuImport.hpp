@@ -84,8 +84,9 @@ using Logger = std::function<void(const std::string& instanceName, int status, c
 // the archive (fmiVersion 2.0, <CoSimulation>), then unpacks it, the binary
 // binaries/linux64/<modelIdentifier>.so and everything under resources/
 // (nothing else) into a private temporary directory,
-// $TMPDIR/fmuImport-<pid>-XXXXXX, loads the binary and resolves every fmi2
-// function.
+// $TMPDIR/fmuImport-<pid>-XXXXXX, loads the binary and resolves the common
+// and co-simulation fmi2 functions (a co-simulation-only FMU need not
+// export the model-exchange ones).
 //
 // Limits: an entry may unpack to at most 256 MiB, all of them together to
 // at most 1 GiB, or to the number of bytes in the environment variable
@@ -165,6 +166,31 @@ public:
 
     // Advances from currentTime to currentTime + stepSize; fmi2Discard throws.
     void doStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint = false);
+
+    // What a step that the FMU may refuse came to (FMI 2.0, 4.2.3):
+    // completed; discarded, the FMU computed only part of the step
+    // (lastSuccessfulTime() says how far); or terminated, the FMU asks to
+    // end the simulation (fmi2Discard with fmi2Terminated true: its outputs
+    // are those of lastSuccessfulTime()).
+    enum class StepResult
+    {
+        completed,
+        discarded,
+        terminated
+    };
+
+    // doStep that returns fmi2Discard as discarded or terminated instead of
+    // throwing; fmi2Error, fmi2Fatal and fmi2Pending throw. time() stays at
+    // currentTime after a discarded or terminated step.
+    StepResult tryDoStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint = false);
+
+    // fmi2GetRealStatus(fmi2LastSuccessfulTime): after a discarded step, the
+    // time up to which the FMU computed
+    double lastSuccessfulTime();
+
+    // The FMU's last log message at fmi2Warning or above during the latest
+    // call (a discarded step's reason), empty if none
+    std::string lastMessage() const;
 
     struct Impl;
 
