@@ -19,7 +19,8 @@ const char* runUsage()
            "  --start-time T0         default: DefaultExperiment startTime, else 0\n"
            "  --stop-time T1          default: DefaultExperiment stopTime, else T0 + 1\n"
            "  --step-size H           default: DefaultExperiment stepSize, else (T1 - T0)/500\n"
-           "  --set name=value        set a parameter or input before initialization (repeatable)\n"
+           "  --set name=value        set a parameter, an input or a variable with a start value\n"
+           "                          (initial exact or approx) before initialization (repeatable)\n"
            "  --parameters file       'name = value' per line, '#' comments; --set wins\n"
            "  --input-file in.csv     header: time, then input names; Real inputs are\n"
            "                          interpolated linearly, others take the last row at or\n"
@@ -31,7 +32,9 @@ const char* runUsage()
            "                          takes longer; default 0: no limit\n"
            "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
            "  row for t + h is written after it (the connector interface's convention).\n"
-           "  A NaN or infinite value in a Real column stops the run (exit code 5).\n";
+           "  A NaN or infinite value in a Real column stops the run (exit code 5).\n"
+           "  An FMU that asks to end the simulation (fmi2Discard, fmi2Terminated) ends\n"
+           "  the run there (exit code 0); a step discarded otherwise is exit code 5.\n";
 }
 
 namespace {
@@ -194,7 +197,13 @@ int runCommand(const std::vector<std::string>& arguments)
         const double t = t0 + k * h;
         const double next = k + 1 == steps ? t1 : t0 + (k + 1) * h;
         if (table) setInputs(instance, &*table, columns, next);
-        instance.doStep(t, next - t);
+        if (!stepOrEnd(instance, t, next - t))
+        {
+            // Outputs of the last successful time, if the FMU got past t
+            const double reached = instance.lastSuccessfulTime();
+            if (reached > t) writeRow(reached);
+            break;
+        }
         writeRow(next);
     }
     instance.terminate();

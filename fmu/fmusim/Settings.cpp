@@ -1,5 +1,7 @@
 #include "Settings.hpp"
 
+#include <iostream>
+
 #include "Args.hpp"
 #include "Csv.hpp"
 #include "Errors.hpp"
@@ -58,8 +60,29 @@ std::vector<Setting> parseSetOptions(const std::vector<std::string>& options)
 bool isSettable(const fmuImport::Variable& v)
 {
     using fmuImport::Causality;
+    const bool initialExactOrApprox = v.hasStart && v.variability != fmuImport::Variability::constant &&
+                                      (v.causality == Causality::output || v.causality == Causality::local);
     return v.causality == Causality::parameter || v.causality == Causality::input ||
-           v.variability == fmuImport::Variability::tunable;
+           v.variability == fmuImport::Variability::tunable || initialExactOrApprox;
+}
+
+bool stepOrEnd(WatchedInstance& instance, double t, double h)
+{
+    using Result = fmuImport::Instance::StepResult;
+    const Result result = instance.tryDoStep(t, h);
+    if (result == Result::completed) return true;
+    const std::string reason = instance.lastMessage();
+    const std::string who = "FMU '" + instance.fmuPath() + "', instance '" + instance.name() + "'";
+    if (result == Result::terminated)
+    {
+        std::cerr << "fmusim: " << who << " ended the simulation at t = " << formatNumber(t)
+                  << (reason.empty() ? "" : ": " + reason) << '\n';
+        return false;
+    }
+    throw SimulationError(who + " discarded the step from t = " + formatNumber(t) + " to " + formatNumber(t + h) +
+                          " (last successful time " + formatNumber(instance.lastSuccessfulTime()) +
+                          ") without asking to end the simulation" + (reason.empty() ? "" : ": " + reason) +
+                          "; fmusim takes the steps it is given and cannot retry a shorter one");
 }
 
 void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const std::vector<Setting>& settings)
@@ -69,7 +92,7 @@ void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const s
     {
         if (!fmu.hasVariable(s.name)) reject(s, "FMU '" + fmu.path() + "' has no variable '" + s.name + "'");
         const fmuImport::Variable& v = fmu.variable(s.name);
-        if (!isSettable(v)) reject(s, "variable '" + s.name + "' is neither a parameter nor an input");
+        if (!isSettable(v)) reject(s, "variable '" + s.name + "' cannot be set before initialization: it is neither a parameter nor an input and has no start value");
         const std::vector<unsigned int> vr{v.valueReference};
         if (v.type == Type::String)
         {

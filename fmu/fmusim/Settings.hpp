@@ -27,9 +27,20 @@ std::vector<Setting> readSettingsFile(const std::string& path);
 // Parses --set options "name=value"; UsageError otherwise.
 std::vector<Setting> parseSetOptions(const std::vector<std::string>& options);
 
-// The variable may be given a value before initialization: a parameter or
-// an input (or any tunable variable).
+// The variable may be given a value before initialization (FMI 2.0, 3.2.3
+// and 4.2.4): a parameter or an input, any tunable variable, and any
+// variable that is not constant and has a start value, as an output or
+// local with initial="exact" or "approx" has (Reference FMUs' BouncingBall
+// h). Settings are applied in the instantiated state, before
+// fmi2EnterInitializationMode, where all of these may be set.
 bool isSettable(const fmuImport::Variable& v);
+
+// One fmi2DoStep from t by h. Returns true when the step was taken, false
+// when the FMU asks to end the simulation (fmi2Discard with fmi2Terminated,
+// reported on stderr with the FMU's reason); a step the FMU discards without
+// asking to end throws SimulationError: fmusim takes the steps it was given
+// and cannot retry a shorter one.
+bool stepOrEnd(WatchedInstance& instance, double t, double h);
 
 // Sets each setting on the instance, converted to the variable's type.
 // Unknown or unsettable variables and values of the wrong type throw

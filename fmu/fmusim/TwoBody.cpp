@@ -121,14 +121,22 @@ public:
         const auto wallStart = std::chrono::steady_clock::now();
         initialize();
         const long steps = static_cast<long>(std::ceil((c_.stopTime - c_.startTime) / c_.stepSize - 1e-9));
-        for (long n = 0; n < steps; ++n)
+        long n = 0;
+        for (; n < steps; ++n)
         {
             const double t = c_.startTime + n * c_.stepSize;
             const double next = n + 1 == steps ? c_.stopTime : c_.startTime + (n + 1) * c_.stepSize;
-            if (c_.scheme == Scheme::explicitEuler)
-                explicitStep(t, next - t);
-            else
-                implicitStep(t, next - t);
+            try
+            {
+                if (c_.scheme == Scheme::explicitEuler)
+                    explicitStep(t, next - t);
+                else
+                    implicitStep(t, next - t);
+            }
+            catch (const SimulationEnded&)
+            {
+                break;  // the rows end at the last step written
+            }
             if (!finite(a_) || !finite(b_))
                 throw SimulationError("the state of a body is not finite at t = " + formatNumber(next));
             if ((n + 1) % c_.writeEvery == 0 || n + 1 == steps) write(next);
@@ -136,11 +144,16 @@ public:
         instance_.terminate();
         out_.finish();
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-        std::cerr << "fmusim twobody: " << steps << " steps, " << doSteps_ << " fmi2DoStep calls ("
-                  << static_cast<double>(doSteps_) / steps << " per step), " << wall << " s\n";
+        std::cerr << "fmusim twobody: " << n << " steps, " << doSteps_ << " fmi2DoStep calls ("
+                  << static_cast<double>(doSteps_) / std::max(n, 1L) << " per step), " << wall << " s\n";
     }
 
 private:
+    // Thrown by evaluate when the FMU asks to end the simulation
+    struct SimulationEnded
+    {
+    };
+
     BodyState advance(const Body& body, const BodyState& s0, const Loads& l0, const Loads* l1, double t1,
                       double h) const
     {
@@ -176,8 +189,8 @@ private:
     LoadVector evaluate(const BodyState& a1, const BodyState& b1, double t, double h)
     {
         connector_.setKinematics(instance_, kinematicsOf(a1), kinematicsOf(b1));
-        instance_.doStep(t, h);
         ++doSteps_;
+        if (!stepOrEnd(instance_, t, h)) throw SimulationEnded();
         Loads la, lb;
         connector_.getLoads(instance_, la, lb);
         const LoadVector loads = pack(la, lb);

@@ -97,6 +97,18 @@ void WatchedInstance::doStep(double currentTime, double stepSize)
     instance_->doStep(currentTime, stepSize);
 }
 
+fmuImport::Instance::StepResult WatchedInstance::tryDoStep(double currentTime, double stepSize)
+{
+    const FmuCall call(*site_, "fmi2DoStep", currentTime);
+    return instance_->tryDoStep(currentTime, stepSize);
+}
+
+double WatchedInstance::lastSuccessfulTime()
+{
+    const FmuCall call(*site_, "fmi2GetRealStatus", instance_->time());
+    return instance_->lastSuccessfulTime();
+}
+
 WatchedInstance::State WatchedInstance::getState()
 {
     const FmuCall call(*site_, "fmi2GetFMUstate", instance_->time());

@@ -45,6 +45,11 @@ public:
     std::vector<std::string> getString(const std::vector<unsigned int>& vrs);
 
     void doStep(double currentTime, double stepSize);
+    // fmuImport::Instance::tryDoStep: a discarded or terminated step is a
+    // result, not an error
+    fmuImport::Instance::StepResult tryDoStep(double currentTime, double stepSize);
+    double lastSuccessfulTime();
+    std::string lastMessage() const { return instance_->lastMessage(); }
 
     State getState();
     void setState(const State& state);
