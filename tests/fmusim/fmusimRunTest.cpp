@@ -166,7 +166,7 @@ TEST(FmusimRunErrors, UsageErrors)
     EXPECT_TRUE(contains(value.err, "--step-size: 'fast' is not a finite number")) << value.err;
     const harness::Result set = fmusim("run " + fixture("firstOrderLag") + " --set y=1");
     EXPECT_EQ(set.exitCode, 2);
-    EXPECT_TRUE(contains(set.err, "--set: variable 'y' is neither a parameter nor an input")) << set.err;
+    EXPECT_TRUE(contains(set.err, "--set: variable 'y' cannot be set before initialization: it is neither a parameter nor an input and has no start value")) << set.err;
 }
 
 TEST(FmusimRunErrors, FailingFmuCallIsASimulationError)
