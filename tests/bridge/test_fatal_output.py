@@ -1,5 +1,6 @@
 """A run ended by a FatalError keeps every completed row of connector
-outputs.
+outputs; a connector that asks to end the simulation ends it with its
+reason.
 
 The restraint collects its rows in memory and writes them at write times;
 a FatalError ends the process with exit(), which destroys no restraint, so
@@ -8,6 +9,11 @@ fault parameters, tests/fmusim/fixtures) returns a NaN force from
 t = nanTime on; the bridge stops with a FatalError naming the output. No
 time is written before that (writeInterval beyond the end), so every row
 must come from the exit handler: one per completed step before nanTime.
+
+With endTime instead, faultySpring refuses the step from that time with
+fmi2Discard and fmi2Terminated (FMI 2.0's way for a co-simulation FMU to
+end the simulation): the run stops with a FatalError that says so and
+gives the FMU's reason.
 """
 import os
 import sys
@@ -17,7 +23,7 @@ from bridgecase import Case, rigid_body, vec
 DT, NAN_TIME, END = 0.01, 0.3, 1.0
 
 
-def model(fmu):
+def model(fmu, fault="nanTime"):
     return f"""
     solver {{ type symplectic; }}
     g (0 0 -9.81);
@@ -36,7 +42,7 @@ def model(fmu):
             {{
                 stiffness 100;
                 restLength 0.5;
-                nanTime {NAN_TIME};
+                {fault} {NAN_TIME};
                 A.p {vec((0, 0, 0))};
                 B.p {vec((0, 0, 0.5))};
             }}
@@ -69,7 +75,21 @@ def main():
     failures += 0 if ok else 1
 
     case.cleanup()
-    print(f"{2 - failures} passed, {failures} failed")
+
+    case = Case("endRequest", model(fmu, "endTime"), END, DT, write_interval=10 * END)
+    log = case.run(expect_failure=True)
+    expected = ("restraint spring: the connector asks to end the simulation at t = 0.3",
+                "the spring asks to end the simulation at endTime = 0.3 s")
+    ended = all(e in log for e in expected)
+    rows = case.connector("spring")["Time"]
+    ok = ended and len(rows) == 29
+    print(f"{'PASS' if ok else 'FAIL'} the connector ends the simulation at its endTime: "
+          f"message {'found' if ended else 'missing'}, {len(rows)} rows"
+          + ("" if ended else "\n" + log[-1500:]))
+    failures += 0 if ok else 1
+    case.cleanup()
+
+    print(f"{3 - failures} passed, {failures} failed")
     return 1 if failures else 0
 
 

@@ -64,6 +64,36 @@ void Foam::connectorFmu::restorePending
 }
 
 
+void Foam::connectorFmu::doStep(const scalar t, const scalar deltaT)
+{
+    typedef fmuImport::Instance::StepResult result;
+
+    const result r = instance_->tryDoStep(stepStartTime_, deltaT);
+    if (r == result::completed)
+    {
+        return;
+    }
+
+    // A connector cannot be stepped again with a shorter step here: both
+    // are the end of the run, with the connector's reason
+    const std::string reason(instance_->lastMessage());
+    if (r == result::terminated)
+    {
+        FatalErrorInFunction
+            << where().c_str() << "the connector asks to end the simulation"
+            << " at t = " << t - deltaT << " (fmi2Terminated)"
+            << (reason.empty() ? "" : ": ") << reason.c_str()
+            << exit(FatalError);
+    }
+    FatalErrorInFunction
+        << where().c_str() << "the connector refused the step from t = "
+        << t - deltaT << " to " << t << " (fmi2Discard)"
+        << (reason.empty() ? "" : ": ") << reason.c_str()
+        << ". A shorter time step (maxDeltaT) may let it through"
+        << exit(FatalError);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::connectorFmu::connectorFmu
@@ -213,11 +243,11 @@ void Foam::connectorFmu::evaluate
         {
             foamStepTime_ = t;
             stepEndTime_ = stepStartTime_ + deltaT;
-            instance_->doStep(stepStartTime_, deltaT);
+            doStep(t, deltaT);
         }
         else if (repeatedSolve)
         {
-            instance_->doStep(stepStartTime_, deltaT);
+            doStep(t, deltaT);
         }
         else if (deltaT > 0 && !warnedNoRollback_)
         {
