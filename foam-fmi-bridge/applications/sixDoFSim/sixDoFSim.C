@@ -1,0 +1,270 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Application
+    sixDoFSim
+
+Description
+    Integrates bodies moved by OpenFOAM's sixDoFRigidBodyMotion with no
+    fluid: each body under gravity and its restraints (built-in ones and
+    fmuConnector ones) only, as rigidBodySim does for rigidBodyMotion.
+
+    The bodies are the entries of 'bodies' in constant/sixDoFBodies, each a
+    sixDoFRigidBodyMotion dictionary (mass, momentOfInertia, centreOfMass,
+    solver, restraints, ...) named by its keyword, as the patch name names
+    a body of the sixDoFRigidBodyDisplacement condition; 'g' is gravity
+    (default none). Time control comes from system/controlDict. The bodies
+    are solved one after the other in their order in the file, each
+    nIter times per time step (-nIter, default 1) in rounds, as PIMPLE
+    outer correctors move the patches of a CFD run.
+
+    At every write time the bodies' dictionaries with their current state
+    are written to <time>/uniform/sixDoFBodies, as the point-patch condition
+    writes its motion into the field file; a run that starts from a time
+    with that file continues from it.
+
+    Output: postProcessing/sixDoFSim/<startTime>/bodies.dat with, per time
+    step and per body, the centre of rotation, centre of mass, velocity
+    (of the centre of rotation), angular velocity and orientation tensor
+    (global frame, row by row).
+
+Usage
+    sixDoFSim [-nIter <n>] [-case <dir>]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "sixDoFRigidBodyMotion.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The bodies' file: <startTime>/uniform/sixDoFBodies when it exists (a
+//  restart), constant/sixDoFBodies otherwise
+IOobject bodiesIO(const Time& runTime)
+{
+    IOobject restart
+    (
+        "sixDoFBodies",
+        runTime.timeName(),
+        "uniform",
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (restart.typeHeaderOk<IOdictionary>(true))
+    {
+        return restart;
+    }
+    return IOobject
+    (
+        "sixDoFBodies",
+        runTime.constant(),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+void writeHeader(OFstream& os, const wordList& names)
+{
+    os  << "# Time";
+    for (const word& name : names)
+    {
+        for (const char* q : {"r", "c", "v", "omega"})
+        {
+            for (const char* c : {"x", "y", "z"})
+            {
+                os  << ' ' << name << '.' << q << '.' << c;
+            }
+        }
+        for (const char* c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
+        {
+            os  << ' ' << name << ".R." << c;
+        }
+    }
+    os  << nl;
+}
+
+
+void writeRow
+(
+    OFstream& os,
+    const scalar t,
+    const PtrList<sixDoFRigidBodyMotion>& motions
+)
+{
+    os  << t;
+    for (const sixDoFRigidBodyMotion& m : motions)
+    {
+        for
+        (
+            const vector& v
+          : {m.centreOfRotation(), m.centreOfMass(), m.v(), m.omega()}
+        )
+        {
+            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
+        }
+        const tensor& R = m.orientation();
+        for (direction i = 0; i < tensor::nComponents; ++i)
+        {
+            os  << ' ' << R[i];
+        }
+    }
+    os  << nl;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Integrate sixDoFRigidBodyMotion bodies without fluid"
+    );
+    argList::noParallel();
+    argList::addOption
+    (
+        "nIter",
+        "n",
+        "Solves per time step, as PIMPLE outer correctors (default 1)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const label nIter = args.getOrDefault<label>("nIter", 1);
+    if (nIter < 1)
+    {
+        FatalErrorInFunction
+            << "-nIter must be at least 1, got " << nIter << exit(FatalError);
+    }
+
+    // Kept for the whole run: the restraints find the case's time through
+    // the file their dictionaries belong to
+    const IOdictionary bodiesDict(bodiesIO(runTime));
+    Info<< "Bodies from " << bodiesDict.objectPath() << nl << endl;
+
+    const vector g(bodiesDict.lookupOrDefault<vector>("g", Zero));
+    const dictionary& bodies = bodiesDict.subDict("bodies");
+
+    wordList names;
+    PtrList<sixDoFRigidBodyMotion> motions;
+    for (const entry& e : bodies)
+    {
+        if (e.isDict())
+        {
+            names.append(e.keyword());
+            motions.append
+            (
+                new sixDoFRigidBodyMotion(e.dict(), e.dict(), runTime)
+            );
+        }
+    }
+
+    Info<< motions.size() << " bodies " << names << ", " << nIter
+        << " solve(s) per time step" << nl << endl;
+
+    const fileName outputDir
+    (
+        runTime.path()/"postProcessing"/"sixDoFSim"/runTime.timeName()
+    );
+    mkDir(outputDir);
+    OFstream out(outputDir/"bodies.dat");
+    out.precision(17);
+    writeHeader(out, names);
+    writeRow(out, runTime.value(), motions);
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        for (sixDoFRigidBodyMotion& m : motions)
+        {
+            m.newTime();
+        }
+        for (label iter = 0; iter < nIter; ++iter)
+        {
+            for (sixDoFRigidBodyMotion& m : motions)
+            {
+                m.update
+                (
+                    iter == 0,
+                    m.mass()*g,
+                    m.mass()*(m.momentArm() ^ g),
+                    runTime.deltaTValue(),
+                    runTime.deltaT0Value()
+                );
+            }
+        }
+
+        writeRow(out, runTime.value(), motions);
+
+        if (runTime.writeTime())
+        {
+            IOdictionary state
+            (
+                IOobject
+                (
+                    "sixDoFBodies",
+                    runTime.timeName(),
+                    "uniform",
+                    runTime,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                bodiesDict
+            );
+            dictionary& stateBodies = state.subDict("bodies");
+            forAll(names, i)
+            {
+                dictionary& b = stateBodies.subDict(names[i]);
+                for
+                (
+                    const word key
+                  : {
+                        "centreOfRotation", "orientation", "velocity",
+                        "acceleration", "angularMomentum", "torque"
+                    }
+                )
+                {
+                    b.remove(key);
+                }
+                motions[i].state().write(b);
+            }
+            state.regIOobject::writeObject
+            (
+                IOstream::ASCII,
+                IOstream::currentVersion,
+                IOstream::UNCOMPRESSED,
+                true
+            );
+        }
+        runTime.write();
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,251 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "sixDoFFmuConnector.H"
+#include "sixDoFRigidBodyMotion.H"
+#include "regIOobject.H"
+#include "Time.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace sixDoFRigidBodyMotionRestraints
+{
+    defineTypeNameAndDebug(fmuConnector, 0);
+
+    addToRunTimeSelectionTable
+    (
+        sixDoFRigidBodyMotionRestraint,
+        fmuConnector,
+        dictionary
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The dictionary of the motion that holds the restraint dictionary
+//  (restraint -> restraints -> motion; a sixDoFRigidBodyMotionCoeffs
+//  sub-dictionary of a motion solver's dictionary counts as the solver's)
+const Foam::dictionary& motionDict(const Foam::dictionary& restraintDict)
+{
+    return restraintDict.parent().parent();
+}
+
+
+//- The name of the body a motion dictionary moves
+Foam::word motionName(const Foam::dictionary& motion)
+{
+    if
+    (
+        motion.dictName() == "sixDoFRigidBodyMotionCoeffs"
+     && &motion.parent() != &Foam::dictionary::null
+    )
+    {
+        return motion.parent().dictName();
+    }
+    return motion.dictName();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
+(
+    const word& name,
+    const dictionary& sDoFRBMRDict
+)
+:
+    sixDoFRigidBodyMotionRestraint(name, sDoFRBMRDict),
+    report_(false),
+    restart_("exact"),
+    side_(0)
+{
+    read(sDoFRBMRDict);
+
+    // The case's time: the motion dictionary is read from a file of the
+    // case (a field's boundary condition, dynamicMeshDict)
+    const regIOobject* top =
+        dynamic_cast<const regIOobject*>(&sDoFRBMRDict.topDict());
+    if (!top)
+    {
+        FatalIOErrorInFunction(sDoFRBMRDict)
+            << "restraint " << name_ << ": the motion dictionary is not"
+            << " part of a file read by the case, so the connector cannot"
+            << " find the case's time" << exit(FatalIOError);
+    }
+    const Time& runTime = top->db().time();
+
+    const dictionary& motion = motionDict(sDoFRBMRDict);
+    const word motionBody = motionName(motion);
+    connectorFmu::kinematics start(connectorFmu::kinematics::world());
+
+    if (!bodyB_.empty())
+    {
+        if (motionBody == body_)
+        {
+            side_ = 0;
+        }
+        else if (motionBody == bodyB_)
+        {
+            side_ = 1;
+        }
+        else
+        {
+            FatalIOErrorInFunction(sDoFRBMRDict)
+                << "restraint " << name_ << " connects " << body_ << " and "
+                << bodyB_ << " but is in the motion of " << motionBody
+                << ". A sixDoF body is named by the dictionary of its"
+                << " motion: the patch of a sixDoFRigidBodyDisplacement"
+                << " condition, the solver's name in"
+                << " dynamicMotionSolverListFvMesh" << exit(FatalIOError);
+        }
+
+        // The kinematics the body starts from, for the other body's
+        // evaluations before this one's first solve
+        dictionary startDict(motion);
+        startDict.remove("restraints");
+        const sixDoFRigidBodyMotion startMotion
+        (
+            startDict,
+            startDict,
+            runTime
+        );
+        start = sixDoFConnector::kinematics(startMotion);
+    }
+
+    connector_ = sixDoFConnector::New
+    (
+        name_,
+        sDoFRBMRCoeffs_,
+        runTime,
+        fmuFile_,
+        body_,
+        bodyB_,
+        report_,
+        restart_ == "fresh"
+    );
+    connector_->registerSide(side_, start, sDoFRBMRCoeffs_);
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::~fmuConnector()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::restrain
+(
+    const sixDoFRigidBodyMotion& motion,
+    vector& restraintPosition,
+    vector& restraintForce,
+    vector& restraintMoment
+) const
+{
+    const connectorFmu::loads loads(connector_->restrain(side_, motion));
+
+    restraintPosition = motion.centreOfRotation();
+    restraintForce = loads.F;
+    restraintMoment = loads.M;
+}
+
+
+bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
+(
+    const dictionary& sDoFRBMRDict
+)
+{
+    sixDoFRigidBodyMotionRestraint::read(sDoFRBMRDict);
+
+    // A misspelt keyword would silently leave an FMU default in place or
+    // connect the body to the world instead of bodyB
+    static const wordList keywords
+    ({
+        "sixDoFRigidBodyMotionRestraint", "body", "bodyB", "fmu",
+        "parameters", "report", "restart"
+    });
+    for (const entry& e : sDoFRBMRCoeffs_)
+    {
+        if (!keywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(sDoFRBMRCoeffs_)
+                << "restraint " << name_ << ": unknown entry '"
+                << e.keyword() << "'; the entries of an fmuConnector"
+                << " restraint are " << keywords << exit(FatalIOError);
+        }
+    }
+
+    sDoFRBMRCoeffs_.readEntry("fmu", fmuFile_);
+    sDoFRBMRCoeffs_.readEntry("body", body_);
+    bodyB_ = sDoFRBMRCoeffs_.lookupOrDefault<word>("bodyB", word::null);
+
+    if (!bodyB_.empty() && bodyB_ == body_)
+    {
+        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
+            << "restraint " << name_ << ": body and bodyB are the same"
+            << " body " << bodyB_ << exit(FatalIOError);
+    }
+
+    if
+    (
+        sDoFRBMRCoeffs_.found("parameters")
+     && !sDoFRBMRCoeffs_.isDict("parameters")
+    )
+    {
+        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
+            << "restraint " << name_ << ": entry 'parameters' must be a"
+            << " dictionary of the FMU's parameters, e.g."
+            << " parameters { stiffness 100; }" << exit(FatalIOError);
+    }
+    parameters_ = sDoFRBMRCoeffs_.subOrEmptyDict("parameters");
+    report_ = sDoFRBMRCoeffs_.lookupOrDefault<Switch>("report", false);
+
+    restart_ = sDoFRBMRCoeffs_.lookupOrDefault<word>("restart", "exact");
+    if (restart_ != "exact" && restart_ != "fresh")
+    {
+        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
+            << "restraint " << name_ << ": restart " << restart_
+            << " is neither exact nor fresh" << exit(FatalIOError);
+    }
+
+    return true;
+}
+
+
+void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::write
+(
+    Ostream& os
+) const
+{
+    os.writeEntry("fmu", fmuFile_);
+    os.writeEntry("body", body_);
+    if (!bodyB_.empty())
+    {
+        os.writeEntry("bodyB", bodyB_);
+    }
+    os.writeEntry("report", report_);
+    os.writeEntry("restart", restart_);
+    os.beginBlock("parameters");
+    parameters_.write(os, false);
+    os.endBlock();
+}
+
+
+// ************************************************************************* //

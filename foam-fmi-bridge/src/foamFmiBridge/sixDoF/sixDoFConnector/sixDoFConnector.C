@@ -1,0 +1,328 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "sixDoFConnector.H"
+#include "Time.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(sixDoFConnector, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of a dictionary as text, without its name
+Foam::string entriesOf(const Foam::dictionary& dict)
+{
+    Foam::OStringStream os;
+    dict.write(os, false);
+    return os.str();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::word Foam::sixDoFConnector::bodyName(const label side) const
+{
+    return side == 0 ? bodyA_ : bodyB_;
+}
+
+
+void Foam::sixDoFConnector::load(const Time& runTime, const fileName& fmuFile)
+{
+    fileName file(fmuFile);
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = runTime.globalPath()/file;
+    }
+
+    fmu_.reset
+    (
+        new connectorFmu
+        (
+            file,
+            name_,
+            dict_,
+            dict_.subOrEmptyDict("parameters"),
+            runTime.value()
+        )
+    );
+
+    if (!fmu_->declaresBodyB() && !bodyB_.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "restraint " << name_ << ": entry bodyB names "
+            << bodyB_ << " but FMU " << file
+            << " connects one body to the fixed world (it declares no B.r)"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::sixDoFConnector::sixDoFConnector
+(
+    const word& name,
+    const dictionary& dict,
+    const Time& runTime,
+    const fileName& fmuFile,
+    const word& bodyA,
+    const word& bodyB,
+    const bool report,
+    const bool fresh
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            "sixDoFConnector." + name,
+            runTime.timeName(),
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    name_(name),
+    dict_(dict),
+    bodyA_(bodyA),
+    bodyB_(bodyB),
+    report_(report),
+    motion_{nullptr, nullptr},
+    start_{connectorFmu::kinematics::world(), connectorFmu::kinematics::world()},
+    registered_{false, false},
+    pending_(-1),
+    stepTime_(runTime.value()),
+    evaluated_{true, true}
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    load(runTime, fmuFile);
+
+    stateIO_.reset
+    (
+        new fmuConnectorState(name_, runTime, *fmu_, fresh, dict_)
+    );
+
+    if (!fmu_->canSerialize() && !fresh)
+    {
+        WarningInFunction
+            << "restraint " << name_ << ": FMU " << fmu_->file() << " cannot"
+            << " serialize its state, so none is written for restarts; a"
+            << " run restarted from a written time needs 'restart fresh;'"
+            << " in this restraint" << endl;
+    }
+
+    OStringStream description;
+    description
+        << "Connector " << name_ << ": FMU " << fmu_->file() << ", body A "
+        << bodyA_ << ", body B "
+        << (bodyB_.empty() ? word("world") : bodyB_)
+        << " (sixDoFRigidBodyMotion)";
+
+    output_.reset
+    (
+        new fmuConnectorOutput(name_, runTime, *fmu_, description.str())
+    );
+}
+
+
+std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
+(
+    const word& name,
+    const dictionary& dict,
+    const Time& runTime,
+    const fileName& fmuFile,
+    const word& bodyA,
+    const word& bodyB,
+    const bool report,
+    const bool fresh
+)
+{
+    const word key("sixDoFConnector." + name);
+
+    sixDoFConnector* found =
+        runTime.getObjectPtr<sixDoFConnector>(key);
+
+    if (found)
+    {
+        if (entriesOf(found->dict_) != entriesOf(dict))
+        {
+            FatalIOErrorInFunction(dict)
+                << "restraint " << name << ": the two restraints of this"
+                << " name (one in each body's motion) must be the same"
+                << " connector, but they differ. First:" << nl
+                << entriesOf(found->dict_).c_str() << nl
+                << "this one:" << nl << entriesOf(dict).c_str()
+                << exit(FatalIOError);
+        }
+        return found->shared_from_this();
+    }
+
+    return std::make_shared<sixDoFConnector>
+    (
+        name, dict, runTime, fmuFile, bodyA, bodyB, report, fresh
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::sixDoFConnector::~sixDoFConnector()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::connectorFmu::kinematics Foam::sixDoFConnector::kinematics
+(
+    const sixDoFRigidBodyMotion& motion
+)
+{
+    // The reference point is the centre of rotation, which v() is the
+    // velocity of and about which sixDoFRigidBodyMotion takes the moments;
+    // the body frame is that of orientation() (Q, body to global)
+    return connectorFmu::kinematics
+    {
+        motion.centreOfRotation(),
+        motion.orientation(),
+        motion.v(),
+        motion.omega()
+    };
+}
+
+
+void Foam::sixDoFConnector::registerSide
+(
+    const label side,
+    const connectorFmu::kinematics& start,
+    const dictionary& dict
+)
+{
+    if (registered_[side])
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << name_ << ": a second restraint of this name"
+            << " in the motion of body " << bodyName(side) << "; the"
+            << " restraint belongs once in the motion of " << bodyA_
+            << (bodyB_.empty() ? word::null : word(" and once in that of "))
+            << bodyB_ << exit(FatalIOError);
+    }
+    registered_[side] = true;
+    start_[side] = start;
+}
+
+
+Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
+(
+    const label side,
+    const sixDoFRigidBodyMotion& motion
+)
+{
+    if (!fmu_)
+    {
+        return connectorFmu::loads{Zero, Zero};
+    }
+
+    const Time& runTime = motion.time();
+    const scalar t = runTime.value();
+    const bool twoBody = !bodyB_.empty();
+    const label other = 1 - side;
+
+    if (t != stepTime_)
+    {
+        // A new time step: in the previous one both bodies must have taken
+        // their loads, or one of them has no restraint of this name
+        if (twoBody && !(evaluated_[0] && evaluated_[1]))
+        {
+            const label missing = evaluated_[0] ? 1 : 0;
+            FatalErrorInFunction
+                << "restraint " << name_ << ": the motion of body "
+                << bodyName(missing) << " did not evaluate it in the time"
+                << " step ending at t = " << stepTime_ << ", so the"
+                << " connector's loads on " << bodyName(missing) << " were"
+                << " lost. The restraint belongs once in the motion of each"
+                << " body (" << bodyA_ << ", " << bodyB_ << ")"
+                << exit(FatalError);
+        }
+        stepTime_ = t;
+        evaluated_[0] = evaluated_[1] = false;
+        pending_ = -1;
+    }
+
+    motion_[side] = &motion;
+    evaluated_[side] = true;
+
+    if (pending_ == side)
+    {
+        // The other body's restraint evaluated the FMU in this solve round
+        pending_ = -1;
+    }
+    else
+    {
+        const connectorFmu::kinematics own(kinematics(motion));
+        connectorFmu::kinematics otherKin(connectorFmu::kinematics::world());
+        if (twoBody)
+        {
+            otherKin =
+                motion_[other] ? kinematics(*motion_[other]) : start_[other];
+        }
+
+        if (side == 0)
+        {
+            fmu_->evaluate(t, runTime.deltaTValue(), own, otherKin);
+        }
+        else
+        {
+            fmu_->evaluate(t, runTime.deltaTValue(), otherKin, own);
+        }
+        output_->record(t);
+
+        pending_ = twoBody ? other : -1;
+    }
+
+    const connectorFmu::loads loads
+    (
+        side == 0 ? fmu_->loadsA() : fmu_->loadsB()
+    );
+
+    if (report_)
+    {
+        Info<< "Restraint " << name_ << ": t = " << t;
+        for (const word diagnostic : {"length", "tension"})
+        {
+            if (fmu_->outputNames().found(diagnostic))
+            {
+                Info<< ' ' << diagnostic << ' '
+                    << fmu_->output(diagnostic, 0);
+            }
+        }
+        Info<< " force on " << bodyName(side) << ' ' << loads.F
+            << " moment " << loads.M << endl;
+    }
+
+    return loads;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,55 @@
+"""Build and run sixDoFRigidBodyMotion cases with no fluid through sixDoFSim.
+
+Like bridgecase.Case, but the model is constant/sixDoFBodies: 'bodies', one
+sixDoFRigidBodyMotion dictionary per body (named by its keyword, as a patch
+names a body of the sixDoFRigidBodyDisplacement condition), and 'g'.
+"""
+import os
+import subprocess
+
+from bridgecase import Case, foam_file, fmu_path, vec  # noqa: F401
+
+
+def sixdof_body(mass, inertia, centre, solver="symplectic", restraints=""):
+    """A body at rest at centre, orientation identity, diagonal inertia."""
+    return (
+        f"        mass {mass};\n"
+        f"        momentOfInertia ({inertia} {inertia} {inertia});\n"
+        f"        centreOfMass {vec(centre)};\n"
+        f"        solver {{ type {solver}; }}\n"
+        f"        restraints\n        {{\n{restraints}        }}\n"
+    )
+
+
+class SixDoFCase(Case):
+    """A temporary sixDoFSim case; bodies is {name: body dictionary text}."""
+
+    def __init__(self, name, bodies, end_time, delta_t, write_interval=None, g=(0, 0, 0)):
+        super().__init__(name, "", end_time, delta_t, write_interval)
+        os.remove(os.path.join(self.dir, "constant", "dynamicMeshDict"))
+        self.write_bodies(bodies, g)
+
+    def write_bodies(self, bodies, g=(0, 0, 0)):
+        text = f"g {vec(g)};\nbodies\n{{\n"
+        for body, dictionary in bodies.items():
+            text += f"    {body}\n    {{\n{dictionary}    }}\n"
+        text += "}\n"
+        with open(os.path.join(self.dir, "constant", "sixDoFBodies"), "w") as f:
+            f.write(foam_file("sixDoFBodies", text))
+
+    def run(self, n_iter=1, expect_failure=False):
+        """Run sixDoFSim; return its log (stdout and stderr)."""
+        result = subprocess.run(
+            ["sixDoFSim", "-case", self.dir, "-nIter", str(n_iter)],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        )
+        self.returncode = result.returncode
+        if expect_failure:
+            if result.returncode == 0:
+                raise AssertionError(f"sixDoFSim succeeded on {self.dir}, expected a failure")
+        elif result.returncode != 0:
+            raise AssertionError(f"sixDoFSim failed on {self.dir}:\n{result.stdout[-3000:]}")
+        return result.stdout
+
+    def bodies(self, start="0"):
+        return self.table("postProcessing", "sixDoFSim", start, "bodies.dat")
