@@ -205,6 +205,9 @@ void Foam::connectorFmu::evaluate
     const kinematics& B
 )
 {
+    // One switch of OpenFOAM's floating-point traps for all the calls
+    const fmuImport::MaskFpTraps masked;
+
     try
     {
         const bool newStep = (deltaT > 0 && t != foamStepTime_);
