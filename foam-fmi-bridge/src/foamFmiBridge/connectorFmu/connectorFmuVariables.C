@@ -520,6 +520,58 @@ void Foam::connectorFmu::setInputs
     {
         instance_->setReal(inputRefs_, inputValues_);
     }
+    if (!massRefs_.empty())
+    {
+        instance_->setReal(massRefs_, massValues_);
+    }
+}
+
+
+void Foam::connectorFmu::setMassProperties
+(
+    const massProperties& A,
+    const massProperties& B,
+    const bool setB
+)
+{
+    massRefs_.clear();
+    massValues_.clear();
+
+    auto add = [this](const std::vector<unsigned int>& refs, const double* v)
+    {
+        massRefs_.insert(massRefs_.end(), refs.begin(), refs.end());
+        massValues_.insert(massValues_.end(), v, v + refs.size());
+    };
+
+    for (const char* body : {"A", "B"})
+    {
+        if (body[0] == 'B' && !setB)
+        {
+            break;
+        }
+        const massProperties& p = (body[0] == 'A') ? A : B;
+        const std::string prefix(body);
+
+        if (fmu_->hasVariable(prefix + ".m"))
+        {
+            const fmuImport::Variable& var = fmu_->variable(prefix + ".m");
+            if
+            (
+                var.type != fmuImport::Type::Real
+             || causalityName(var.causality) != "input"
+             || var.unit != "kg"
+            )
+            {
+                FatalErrorInFunction
+                    << where().c_str() << "variable " << prefix.c_str()
+                    << ".m must be a Real input in kg"
+                    << " (docs/connector-fmu-interface.md)" << exit(FatalError);
+            }
+            add({var.valueReference}, &p.m);
+        }
+        add(vectorRefs(prefix + ".c", 3, "input", "m"), p.c.cdata());
+        add(vectorRefs(prefix + ".J", 9, "input", "kg.m2"), p.J.cdata());
+    }
 }
 
 

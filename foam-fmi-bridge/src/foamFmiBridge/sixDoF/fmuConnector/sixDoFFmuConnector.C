@@ -93,6 +93,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
     const dictionary& motion = motionDict(sDoFRBMRDict);
     const word motionBody = motionName(motion);
     connectorFmu::kinematics start(connectorFmu::kinematics::world());
+    connectorFmu::massProperties mass{0, Zero, Zero};
 
     if (!bodyB_.empty())
     {
@@ -126,6 +127,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
             runTime
         );
         start = sixDoFConnector::kinematics(startMotion);
+        mass = sixDoFConnector::massProperties(startMotion);
     }
 
     connector_ = sixDoFConnector::New
@@ -139,7 +141,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
         report_,
         restart_ == "fresh"
     );
-    connector_->registerSide(side_, start, sDoFRBMRCoeffs_);
+    connector_->registerSide(side_, start, mass, sDoFRBMRCoeffs_);
 }
 
 

@@ -107,6 +107,8 @@ Foam::sixDoFConnector::sixDoFConnector
     report_(report),
     motion_{nullptr, nullptr},
     start_{connectorFmu::kinematics::world(), connectorFmu::kinematics::world()},
+    mass_{},
+    massSet_(false),
     registered_{false, false},
     pending_(-1),
     stepTime_(runTime.value()),
@@ -212,10 +214,30 @@ Foam::connectorFmu::kinematics Foam::sixDoFConnector::kinematics
 }
 
 
+Foam::connectorFmu::massProperties Foam::sixDoFConnector::massProperties
+(
+    const sixDoFRigidBodyMotion& motion
+)
+{
+    const scalar m = motion.mass();
+    const vector c
+    (
+        motion.orientation().T()
+      & (motion.centreOfMass() - motion.centreOfRotation())
+    );
+    const tensor J
+    (
+        (motion.momentOfInertia() & tensor::I) - m*(magSqr(c)*tensor::I - sqr(c))
+    );
+    return connectorFmu::massProperties{m, c, J};
+}
+
+
 void Foam::sixDoFConnector::registerSide
 (
     const label side,
     const connectorFmu::kinematics& start,
+    const connectorFmu::massProperties& mass,
     const dictionary& dict
 )
 {
@@ -230,6 +252,7 @@ void Foam::sixDoFConnector::registerSide
     }
     registered_[side] = true;
     start_[side] = start;
+    mass_[side] = mass;
 }
 
 
@@ -286,6 +309,14 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
         {
             otherKin =
                 motion_[other] ? kinematics(*motion_[other]) : start_[other];
+        }
+
+        if (!massSet_)
+        {
+            // Constant: given once, set with the inputs of every evaluation
+            mass_[side] = massProperties(motion);
+            fmu_->setMassProperties(mass_[0], mass_[1], twoBody);
+            massSet_ = true;
         }
 
         if (side == 0)
