@@ -9,6 +9,7 @@
 #include "catenary/Catenary.hpp"
 #include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
+#include "mooringLine/LineStatics.hpp"
 
 namespace connectors {
 
@@ -30,8 +31,9 @@ struct NodeForces {
     //- Segment tensions [N] and unit vectors from node j to j+1
     std::vector<double> T;
     std::vector<Vector3> q;
-    //- Accelerations of the free nodes (index 1..N-1; 0 and N unused)
-    std::vector<Vector3> a;
+    //- Net forces [N] and accelerations of the free nodes (index 1..N-1;
+    //  0 and N unused)
+    std::vector<Vector3> F, a;
     double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     int groundedSegments = 0;
 };
@@ -47,6 +49,7 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
     f.a.assign(std::size_t(N + 1), Vector3::Zero());
+    f.F.assign(std::size_t(N + 1), Vector3::Zero());
     for (int j = 0; j < N; ++j) {
         const Vector3 dr = r[j + 1] - r[j];
         const double stretched = dr.norm();
@@ -83,6 +86,7 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
         const Vector3 drag = 0.5 * rho * d * l * p.normalDrag * vn.norm() * vn
                              + 0.5 * rho * pi * d * l * p.tangentialDrag * vt.norm() * vt;
         F += drag;
+        f.F[i] = F;
         f.dissipatedPower += -drag.dot(v[i]);
         const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
         const double mt = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
@@ -103,6 +107,99 @@ void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,
         r[i] = Vector3(y[0], y[1], y[2]);
         v[i] = Vector3(y[3], y[4], y[5]);
     }
+}
+
+double largestForce(const NodeForces& f)
+{
+    double largest = 0.0;
+    for (std::size_t i = 1; i + 1 < f.F.size(); ++i) {
+        largest = std::max(largest, f.F[i].lpNorm<Eigen::Infinity>());
+    }
+    return largest;
+}
+
+//- Potential energy of the line held still: strain, seabed, weight [J]
+double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r, double wl)
+{
+    double heights = 0.0;
+    for (std::size_t i = 1; i + 1 < r.size(); ++i) {
+        heights += r[i][2];
+    }
+    return f.strainEnergy + f.seabedEnergy + wl * heights;
+}
+
+//- Damped Newton on the static forces of the free nodes (no velocities),
+//  from r (ends r[0], r[N] held). The forces are minus the gradient of the
+//  potential energy and the Newton matrix is positive definite, so every
+//  Newton step descends: a step is halved until the energy decreases
+//  (Armijo), or taken whole when it reduces the largest node force (near
+//  the solution, where the energy's change is below its round-off).
+//  r becomes the iterate with the smallest largest node force; returns
+//  whether that fell below 1e-11 of the line's weight plus its largest
+//  tension (plus 1e-14 EA).
+bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>& r,
+                  double zb)
+{
+    const int N = p.segments;
+    const double wl = w * p.length / N;
+    const std::vector<Vector3> still(std::size_t(N + 1), Vector3::Zero());
+    std::vector<Vector3> x(r), trial(r);
+    NodeForces f = nodeForces(p, w, x, still, zb);
+    double residual = largestForce(f), energy = staticEnergy(f, x, wl);
+    // Once below the tolerance, iterates on to the round-off floor (three
+    // steps without a smaller largest force): a force left on a node
+    // starts it moving
+    const auto tolerance = [&](const NodeForces& forces) {
+        double tension = 0.0;
+        for (const double T : forces.T) {
+            tension = std::max(tension, std::abs(T));
+        }
+        // 1e-14 EA: the round-off of a tension computed from a strain
+        return 1e-11 * (std::abs(w) * p.length + tension) + 1e-14 * p.EA;
+    };
+    int stalled = 0;
+    double best = residual, bestTolerance = tolerance(f);
+    for (int iteration = 0; iteration < 200 && !(best <= bestTolerance && stalled >= 3);
+         ++iteration) {
+        const std::vector<Vector3> b(f.F.begin() + 1, f.F.end() - 1);
+        const std::vector<Vector3> dx = staticStiffness(p, w, x, zb).solve(b);
+        double slope = 0.0; // d energy / d alpha = -F . dx < 0
+        for (int i = 1; i < N; ++i) {
+            slope -= b[std::size_t(i - 1)].dot(dx[std::size_t(i - 1)]);
+        }
+        bool accepted = false;
+        for (double alpha = 1.0; alpha > 1e-12 && !accepted; alpha *= 0.5) {
+            for (int i = 1; i < N; ++i) {
+                trial[std::size_t(i)] = x[std::size_t(i)] + alpha * dx[std::size_t(i - 1)];
+            }
+            NodeForces next = nodeForces(p, w, trial, still, zb);
+            const double nextResidual = largestForce(next);
+            const double nextEnergy = staticEnergy(next, trial, wl);
+            if (!std::isfinite(nextResidual) || !std::isfinite(nextEnergy)) {
+                continue;
+            }
+            accepted = nextEnergy <= energy + 1e-4 * alpha * slope
+                       || (alpha == 1.0 && nextResidual < residual);
+            if (accepted) {
+                x.swap(trial);
+                f = std::move(next);
+                residual = nextResidual;
+                energy = nextEnergy;
+            }
+        }
+        if (!accepted) {
+            break; // no descent left
+        }
+        if (residual < best) {
+            best = residual;
+            bestTolerance = tolerance(f);
+            r = x;
+            stalled = 0;
+        } else {
+            ++stalled;
+        }
+    }
+    return best <= bestTolerance;
 }
 
 } // namespace
@@ -186,6 +283,14 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
     const MooringLineParameters& p = parameters_;
+    const Vector3 P = attachment(A, p.p_AoP_A), Q = attachment(B, p.p_BoQ_B);
+    if (p.seabedContact && P[2] < Q[2]) {
+        throw UndefinedStateError("mooringLine: the fairlead (A.p on body A) at z = "
+                                  + formatValue(P[2]) + " m is below the seabed (z = "
+                                  + formatValue(Q[2])
+                                  + " m, the height of the anchor B.p); with "
+                                    "seabedContact = 1 it must not be");
+    }
     CatenaryParameters c;
     c.p_AoP_A = p.p_AoP_A;
     c.p_BoQ_B = p.p_BoQ_B;
@@ -205,12 +310,25 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     s.time = time;
     s.P = attachment(A, p.p_AoP_A);
     s.Q = attachment(B, p.p_BoQ_B);
-    s.nodes.assign(6 * std::size_t(p.segments - 1), 0.0);
+    const int N = p.segments;
     // shape runs from P (index 0) to Q (index N); node i is shape[N - i]
-    for (int i = 1; i < p.segments; ++i) {
-        const Vector3& x = shape.shape[std::size_t(p.segments - i)];
+    std::vector<Vector3> r(std::size_t(N + 1));
+    for (int i = 0; i <= N; ++i) {
+        r[std::size_t(i)] = shape.shape[std::size_t(N - i)];
+    }
+    r[0] = s.Q;
+    r[std::size_t(N)] = s.P;
+    // The discrete line's own equilibrium (straight segments, seabed
+    // penalty), so that a line held still stays still; the catenary shape
+    // is kept where Newton cannot reach one (a slack weightless line)
+    std::vector<Vector3> equilibrium(r);
+    if (solveStatics(p, weight_, equilibrium, s.Q[2])) {
+        r.swap(equilibrium);
+    }
+    s.nodes.assign(6 * std::size_t(N - 1), 0.0);
+    for (int i = 1; i < N; ++i) {
         for (int k = 0; k < 3; ++k) {
-            s.nodes[6 * std::size_t(i - 1) + std::size_t(k)] = x[k];
+            s.nodes[6 * std::size_t(i - 1) + std::size_t(k)] = r[std::size_t(i)][k];
         }
     }
     return s;

@@ -93,8 +93,10 @@ public:
     explicit MooringLine(const MooringLineParameters& parameters);
     ~MooringLine();
 
-    //- At rest in the quasi-static elastic catenary shape through the
-    //  attachment points of A and B
+    //- At rest in the static equilibrium of the discrete line through the
+    //  attachment points of A and B (damped Newton from the quasi-static
+    //  elastic catenary shape; that shape where Newton finds none).
+    //  UndefinedStateError for a fairlead below the seabed.
     MooringLineState initialState(const BodyKinematics& A, const BodyKinematics& B,
                                   double time) const;
 

@@ -37,8 +37,9 @@ A.F = -T_N-1 q_N-1 - w L/(2N) z,   B.F = T_0 q_0 - w L/(2N) z
 <code>absoluteTolerance</code>), the ends moving linearly from their
 previous to their new positions. CVODE is restarted at every step (its BDF
 history restarts at order 1), so a step repeated from a saved FMU state is
-identical to the uninterrupted one. The line starts at rest in the
-quasi-static catenary shape through the attachment points at
+identical to the uninterrupted one. The line starts at rest in the static
+equilibrium of its own discrete equations (found by Newton from the
+quasi-static catenary shape through the attachment points) at
 fmi2ExitInitializationMode. The binary links Debian 12's shared SUNDIALS 6
 libraries (package libsundials-dev, or its runtime libraries
 libsundials-cvode6, -nvecserial6, -sunmatrix4, -sunlinsol3): install them on

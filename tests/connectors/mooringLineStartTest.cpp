@@ -1,0 +1,165 @@
+// The dynamic line starts in the static equilibrium of its own discrete
+// equations: held still, its fairlead tension stays constant from t = 0
+// (issue 15, item 2), for the two reference lines of the issue and any N;
+// parameters and start positions it cannot use are refused by name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "LawTestSupport.hpp"
+#include "common/ConnectorError.hpp"
+#include "mooringLine/MooringLine.hpp"
+
+namespace {
+
+using namespace lawTest;
+using connectors::MooringLine;
+using connectors::MooringLineParameters;
+using connectors::MooringLineState;
+
+struct ReferenceLine {
+    const char* name;
+    MooringLineParameters p;
+    Vector3 anchor, fairlead;
+};
+
+//- Lab chain: 1.2 m in 0.5 m of water
+ReferenceLine lab(int segments)
+{
+    ReferenceLine r{"lab chain", {}, Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05)};
+    MooringLineParameters& p = r.p;
+    p.length = 1.2;
+    p.massPerLength = 0.0796;
+    p.EA = 3.416e5;
+    p.diameter = 3.6e-3;
+    p.normalDrag = 1.33;
+    p.normalAddedMass = 1.0;
+    p.tangentialDrag = 0.2;
+    p.tangentialAddedMass = 0.5;
+    p.axialDamping = 2.473;
+    p.seabedContact = true;
+    p.seabedStiffness = 3e5;
+    p.seabedDamping = 3e3;
+    p.segments = segments;
+    return r;
+}
+
+//- OC4 semi-submersible line: 835.5 m in 200 m of water
+ReferenceLine oc4(int segments)
+{
+    ReferenceLine r{"OC4 line", {}, Vector3(-837.6, 0.0, -200.0),
+                    Vector3(-40.868, 0.0, -14.0)};
+    MooringLineParameters& p = r.p;
+    p.length = 835.5;
+    p.massPerLength = 113.35;
+    p.EA = 7.536e8;
+    p.diameter = 0.0766;
+    p.normalDrag = 2.0;
+    p.normalAddedMass = 0.8;
+    p.tangentialDrag = 0.4;
+    p.tangentialAddedMass = 0.25;
+    p.axialDamping = 3.052e6;
+    p.seabedContact = true;
+    p.seabedStiffness = 3e6;
+    p.seabedDamping = 3e5;
+    p.segments = segments;
+    return r;
+}
+
+//- Largest relative change of the fairlead tension and largest node speed
+//  over `steps` coupling steps of h with both ends held still
+void holdStill(const ReferenceLine& r, double h, int steps, double& change,
+               double& speed, double& T0)
+{
+    MooringLine line(r.p);
+    const BodyKinematics A = body(r.fairlead), B = body(r.anchor);
+    MooringLineState s = line.initialState(A, B, 0.0);
+    T0 = line.evaluate(s, A, B, 0).fairleadTension;
+    change = 0.0;
+    speed = 0.0;
+    for (int k = 0; k < steps; ++k) {
+        line.advance(s, A, B, h);
+        change = std::max(change,
+                          std::abs(line.evaluate(s, A, B, 0).fairleadTension - T0) / T0);
+        for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
+            speed = std::max(speed, std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
+        }
+    }
+    ASSERT_EQ(s.P, r.fairlead); // the fairlead is held where it was put
+}
+
+TEST(MooringLineStart, HeldStillTheTensionIsConstantFromTheStart)
+{
+    // Lab chain for 0.3 s (the catenary start snapped from 0.02 N to
+    // 2.84 N within 13 ms), OC4 for 20 s (the catenary start rang 3.1 % low
+    // for minutes), at 1 ms and 0.1 s coupling steps. The start was the
+    // continuous catenary's shape before: this test then measured relative
+    // changes of 38, 111 and 244 (lab, N = 5, 20, 80).
+    for (const double tolerance : {1e-9, 1e-6}) {
+        for (const int N : {5, 20, 80}) {
+            for (auto [r, h, steps] : {std::tuple<ReferenceLine, double, int>{lab(N), 1e-3, 300},
+                                       {oc4(N), 0.1, 200}}) {
+                r.p.relativeTolerance = r.p.absoluteTolerance = tolerance;
+                double change = 0.0, speed = 0.0, T0 = 0.0;
+                holdStill(r, h, steps, change, speed, T0);
+                std::cout << r.name << ", N = " << N << ", CVODE tolerance " << tolerance
+                          << ": fairlead tension " << T0 << " N, largest relative change "
+                          << change << ", largest node speed " << speed << " m/s\n";
+                // Newton leaves node forces at round-off (1e-14 EA at most),
+                // so what moves the tension is CVODE's error at rest, which
+                // its tolerance bounds: a velocity error dv of the top node
+                // changes the tension by BA/l dv (the lab chain: 10 to
+                // 165 N.s/m for N = 5 to 80 against 0.56 N; OC4: 1.8e4 to
+                // 2.9e5 N.s/m against 1.1e6 N). At tolerance 1e-9 the
+                // issue's goal, 1e-6, holds for both lines (measured 1e-7
+                // lab, 2e-9 OC4); at the default 1e-6 the lab chain's
+                // stiff damping term lifts it to 3e-6 (measured): 1e-5.
+                EXPECT_LT(change, tolerance < 1e-6 ? 1e-6 : 1e-5)
+                    << r.name << ", N = " << N;
+            }
+        }
+    }
+}
+
+TEST(MooringLineStart, NodesRestOnTheSeabedPenalty)
+{
+    // At rest, and below the seabed only by the penalty's sink w / (kb d)
+    // (0.63 mm for the lab chain), never more
+    const ReferenceLine r = lab(20);
+    MooringLine line(r.p);
+    const MooringLineState s = line.initialState(body(r.fairlead), body(r.anchor), 0.0);
+    const double sink = r.p.weight() / (r.p.seabedStiffness * r.p.diameter);
+    int grounded = 0;
+    for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
+        EXPECT_GE(s.nodes[i + 2], r.anchor[2] - (1.0 + 1e-6) * sink) << i / 6 + 1;
+        grounded += s.nodes[i + 2] < r.anchor[2];
+        EXPECT_EQ(s.nodes[i + 3], 0.0);
+    }
+    EXPECT_GT(grounded, 0);
+}
+
+TEST(MooringLineStart, UnusableParametersAreNamed)
+{
+    const ReferenceLine r = lab(20);
+    MooringLineParameters p = r.p;
+    p.length = -1.2;
+    expectThrowWithMessage<connectors::ParameterError>(
+        [&] { MooringLine line(p); },
+        "mooringLine: parameter unstretchedLength = -1.2 m is out of range (allowed: "
+        "finite and > 0)");
+    p = r.p;
+    p.segments = 0;
+    expectThrowWithMessage<connectors::ConnectorError>(
+        [&] { MooringLine line(p); },
+        "mooringLine: parameter segments = 0 is out of range (allowed: an integer from "
+        "2 to 1000)");
+    MooringLine line(r.p);
+    expectThrowWithMessage<connectors::UndefinedStateError>(
+        [&] { line.initialState(body(Vector3(0.0, 0.0, -0.6)), body(r.anchor), 0.0); },
+        "mooringLine: the fairlead (A.p on body A) at z = -0.6 m is below the seabed "
+        "(z = -0.5 m, the height of the anchor B.p); with seabedContact = 1 it must not "
+        "be");
+}
+
+} // namespace
