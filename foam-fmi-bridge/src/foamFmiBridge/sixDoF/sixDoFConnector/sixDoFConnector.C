@@ -339,7 +339,12 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
 
     if (report_)
     {
-        Info<< "Restraint " << name_ << ": t = " << t;
+        // sixDoFRigidBodyMotion names the restraint first when it reports
+        if (!motion.report())
+        {
+            Info<< "Restraint " << name_ << ": ";
+        }
+        Info<< "t = " << t;
         for (const word diagnostic : {"length", "tension"})
         {
             if (fmu_->outputNames().found(diagnostic))
