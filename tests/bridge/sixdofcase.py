@@ -37,10 +37,10 @@ class SixDoFCase(Case):
         with open(os.path.join(self.dir, "constant", "sixDoFBodies"), "w") as f:
             f.write(foam_file("sixDoFBodies", text))
 
-    def run(self, n_iter=1, expect_failure=False):
-        """Run sixDoFSim; return its log (stdout and stderr)."""
+    def run(self, n_iter=1, expect_failure=False, args=()):
+        """Run sixDoFSim with args; return its log (stdout and stderr)."""
         result = subprocess.run(
-            ["sixDoFSim", "-case", self.dir, "-nIter", str(n_iter)],
+            ["sixDoFSim", "-case", self.dir, "-nIter", str(n_iter), *args],
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         )
         self.returncode = result.returncode

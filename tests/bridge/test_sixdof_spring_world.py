@@ -13,6 +13,11 @@ linearSpring FMU tied to the fixed world, run by sixDoFSim (no fluid).
 3. Restart: the run to 1 s, restarted from its write at 0.5 s, continues
    bit for bit (body and connector output), and a restart without the
    connector's state file stops with a message saying so.
+
+1 and 3 also with sixDoFSim -copyDicts, which builds each motion from a
+copy of its dictionary as a sixDoFRigidBodyMotion solver does: the
+restraint then loads its FMU at the first evaluation, with the start time's
+state file and output directory.
 """
 import math
 import os
@@ -57,8 +62,9 @@ def builtin_spring():
 
 def compare_builtin():
     failures = 0
-    for solver in ("symplectic", "Newmark", "CrankNicolson"):
-        for n_iter in (1, 3):
+    for solver, n_iter, copy in [(s, n, False) for s in ("symplectic", "Newmark", "CrankNicolson")
+                                 for n in (1, 3)] + [("Newmark", 3, True)]:
+        if True:
             case = SixDoFCase(
                 f"sixdofWorld.{solver}.{n_iter}",
                 {
@@ -67,7 +73,7 @@ def compare_builtin():
                 },
                 2.0, 0.001, g=(0, 0, -9.81),
             )
-            case.run(n_iter=n_iter)
+            case.run(n_iter=n_iter, args=["-copyDicts"] if copy else [])
             b = case.bodies()
             amplitude = max(abs(z - CENTRE[2]) for z in b["builtin.c.z"])
             worst = 0.0
@@ -81,7 +87,8 @@ def compare_builtin():
             # (~1e-3) or a wrong frame for A.p (~1e-2)
             ok = worst <= 1e-10 * amplitude and amplitude > 0.01
             failures += not ok
-            print(f"{'PASS' if ok else 'FAIL'} builtin linearSpring, {solver}, nIter {n_iter}: "
+            print(f"{'PASS' if ok else 'FAIL'} builtin linearSpring, {solver}, nIter {n_iter}"
+                  f"{', -copyDicts' if copy else ''}: "
                   f"max difference {worst:.3e} (amplitude {amplitude:.3f})")
             rows = case.connector("spring_fmu")["Time"]
             if len(rows) != len(b["Time"]) - 1:
@@ -124,11 +131,11 @@ def compare_analytic():
     return failures
 
 
-def compare_restart():
+def compare_restart(args=()):
     failures = 0
     bodies = {"fmu": sixdof_body(M, J, CENTRE, "Newmark", fmu_spring("fmu"))}
     full = SixDoFCase("sixdofRestart.full", bodies, 1.0, 0.005, write_interval=0.5, g=(0, 0, -9.81))
-    full.run(n_iter=2)
+    full.run(n_iter=2, args=args)
 
     for keep_state in (True, False):
         case = SixDoFCase("sixdofRestart.half", bodies, 1.0, 0.005, write_interval=0.5, g=(0, 0, -9.81))
@@ -136,7 +143,7 @@ def compare_restart():
         if not keep_state:
             os.remove(os.path.join(case.dir, "0.5", "uniform", "fmuConnectors", "spring_fmu"))
         case.set_time(0.5, 1.0, 0.005, 0.5)
-        result = subprocess.run(["sixDoFSim", "-case", case.dir, "-nIter", "2"],
+        result = subprocess.run(["sixDoFSim", "-case", case.dir, "-nIter", "2", *args],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         if keep_state:
             a, b = full.bodies(), case.bodies("0.5") if result.returncode == 0 else {"Time": []}
@@ -158,12 +165,14 @@ def compare_restart():
             same = same and "FMU state restored at t = 0.5" in result.stdout
             failures += not same
             print(f"{'PASS' if same else 'FAIL'} restart from 0.5 s continues bit for bit "
-                  f"(exit code {result.returncode})")
+                  f"{' '.join(args)} (exit code {result.returncode})")
         else:
             ok = result.returncode != 0 and "is missing" in result.stdout and "restart fresh" in result.stdout
+            # The message names the start time's directory
+            ok = ok and "starts from t = 0.5," in result.stdout
             failures += not ok
             print(f"{'PASS' if ok else 'FAIL'} restart without the connector's state is fatal "
-                  f"(exit code {result.returncode})")
+                  f"{' '.join(args)} (exit code {result.returncode})")
         case.cleanup()
     full.cleanup()
     return failures
@@ -171,6 +180,7 @@ def compare_restart():
 
 def main():
     failures = compare_builtin() + compare_analytic() + compare_restart()
+    failures += compare_restart(["-copyDicts"])
     print("all passed" if not failures else f"{failures} failed")
     return 1 if failures else 0
 

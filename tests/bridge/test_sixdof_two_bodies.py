@@ -18,7 +18,9 @@ that same evaluation.
    step, and the outer correctors reduce it.
 4. Misconfigurations stop the run with a message: an unknown entry, a
    restraint in the motion of a body it does not name, a connector missing
-   from one body's motion, two restraints of one name that differ.
+   from one body's motion, two restraints of one name that differ, a
+   two-body connector in motions built from copies of their dictionaries
+   (sixDoFRigidBodyMotion solvers).
 """
 import math
 import re
@@ -151,9 +153,13 @@ def check_errors(failures):
         "restraints differ": (bodies(spring2=spring().replace("stiffness 50.0", "stiffness 40.0")),
                               ["must be the same connector"]),
     }
-    for name, (model, needles) in cases.items():
+    # A motion built from a copy of its dictionary (a sixDoFRigidBodyMotion
+    # solver) cannot share a connector between two bodies
+    cases["two bodies in motions built from copies"] = (
+        bodies(), ["needs each body moved by its own sixDoFRigidBodyDisplacement"], ["-copyDicts"])
+    for name, (model, needles, *args) in cases.items():
         case = SixDoFCase("sixdofTwo.error", model, 0.01, 0.001)
-        log = case.run(expect_failure=True)
+        log = case.run(expect_failure=True, args=args[0] if args else [])
         ok = all(n in log for n in needles)
         failures += not ok
         print(f"{'PASS' if ok else 'FAIL'} {name} is fatal with a message naming it")

@@ -33,7 +33,13 @@ Description
     (global frame, row by row).
 
 Usage
-    sixDoFSim [-nIter <n>] [-case <dir>]
+    sixDoFSim [-nIter <n>] [-copyDicts] [-case <dir>]
+
+    -copyDicts constructs each motion from a copy of its dictionary, as a
+    sixDoFRigidBodyMotion solver of dynamicMeshDict does (its coefficients
+    are a copy with no parent): a restraint cannot reach the case's time
+    through its dictionary then, and the fmuConnector restraint loads its
+    FMU at the first evaluation.
 
 \*---------------------------------------------------------------------------*/
 
@@ -140,6 +146,13 @@ int main(int argc, char *argv[])
         "Integrate sixDoFRigidBodyMotion bodies without fluid"
     );
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "copyDicts",
+        "Construct each motion from a copy of its dictionary, as a"
+        " sixDoFRigidBodyMotion solver does: restraints cannot reach the"
+        " case's time through it"
+    );
     argList::addOption
     (
         "nIter",
@@ -172,10 +185,21 @@ int main(int argc, char *argv[])
         if (e.isDict())
         {
             names.append(e.keyword());
-            motions.append
-            (
-                new sixDoFRigidBodyMotion(e.dict(), e.dict(), runTime)
-            );
+            if (args.found("copyDicts"))
+            {
+                const dictionary copy(e.dict());
+                motions.append
+                (
+                    new sixDoFRigidBodyMotion(copy, copy, runTime)
+                );
+            }
+            else
+            {
+                motions.append
+                (
+                    new sixDoFRigidBodyMotion(e.dict(), e.dict(), runTime)
+                );
+            }
         }
     }
 

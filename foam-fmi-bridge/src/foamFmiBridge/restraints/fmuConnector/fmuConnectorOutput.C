@@ -101,7 +101,8 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     const word& name,
     const Time& runTime,
     const connectorFmu& fmu,
-    const string& description
+    const string& description,
+    const word& startTimeName
 )
 :
     regIOobject
@@ -109,7 +110,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
         IOobject
         (
             "fmuConnectorOutput." + name,
-            runTime.timeName(),
+            startTimeName.empty() ? runTime.timeName() : startTimeName,
             runTime,
             IOobject::NO_READ,
             IOobject::AUTO_WRITE
@@ -122,7 +123,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     const fileName dir
     (
         runTime.globalPath()/"postProcessing"/"fmuConnectors"
-       /runTime.timeName()
+       /(startTimeName.empty() ? runTime.timeName() : startTimeName)
     );
     mkDir(dir);
     const fileName path(dir/(name + ".dat"));

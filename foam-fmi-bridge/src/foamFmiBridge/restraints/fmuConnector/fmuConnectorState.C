@@ -62,7 +62,8 @@ Foam::fmuConnectorState::fmuConnectorState
     const objectRegistry& time,
     connectorFmu& fmu,
     const bool fresh,
-    const dictionary& restraintDict
+    const dictionary& restraintDict,
+    const word& startTimeName
 )
 :
     regIOobject
@@ -70,7 +71,7 @@ Foam::fmuConnectorState::fmuConnectorState
         IOobject
         (
             name,
-            time.time().timeName(),
+            startTimeName.empty() ? time.time().timeName() : startTimeName,
             "uniform/fmuConnectors",
             time,
             IOobject::READ_IF_PRESENT,
@@ -116,9 +117,9 @@ Foam::fmuConnectorState::fmuConnectorState
     {
         FatalIOErrorInFunction(restraintDict)
             << "restraint " << name << ": the run starts from t = "
-            << runTime.timeName() << ", written by an earlier run (time"
+            << instance().c_str() << ", written by an earlier run (time"
             << " index " << runTime.startTimeIndex() << " in "
-            << runTime.timePath()/"uniform"/"time"
+            << runTime.path()/instance()/"uniform"/"time"
             << "), but the connector's state "
             << objectPath() << " is missing"
             << (

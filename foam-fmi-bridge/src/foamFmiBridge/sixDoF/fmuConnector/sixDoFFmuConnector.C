@@ -77,16 +77,35 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
 {
     read(sDoFRBMRDict);
 
-    // The case's time: the motion dictionary is read from a file of the
-    // case (a field's boundary condition, dynamicMeshDict)
-    const regIOobject* top =
-        dynamic_cast<const regIOobject*>(&sDoFRBMRDict.topDict());
+    // The case's time: the motion dictionary is part of a file of the case
+    // (a field's boundary condition, dynamicMeshDict, a solver's
+    // dictionary of dynamicMotionSolverListFvMesh): the nearest enclosing
+    // dictionary that is a registered object
+    const regIOobject* top = nullptr;
+    for
+    (
+        const dictionary* d = &sDoFRBMRDict;
+        !top && d != &dictionary::null && d != &d->parent();
+        d = &d->parent()
+    )
+    {
+        top = dynamic_cast<const regIOobject*>(d);
+    }
     if (!top)
     {
-        FatalIOErrorInFunction(sDoFRBMRDict)
-            << "restraint " << name_ << ": the motion dictionary is not"
-            << " part of a file read by the case, so the connector cannot"
-            << " find the case's time" << exit(FatalIOError);
+        if (!bodyB_.empty())
+        {
+            FatalIOErrorInFunction(sDoFRBMRDict)
+                << "restraint " << name_ << ": a connector between two"
+                << " sixDoF bodies needs each body moved by its own"
+                << " sixDoFRigidBodyDisplacement patch condition (the"
+                << " restraint in the patch's dictionary of"
+                << " pointDisplacement); in a sixDoFRigidBodyMotion solver"
+                << " only a connector to the fixed world is supported"
+                << " (docs/sixdof-connectors.md)" << exit(FatalIOError);
+        }
+        // Loaded at the first evaluation, which knows the time
+        return;
     }
     const Time& runTime = top->db().time();
 
@@ -161,6 +180,26 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::restrain
     vector& restraintMoment
 ) const
 {
+    if (!connector_)
+    {
+        // The FMU starts at the start time, as if loaded at construction
+        const Time& runTime = motion.time();
+        const scalar startTime = runTime.startTime().value();
+        connector_ = sixDoFConnector::New
+        (
+            name_,
+            sDoFRBMRCoeffs_,
+            runTime,
+            fmuFile_,
+            body_,
+            bodyB_,
+            report_,
+            restart_ == "fresh",
+            runTime.timeName(startTime),
+            startTime
+        );
+    }
+
     const connectorFmu::loads loads(connector_->restrain(side_, motion));
 
     restraintPosition = motion.centreOfRotation();

@@ -43,7 +43,12 @@ Foam::word Foam::sixDoFConnector::bodyName(const label side) const
 }
 
 
-void Foam::sixDoFConnector::load(const Time& runTime, const fileName& fmuFile)
+void Foam::sixDoFConnector::load
+(
+    const Time& runTime,
+    const fileName& fmuFile,
+    const scalar startTime
+)
 {
     fileName file(fmuFile);
     file.expand();
@@ -60,7 +65,7 @@ void Foam::sixDoFConnector::load(const Time& runTime, const fileName& fmuFile)
             name_,
             dict_,
             dict_.subOrEmptyDict("parameters"),
-            runTime.value()
+            startTime
         )
     );
 
@@ -86,7 +91,9 @@ Foam::sixDoFConnector::sixDoFConnector
     const word& bodyA,
     const word& bodyB,
     const bool report,
-    const bool fresh
+    const bool fresh,
+    const word& startTimeName,
+    const scalar startTime
 )
 :
     regIOobject
@@ -111,7 +118,7 @@ Foam::sixDoFConnector::sixDoFConnector
     massSet_(false),
     registered_{false, false},
     pending_(-1),
-    stepTime_(runTime.value()),
+    stepTime_(startTimeName.empty() ? runTime.value() : startTime),
     evaluated_{true, true}
 {
     if (!Pstream::master())
@@ -119,11 +126,14 @@ Foam::sixDoFConnector::sixDoFConnector
         return;
     }
 
-    load(runTime, fmuFile);
+    load(runTime, fmuFile, stepTime_);
 
     stateIO_.reset
     (
-        new fmuConnectorState(name_, runTime, *fmu_, fresh, dict_)
+        new fmuConnectorState
+        (
+            name_, runTime, *fmu_, fresh, dict_, startTimeName
+        )
     );
 
     if (!fmu_->canSerialize() && !fresh)
@@ -144,7 +154,10 @@ Foam::sixDoFConnector::sixDoFConnector
 
     output_.reset
     (
-        new fmuConnectorOutput(name_, runTime, *fmu_, description.str())
+        new fmuConnectorOutput
+        (
+            name_, runTime, *fmu_, description.str(), startTimeName
+        )
     );
 }
 
@@ -158,7 +171,9 @@ std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
     const word& bodyA,
     const word& bodyB,
     const bool report,
-    const bool fresh
+    const bool fresh,
+    const word& startTimeName,
+    const scalar startTime
 )
 {
     const word key("sixDoFConnector." + name);
@@ -183,7 +198,8 @@ std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
 
     return std::make_shared<sixDoFConnector>
     (
-        name, dict, runTime, fmuFile, bodyA, bodyB, report, fresh
+        name, dict, runTime, fmuFile, bodyA, bodyB, report, fresh,
+        startTimeName, startTime
     );
 }
 
