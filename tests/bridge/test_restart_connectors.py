@@ -65,11 +65,17 @@ def damper_model():
 """
 
 
+# Folders made for a scene, removed at the end
+SCRATCH = []
+
+
 def bungee_model():
     import customfmu
     import test_bungee
 
-    fmu, _ = customfmu.build(customfmu.copy_example("restart"))
+    folder = customfmu.copy_example("restart")
+    SCRATCH.append(folder)
+    fmu, _ = customfmu.build(folder)
     return test_bungee.model(fmu, 40.0, 0.0, 1.0, -1.2, "symplectic")
 
 
@@ -161,6 +167,8 @@ def main():
             print(f"FAIL {name}: {str(error)[-1500:]}", flush=True)
             ok = False
         failures += 0 if ok else 1
+    for folder in SCRATCH:
+        shutil.rmtree(folder, ignore_errors=True)
     print(f"{len(SCENES) - failures} passed, {failures} failed")
     return 1 if failures else 0
 
