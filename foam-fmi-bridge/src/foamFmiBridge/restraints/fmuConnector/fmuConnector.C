@@ -118,6 +118,21 @@ Foam::RBD::restraints::fmuConnector::bodyKinematics(const label bodyID) const
 }
 
 
+Foam::connectorFmu::massProperties
+Foam::RBD::restraints::fmuConnector::massProperties(const label bodyID) const
+{
+    // A restraint names bodies that are not merged into others; bodies
+    // merged into this one are in its inertia
+    // (bodies() returns a copy of the list)
+    const PtrList<rigidBody> bodies(model_.bodies());
+    const rigidBody& body = bodies[model_.master(bodyID)];
+    const vector c(body.c());
+    const tensor J(body.Ic());
+
+    return connectorFmu::massProperties{body.m(), c, J};
+}
+
+
 void Foam::RBD::restraints::fmuConnector::load()
 {
     const Time& runTime = model_.time();
@@ -142,6 +157,15 @@ void Foam::RBD::restraints::fmuConnector::load()
             << " connects one body to the fixed world (it declares no B.r)"
             << exit(FatalIOError);
     }
+
+    // The mass inputs the FMU declares (A.m, A.c, A.J, B's when B is a
+    // body); nothing is set for an FMU that declares none
+    fmu_->setMassProperties
+    (
+        massProperties(bodyID_),
+        massProperties(bodyBName_.empty() ? bodyID_ : bodyBID_),
+        !bodyBName_.empty()
+    );
 
     stateIO_.reset
     (
