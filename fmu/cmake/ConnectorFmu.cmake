@@ -8,7 +8,9 @@
 #                   Self-contained: libstdc++ and SUNDIALS linked in, so
 #                   that it needs only the system's C libraries (libc, libm,
 #                   libgcc_s) of glibc 2.34 or later (glibcCompat.c), and
-#                   runs beside any host's C++ runtime
+#                   runs beside any host's C++ runtime; its copy of
+#                   libstdc++ frees its heap when the FMU is unloaded
+#                   (staticRuntimeUnload.cpp)
 #   <name>Generator writes modelDescription.xml and documentation/index.html
 #                   from the model's variable table
 #   <name>Fmu       (part of `all`) zips the staging directory
@@ -34,7 +36,8 @@ function(add_connector_fmu)
   add_library(${name} MODULE
     $<TARGET_OBJECTS:${name}Model>
     $<TARGET_OBJECTS:fmuExportEntryPoints>
-    ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/glibcCompat.c)
+    ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/glibcCompat.c
+    ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/staticRuntimeUnload.cpp)
   target_link_libraries(${name} PRIVATE fmuExport)
   set(exports ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/fmi2Exports.map)
   target_link_options(${name} PRIVATE
