@@ -211,7 +211,8 @@ double MooringLineParameters::weight() const
 
 std::vector<double> MooringLineState::serialize() const
 {
-    std::vector<double> out = {time, Q[0], Q[1], Q[2], P[0], P[1], P[2]};
+    std::vector<double> out = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],
+                               vQ[0], vQ[1], vQ[2], vP[0], vP[1], vP[2]};
     out.insert(out.end(), nodes.begin(), nodes.end());
     return out;
 }
@@ -219,7 +220,7 @@ std::vector<double> MooringLineState::serialize() const
 MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
                                                int segments)
 {
-    const std::size_t expected = 7 + 6 * std::size_t(segments - 1);
+    const std::size_t expected = 13 + 6 * std::size_t(segments - 1);
     if (data.size() != expected) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(data.size())
@@ -230,7 +231,9 @@ MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
     s.time = data[0];
     s.Q = Vector3(data[1], data[2], data[3]);
     s.P = Vector3(data[4], data[5], data[6]);
-    s.nodes.assign(data.begin() + 7, data.end());
+    s.vQ = Vector3(data[7], data[8], data[9]);
+    s.vP = Vector3(data[10], data[11], data[12]);
+    s.nodes.assign(data.begin() + 13, data.end());
     return s;
 }
 
@@ -276,6 +279,11 @@ Vector3 MooringLine::attachment(const BodyKinematics& body, const Vector3& p) co
     return body.p_WBo_W + body.R_WB * p;
 }
 
+Vector3 MooringLine::attachmentVelocity(const BodyKinematics& body, const Vector3& p) const
+{
+    return body.v_WBo_W + body.w_WB_W.cross(body.R_WB * p);
+}
+
 MooringLineState MooringLine::initialState(const BodyKinematics& A,
                                            const BodyKinematics& B,
                                            double time) const
@@ -310,6 +318,8 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     s.time = time;
     s.P = attachment(A, p.p_AoP_A);
     s.Q = attachment(B, p.p_BoQ_B);
+    s.vP = attachmentVelocity(A, p.p_AoP_A);
+    s.vQ = attachmentVelocity(B, p.p_BoQ_B);
     const int N = p.segments;
     // shape runs from P (index 0) to Q (index N); node i is shape[N - i]
     std::vector<Vector3> r(std::size_t(N + 1));
@@ -337,12 +347,22 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
 int MooringLine::rhs(double t, const double* y, double* ydot) const
 {
     const int N = parameters_.segments;
-    const double f = std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0);
+    // cubic Hermite basis at s in [0, 1] and its derivative by t
+    const double s = std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0), h = ends_.h;
+    const double s2 = s * s, s3 = s2 * s;
+    const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h10 = s3 - 2.0 * s2 + s;
+    const double h01 = 3.0 * s2 - 2.0 * s3, h11 = s3 - s2;
+    const double d00 = 6.0 * (s2 - s) / h, d10 = 3.0 * s2 - 4.0 * s + 1.0;
+    const double d11 = 3.0 * s2 - 2.0 * s; // d01 = -d00
     std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
-    r[0] = ends_.Q0 + f * (ends_.Q1 - ends_.Q0);
-    r[N] = ends_.P0 + f * (ends_.P1 - ends_.P0);
-    v[0] = (ends_.Q1 - ends_.Q0) / ends_.h;
-    v[N] = (ends_.P1 - ends_.P0) / ends_.h;
+    r[0] = h00 * ends_.Q0 + h10 * h * ends_.vQ0 + h01 * ends_.Q1 + h11 * h * ends_.vQ1;
+    r[N] = h00 * ends_.P0 + h10 * h * ends_.vP0 + h01 * ends_.P1 + h11 * h * ends_.vP1;
+    v[0] = d00 * (ends_.Q0 - ends_.Q1) + d10 * ends_.vQ0 + d11 * ends_.vQ1;
+    v[N] = d00 * (ends_.P0 - ends_.P1) + d10 * ends_.vP0 + d11 * ends_.vP1;
+    if (s == 1.0) { // exactly the given end velocities (as evaluate sees them)
+        v[0] = ends_.vQ1;
+        v[N] = ends_.vP1;
+    }
     for (int i = 1; i < N; ++i) {
         const double* yi = y + 6 * (i - 1);
         r[i] = Vector3(yi[0], yi[1], yi[2]);
@@ -381,6 +401,10 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     ends_.P0 = state.P;
     ends_.Q1 = attachment(B, parameters_.p_BoQ_B);
     ends_.P1 = attachment(A, parameters_.p_AoP_A);
+    ends_.vQ0 = state.vQ;
+    ends_.vP0 = state.vP;
+    ends_.vQ1 = attachmentVelocity(B, parameters_.p_BoQ_B);
+    ends_.vP1 = attachmentVelocity(A, parameters_.p_AoP_A);
     ends_.t0 = state.time;
     ends_.h = h;
     std::vector<double> y(state.nodes.size());
@@ -396,6 +420,8 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     state.time += h;
     state.Q = ends_.Q1;
     state.P = ends_.P1;
+    state.vQ = ends_.vQ1;
+    state.vP = ends_.vP1;
 }
 
 MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
@@ -415,8 +441,8 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     unpack(state.nodes, N, r, v);
     r[0] = attachment(B, p.p_BoQ_B);
     r[N] = attachment(A, p.p_AoP_A);
-    v[0] = B.v_WBo_W + B.w_WB_W.cross(g.p_BoQ_W);
-    v[N] = A.v_WBo_W + A.w_WB_W.cross(g.p_AoP_W);
+    v[0] = attachmentVelocity(B, p.p_BoQ_B);
+    v[N] = attachmentVelocity(A, p.p_AoP_A);
     const NodeForces f = nodeForces(p, weight_, r, v, r[0][2]);
     const double l = p.length / N;
 

@@ -20,10 +20,14 @@
 // states (position and velocity of each free node, interleaved node by
 // node, so that the Jacobian is banded with half-bandwidth 11) are
 // integrated by CVODE's BDF method (CvodeBdf) with a banded direct solver.
-// Over a step the ends move linearly from their previous positions to the
-// new ones (their velocity is that of the interpolation). Every step starts
-// CVODE afresh (CVodeReInit, order 1) from the node state, so a step
-// repeated from a saved state gives the same result to the last bit.
+// Over a step the ends follow the cubic Hermite path through their
+// positions and velocities at both ends of the step (those saved in the
+// state at its start, the kinematics given at its end), and the node
+// equations see that path's velocity; at the end of the step it is the
+// given velocity, the one `evaluate` uses for the end segments' damping.
+// Every step starts CVODE afresh (CVodeReInit, order 1) from the node
+// state, so a step repeated from a saved state gives the same result to the
+// last bit.
 //
 // Loads: the end nodes' half-segment weight is carried by the bodies
 // (at Q by the seabed when seabedContact):
@@ -70,6 +74,8 @@ struct MooringLineState {
     double time = 0.0;
     //- End positions Q (node 0) and P (node N) at `time` [m]
     Vector3 Q = Vector3::Zero(), P = Vector3::Zero();
+    //- End velocities of Q and P at `time` [m/s] (the Hermite path's start)
+    Vector3 vQ = Vector3::Zero(), vP = Vector3::Zero();
     //- Free nodes 1..N-1: x, y, z, vx, vy, vz each [m, m/s]
     std::vector<double> nodes;
 
@@ -100,7 +106,8 @@ public:
     MooringLineState initialState(const BodyKinematics& A, const BodyKinematics& B,
                                   double time) const;
 
-    //- Advances `state` by h > 0, the ends moving linearly to the
+    //- Advances `state` by h > 0, the ends moving along the cubic Hermite
+    //  path from their positions and velocities in `state` to those of the
     //  attachment points of A and B (the kinematics at state.time + h).
     //  Throws UndefinedStateError (naming CVODE's failure) on failure,
     //  leaving `state` unchanged.
@@ -119,11 +126,12 @@ public:
 
 private:
     struct Ends {
-        Vector3 Q0, P0, Q1, P1;
+        Vector3 Q0, P0, Q1, P1, vQ0, vP0, vQ1, vP1;
         double t0 = 0.0, h = 1.0;
     };
     int rhs(double t, const double* y, double* ydot) const;
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
+    Vector3 attachmentVelocity(const BodyKinematics& body, const Vector3& p) const;
 
     MooringLineParameters parameters_;
     double weight_ = 0.0;

@@ -2,8 +2,9 @@
 // integrated by CVODE inside each fmi2DoStep, behind the connector FMU
 // interface. The variable table below is the only list of its variables.
 //
-// Internal state (Model::internalState): time, end positions and the
-// position and velocity of every free node. It is saved, restored and
+// Internal state (Model::internalState): time, end positions and
+// velocities (the start of the next step's Hermite path) and the position
+// and velocity of every free node. It is saved, restored and
 // serialized with the FMU state; each step restarts CVODE from it, so a
 // step repeated after fmi2SetFMUstate gives the same outputs to the bit.
 #include <cmath>
@@ -34,8 +35,10 @@ A.F = -T_N-1 q_N-1 - w L/(2N) z,   B.F = T_0 q_0 - w L/(2N) z
 </pre>
 <p>Inside each fmi2DoStep the node states are integrated by SUNDIALS CVODE
 (BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
-<code>absoluteTolerance</code>), the ends moving linearly from their
-previous to their new positions. CVODE is restarted at every step (its BDF
+<code>absoluteTolerance</code>), the ends moving along the cubic Hermite
+path through their positions and velocities at the start of the step
+(saved in the FMU state) and at its end (the inputs): set the inputs to the
+end-of-step positions and velocities before fmi2DoStep. CVODE is restarted at every step (its BDF
 history restarts at order 1), so a step repeated from a saved FMU state is
 identical to the uninterrupted one. The line starts at rest in the static
 equilibrium of its own discrete equations (found by Newton from the

@@ -244,16 +244,18 @@ TEST(MooringLine, StateSerialization)
     MooringLine line(chain(6));
     const MooringLineState s = line.initialState(fairlead, anchor, 2.5);
     const std::vector<double> data = s.serialize();
-    ASSERT_EQ(data.size(), 7u + 6u * 5u);
+    ASSERT_EQ(data.size(), 13u + 6u * 5u);
     const MooringLineState back = MooringLineState::deserialize(data, 6);
     EXPECT_EQ(back.time, 2.5);
     EXPECT_EQ(back.P, s.P);
     EXPECT_EQ(back.Q, s.Q);
+    EXPECT_EQ(back.vP, s.vP);
+    EXPECT_EQ(back.vQ, s.vQ);
     EXPECT_EQ(back.nodes, s.nodes);
     expectThrowWithMessage<std::invalid_argument>(
         [&] { MooringLineState::deserialize(data, 7); },
-        "mooringLine: a saved state of 37 values does not fit a line of 7 segments "
-        "(43 values)");
+        "mooringLine: a saved state of 43 values does not fit a line of 7 segments "
+        "(49 values)");
 }
 
 TEST(MooringLine, LoadsAndShapeAtTheStart)
