@@ -44,26 +44,6 @@ value()
 pass "window $(value windowStart)-$(value windowEnd) s, $(value windowPeriods) periods," \
     "after the reflected waves' return at $(value reflectionReturnTime) s"
 
-# The free surface must stay within the gauge lines (0.44-0.56 m), or the
-# measured elevation would be clipped
-[ "$(value gaugeSamplesOffLine)" = 0 ] \
-    || fail "the free surface left the gauge lines in $(value gaugeSamplesOffLine) samples"
-pass "free surface within the gauge lines"
-
-# Height at the gauge nearest the generator (x = 0.51 m) within 10 % of the
-# target (0.05 m). Measured -3.8 %: on this coarse mesh (5 cells per wave
-# height) numerical damping has taken about 2 % off the incident wave there
-# (0.5 % at mesh factor 2), and the residual reflection (K_R about 0.08) adds
-# a standing part that changes the local height by up to +-K_R with the
-# gauge's position (-11 to +6 % between the gauges). With a wall at the
-# outlet the local height is anywhere between 0 and twice the target (+81 %
-# at this gauge).
-awk -v e="$(value nearestGaugeHeightError)" 'BEGIN { exit !(e < 0.10 && e > -0.10) }' \
-    || fail "height at x = $(value nearestGaugeX) m: $(value nearestGaugeHeight) m," \
-        "relative error $(value nearestGaugeHeightError), allowed +-0.10"
-pass "height at x = $(value nearestGaugeX) m: $(value nearestGaugeHeight) m" \
-    "(target $(value waveHeight) m, relative error $(value nearestGaugeHeightError), allowed +-0.10)"
-
 # Reflection coefficient (two-probe method, gauges near x = 3.0 and 3.5 m)
 # below 0.15. Measured 0.077 (0.077-0.082 over neighbouring pairs, 0.08-0.09
 # on finer meshes): OpenFOAM's active absorption corrects the boundary
@@ -75,6 +55,28 @@ awk -v r="$(value reflectionCoefficient)" 'BEGIN { exit !(r >= 0 && r < 0.15) }'
         "(x = $(value reflectionPairX1), $(value reflectionPairX2) m), allowed below 0.15"
 pass "reflection coefficient $(value reflectionCoefficient) (x = $(value reflectionPairX1)," \
     "$(value reflectionPairX2) m; neighbouring pairs $(value reflectionCoefficientMin)-$(value reflectionCoefficientMax)), allowed below 0.15"
+
+# Height at the gauge nearest the generator (x = 0.51 m) within 10 % of the
+# target (0.05 m). Measured -3.8 %: on this coarse mesh (5 cells per wave
+# height) numerical damping has taken about 2 % off the incident wave there
+# (0.4 % at mesh factor 2), and the residual reflection (K_R about 0.08) adds
+# a standing part that changes the local height by up to +-K_R with the
+# gauge's position (-11 to +6 % between the gauges). With a wall at the
+# outlet the local height is anywhere between 0 and twice the target (+81 %
+# at this gauge).
+awk -v e="$(value nearestGaugeHeightError)" 'BEGIN { exit !(e < 0.10 && e > -0.10) }' \
+    || fail "height at x = $(value nearestGaugeX) m: $(value nearestGaugeHeight) m," \
+        "relative error $(value nearestGaugeHeightError), allowed +-0.10"
+pass "height at x = $(value nearestGaugeX) m: $(value nearestGaugeHeight) m" \
+    "(target $(value waveHeight) m, relative error $(value nearestGaugeHeightError), allowed +-0.10)"
+
+# The free surface must stay within the gauge lines (0.44-0.56 m), or the
+# measured elevation would be clipped (checked after the height and the
+# reflection, which are then wrong too: with a wall at the outlet the
+# standing wave leaves the lines, and the reflection check says why)
+[ "$(value gaugeSamplesOffLine)" = 0 ] \
+    || fail "the free surface left the gauge lines in $(value gaugeSamplesOffLine) samples"
+pass "free surface within the gauge lines"
 
 for f in waveTank.dat gauges.dat reflection.dat elevation.dat
 do
