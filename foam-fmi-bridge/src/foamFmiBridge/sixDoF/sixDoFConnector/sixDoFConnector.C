@@ -353,7 +353,9 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
         side == 0 ? fmu_->loadsA() : fmu_->loadsB()
     );
 
-    if (report_)
+    // A motion that reports has named the restraint and waits for its line,
+    // as OpenFOAM's restraints give it
+    if (report_ || motion.report())
     {
         // sixDoFRigidBodyMotion names the restraint first when it reports
         if (!motion.report())
