@@ -18,7 +18,8 @@ that same evaluation.
    step, and the outer correctors reduce it.
 4. Misconfigurations stop the run with a message: an unknown entry, a
    restraint in the motion of a body it does not name, a connector missing
-   from one body's motion, two restraints of one name that differ, a
+   from one body's motion, two restraints of one name that differ (also
+   two connectors to the world of one name in two bodies), a
    two-body connector in motions built from copies of their dictionaries
    (sixDoFRigidBodyMotion solvers).
 """
@@ -153,6 +154,12 @@ def check_errors(failures):
         "restraints differ": (bodies(spring2=spring().replace("stiffness 50.0", "stiffness 40.0")),
                               ["must be the same connector"]),
     }
+    # Two connectors to the world of one name, one per body: they would
+    # share the state file and the output, and are refused
+    world = lambda b: spring().replace("bodyB cube2;", "").replace("body cube1;", f"body {b};")
+    cases["two world connectors of one name"] = (
+        bodies(spring1=world("cube1"), spring2=world("cube2")),
+        ["must be the same connector", "give separate connectors separate names"])
     # A motion built from a copy of its dictionary (a sixDoFRigidBodyMotion
     # solver) cannot share a connector between two bodies
     cases["two bodies in motions built from copies"] = (

@@ -186,9 +186,11 @@ std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
         if (entriesOf(found->dict_) != entriesOf(dict))
         {
             FatalIOErrorInFunction(dict)
-                << "restraint " << name << ": the two restraints of this"
-                << " name (one in each body's motion) must be the same"
-                << " connector, but they differ. First:" << nl
+                << "restraint " << name << ": restraints of one name in"
+                << " two motions are one connector between two bodies (its"
+                << " state file and output are named after it), so they"
+                << " must be the same connector, but they differ; give"
+                << " separate connectors separate names. First:" << nl
                 << entriesOf(found->dict_).c_str() << nl
                 << "this one:" << nl << entriesOf(dict).c_str()
                 << exit(FatalIOError);
