@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -136,7 +137,7 @@ double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r, double w
 //  the solution, where the energy's change is below its round-off).
 //  r becomes the iterate with the smallest largest node force; returns
 //  whether that fell below 1e-11 of the line's weight plus its largest
-//  tension (plus 1e-14 EA).
+//  tension (plus the round-off of a tension, 16 eps EA |r| / l).
 bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>& r,
                   double zb)
 {
@@ -149,13 +150,20 @@ bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>
     // Once below the tolerance, iterates on to the round-off floor (three
     // steps without a smaller largest force): a force left on a node
     // starts it moving
+    double extent = 0.0; // largest coordinate [m]
+    for (const Vector3& ri : r) {
+        extent = std::max(extent, ri.lpNorm<Eigen::Infinity>());
+    }
+    const double l = p.length / N;
     const auto tolerance = [&](const NodeForces& forces) {
         double tension = 0.0;
         for (const double T : forces.T) {
             tension = std::max(tension, std::abs(T));
         }
-        // 1e-14 EA: the round-off of a tension computed from a strain
-        return 1e-11 * (std::abs(w) * p.length + tension) + 1e-14 * p.EA;
+        // + the round-off of a tension from a strain: coordinates carry
+        // eps |r|, a segment's strain eps |r| / l
+        return 1e-11 * (std::abs(w) * p.length + tension)
+               + 16.0 * std::numeric_limits<double>::epsilon() * p.EA * extent / l;
     };
     int stalled = 0;
     double best = residual, bestTolerance = tolerance(f);
@@ -330,7 +338,8 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     r[std::size_t(N)] = s.P;
     // The discrete line's own equilibrium (straight segments, seabed
     // penalty), so that a line held still stays still; the catenary shape
-    // is kept where Newton cannot reach one (a slack weightless line)
+    // is kept where Newton cannot reach one (a slack weightless line, a
+    // line folded on the seabed, whose grounded nodes have no unique place)
     std::vector<Vector3> equilibrium(r);
     if (solveStatics(p, weight_, equilibrium, s.Q[2])) {
         r.swap(equilibrium);
