@@ -364,6 +364,12 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
     const double d00 = 6.0 * (s2 - s) / h, d10 = 3.0 * s2 - 4.0 * s + 1.0;
     const double d11 = 3.0 * s2 - 2.0 * s; // d01 = -d00
     std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+    if (!parameters_.hermiteEnds) {
+        r[0] = ends_.Q0 + s * (ends_.Q1 - ends_.Q0);
+        r[N] = ends_.P0 + s * (ends_.P1 - ends_.P0);
+        v[0] = (ends_.Q1 - ends_.Q0) / h;
+        v[N] = (ends_.P1 - ends_.P0) / h;
+    } else {
     r[0] = h00 * ends_.Q0 + h10 * h * ends_.vQ0 + h01 * ends_.Q1 + h11 * h * ends_.vQ1;
     r[N] = h00 * ends_.P0 + h10 * h * ends_.vP0 + h01 * ends_.P1 + h11 * h * ends_.vP1;
     v[0] = d00 * (ends_.Q0 - ends_.Q1) + d10 * ends_.vQ0 + d11 * ends_.vQ1;
@@ -371,6 +377,7 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
     if (s == 1.0) { // exactly the given end velocities (as evaluate sees them)
         v[0] = ends_.vQ1;
         v[N] = ends_.vP1;
+    }
     }
     for (int i = 1; i < N; ++i) {
         const double* yi = y + 6 * (i - 1);

@@ -63,6 +63,10 @@ struct MooringLineParameters {
     int segments = 20;
     //- CVODE tolerances (relative [-], absolute [m, m/s])
     double relativeTolerance = 1e-6, absoluteTolerance = 1e-6;
+    //- The ends' path over a step: the cubic Hermite curve through the
+    //  positions and velocities at both ends (true), or straight lines
+    //  between the positions at the step's mean velocity (false)
+    bool hermiteEnds = true;
 
     //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
     double weight() const;

@@ -79,6 +79,10 @@ const Scalar scalars[] = {
     {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},
     {"relativeTolerance", "1", "CVODE relative tolerance, > 0", 1e-6},
     {"absoluteTolerance", "1", "CVODE absolute tolerance (m, m/s), > 0", 1e-6},
+    {"hermiteEnds", "1",
+     "1: within a step the ends follow the cubic Hermite curve through the positions "
+     "and velocities at both ends; 0: straight lines between the positions",
+     1.0},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -178,6 +182,7 @@ MooringLineModel::parameters(const double* values) const
     p.segments = int(segments);
     p.relativeTolerance = s[15];
     p.absoluteTolerance = s[16];
+    p.hermiteEnds = flag("hermiteEnds", s[17]);
     return p;
 }
 
