@@ -22,4 +22,4 @@ __attribute__((destructor)) void freeStaticRuntime()
     __gnu_cxx::__freeres();
 }
 
-}  // namespace
+} // namespace
