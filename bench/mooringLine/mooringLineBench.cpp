@@ -28,6 +28,7 @@
 #include <cstring>
 #include <vector>
 
+#include "MooringLineReferences.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace {
@@ -37,52 +38,14 @@ using Clock = std::chrono::steady_clock;
 constexpr double pi = 3.14159265358979323846;
 
 struct Case {
-    const char* name;
-    MooringLineParameters p;
-    Vector3 anchor, fairlead;
+    references::ReferenceLine line;
     double amplitude, period, fineStep, referenceStep;
     std::vector<double> steps, tolerances;
 };
 
-Case lab()
-{
-    Case c{"lab chain", {}, Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05),
-           0.01, 1.0, 2e-4, 1e-3, {1e-3}, {1e-6, 1e-8}};
-    MooringLineParameters& p = c.p;
-    p.length = 1.2;
-    p.massPerLength = 0.0796;
-    p.EA = 3.416e5;
-    p.diameter = 3.6e-3;
-    p.normalDrag = 1.33;
-    p.normalAddedMass = 1.0;
-    p.tangentialDrag = 0.2;
-    p.tangentialAddedMass = 0.5;
-    p.axialDamping = 2.473;
-    p.seabedContact = true;
-    p.seabedStiffness = 3e5;
-    p.seabedDamping = 3e3;
-    return c;
-}
+Case lab() { return {references::lab(20), 0.01, 1.0, 2e-4, 1e-3, {1e-3}, {1e-6, 1e-8}}; }
 
-Case oc4()
-{
-    Case c{"OC4 line", {}, Vector3(-837.6, 0.0, -200.0), Vector3(-40.868, 0.0, -14.0),
-           1.0, 10.0, 1e-2, 1e-2, {0.1}, {1e-6}};
-    MooringLineParameters& p = c.p;
-    p.length = 835.5;
-    p.massPerLength = 113.35;
-    p.EA = 7.536e8;
-    p.diameter = 0.0766;
-    p.normalDrag = 2.0;
-    p.normalAddedMass = 0.8;
-    p.tangentialDrag = 0.4;
-    p.tangentialAddedMass = 0.25;
-    p.axialDamping = 3.052e6;
-    p.seabedContact = true;
-    p.seabedStiffness = 3e6;
-    p.seabedDamping = 3e5;
-    return c;
-}
+Case oc4() { return {references::oc4(20), 1.0, 10.0, 1e-2, 1e-2, {0.1}, {1e-6}}; }
 
 BodyKinematics fairleadAt(const Case& c, double t)
 {
@@ -90,7 +53,7 @@ BodyKinematics fairleadAt(const Case& c, double t)
     const double r = t < c.period ? 0.5 * (1.0 - std::cos(pi * t / c.period)) : 1.0;
     const double dr = t < c.period ? 0.5 * pi / c.period * std::sin(pi * t / c.period) : 0.0;
     BodyKinematics A;
-    A.p_WBo_W = c.fairlead + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
+    A.p_WBo_W = c.line.fairlead + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
     A.v_WBo_W = Vector3(c.amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t)), 0.0, 0.0);
     return A;
 }
@@ -102,12 +65,12 @@ struct Result {
 //- First harmonic of the fairlead tension over the third period
 Result run(const Case& c, int N, double h, double tolerance = 1e-6)
 {
-    MooringLineParameters p = c.p;
+    MooringLineParameters p = c.line.p;
     p.segments = N;
     p.relativeTolerance = p.absoluteTolerance = tolerance;
     MooringLine line(p);
     BodyKinematics B;
-    B.p_WBo_W = c.anchor;
+    B.p_WBo_W = c.line.anchor;
     const int perPeriod = int(std::lround(c.period / h));
     const auto start = Clock::now();
     MooringLineState s = line.initialState(fairleadAt(c, 0.0), B, 0.0);
@@ -133,7 +96,7 @@ void bench(const Case& c)
     const double reference = run(c, 80, c.referenceStep, 1e-9).amplitude;
     std::printf("%s: first-harmonic fairlead tension amplitude %.6g N (N = 80, h = %g s, "
                 "tolerance 1e-9)\n",
-                c.name, reference, c.referenceStep);
+                c.line.name, reference, c.referenceStep);
     std::printf("%4s %8s %9s %10s %10s %9s %12s %12s\n", "N", "h [s]", "tolerance",
                 "error [%]", "fine [%]", "diff [pp]", "wall [s/s]", "fine [s/s]");
     for (const int N : {10, 20, 40}) {
@@ -161,7 +124,7 @@ int main(int argc, char** argv)
         const Result r = run(c, std::atoi(argv[2]), std::atof(argv[3]),
                              argc == 5 ? std::atof(argv[4]) : 1e-6);
         std::printf("%s N = %s h = %s: amplitude %.9g N, wall %.4g s per simulated s\n",
-                    c.name, argv[2], argv[3], r.amplitude, r.wallPerSecond);
+                    c.line.name, argv[2], argv[3], r.amplitude, r.wallPerSecond);
         return 0;
     }
     const bool all = argc < 2;
