@@ -46,6 +46,12 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
     const int N = p.segments;
     const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
     const double area = 0.25 * pi * d * d;
+    // Penetration at which the seabed stiffness carries the submerged
+    // weight; where that is zero (a buoyant line, no stiffness or no
+    // diameter) the damping acts from the floor on
+    const double support = p.seabedStiffness * d;
+    const double restDepth =
+        support > 0.0 && w > 0.0 ? w / support : std::numeric_limits<double>::min();
     NodeForces f;
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
@@ -72,11 +78,16 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
         onSeabed[i] = p.seabedContact && r[i][2] <= zb;
         if (onSeabed[i]) {
             const double depth = zb - r[i][2];
-            const double push = std::max(
-                (p.seabedStiffness * depth - p.seabedDamping * v[i][2]) * d * l, 0.0);
+            // The damping engages over the depth at which the stiffness
+            // carries the line's weight, so that the force grows from zero
+            // as a node lands: a force that jumped to cb d l |vz| at the
+            // floor made CVODE's error test fail there
+            const double damping = p.seabedDamping * std::min(depth / restDepth, 1.0);
+            const double push =
+                std::max((p.seabedStiffness * depth - damping * v[i][2]) * d * l, 0.0);
             F[2] += push;
             f.seabedEnergy += 0.5 * p.seabedStiffness * depth * depth * d * l;
-            f.dissipatedPower += std::min(p.seabedDamping * v[i][2] * v[i][2] * d * l,
+            f.dissipatedPower += std::min(damping * v[i][2] * v[i][2] * d * l,
                                           std::abs(push * v[i][2]));
         }
         Vector3 t = r[i + 1] - r[i - 1];

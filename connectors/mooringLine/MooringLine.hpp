@@ -12,7 +12,9 @@
 //   node i: m_n (I - t t') + m_t t t' times a = F, t = unit(r_i+1 - r_i-1)
 //     m_n = mu l + Can rho A l,  m_t = mu l + Cat rho A l    (added mass)
 //     F = T_i q_i - T_i-1 q_i-1 - w l z^                      w = (mu - rho A) g
-//         + seabed: (kb (zb - z) - cb dz/dt) d l z^ when z < zb, never pulling
+//         + seabed: (kb (zb - z) - cb s dz/dt) d l z^ when z < zb, never pulling,
+//           s = min((zb - z)/(w/(kb d)), 1): the damping engages over the
+//           depth at which the stiffness carries the weight (continuous)
 //         + drag (still water): 1/2 rho d l Cdn |vn| vn + 1/2 rho pi d l Cdt |vt| vt
 //           with vn, vt the normal and tangential parts of -v_i
 //
