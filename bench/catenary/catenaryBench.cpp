@@ -27,14 +27,14 @@ namespace {
 using namespace connectors;
 using Clock = std::chrono::steady_clock;
 
-template <class Body>
-double bestSeconds(Body&& body, int runs = 2)
+template <class Body> double bestSeconds(Body&& body, int runs = 2)
 {
     double best = 1e300;
     for (int run = 0; run < runs; ++run) {
         const auto start = Clock::now();
         body();
-        best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+        best = std::min(
+            best, std::chrono::duration<double>(Clock::now() - start).count());
     }
     return best;
 }
@@ -63,10 +63,10 @@ void quasiStatic()
     });
     const double warm = bestSeconds([&] {
         warmIterations = 0;
-        CatenaryGuess guess{};
+        CatenaryGuess guess {};
         for (const auto& [x, z] : path) {
-            const CatenarySolution s =
-                solveCatenary(line, x, z, guess.H > 0.0 ? &guess : nullptr);
+            const CatenarySolution s
+                = solveCatenary(line, x, z, guess.H > 0.0 ? &guess : nullptr);
             warmIterations += s.iterations;
             guess = {s.H, s.V};
             sink += s.H;
@@ -76,24 +76,28 @@ void quasiStatic()
     p.line = line;
     const Catenary law(p);
     const double full = bestSeconds([&] {
-        CatenaryGuess guess{};
+        CatenaryGuess guess {};
         for (const auto& [x, z] : path) {
             BodyKinematics A;
             A.p_WBo_W = Vector3(x, 0.0, z);
-            const CatenaryOutput o =
-                law.evaluate(A, BodyKinematics(), guess.H > 0.0 ? &guess : nullptr, 11);
+            const CatenaryOutput o = law.evaluate(
+                A, BodyKinematics(), guess.H > 0.0 ? &guess : nullptr, 11);
             guess = {o.solution.H, o.solution.V};
             sink += o.loads.A.f_W[0];
         }
     });
     const double n = double(path.size());
-    std::printf("## Quasi-static catenary (%zu solves along the path)\n\n", path.size());
+    std::printf("## Quasi-static catenary (%zu solves along the path)\n\n",
+                path.size());
     std::printf("| solve | time per solve | Newton iterations per solve |\n");
     std::printf("| --- | --- | --- |\n");
-    std::printf("| cold | %.2f us | %.2f |\n", 1e6 * cold / n, coldIterations / n);
-    std::printf("| warm | %.2f us | %.2f |\n", 1e6 * warm / n, warmIterations / n);
-    std::printf("| warm, full law (loads, energy, 11 shape points) | %.2f us | |\n\n",
-                1e6 * full / n);
+    std::printf("| cold | %.2f us | %.2f |\n", 1e6 * cold / n,
+                coldIterations / n);
+    std::printf("| warm | %.2f us | %.2f |\n", 1e6 * warm / n,
+                warmIterations / n);
+    std::printf(
+        "| warm, full law (loads, energy, 11 shape points) | %.2f us | |\n\n",
+        1e6 * full / n);
     if (sink == 42.0) {
         std::printf("\n"); // keeps the loops from being optimised away
     }
@@ -103,7 +107,8 @@ BodyKinematics fairlead(double t)
 {
     constexpr double pi = 3.14159265358979323846, ramp = 5.0;
     const double r = t < ramp ? 0.5 * (1.0 - std::cos(pi * t / ramp)) : 1.0;
-    const double dr = t < ramp ? 0.5 * pi / ramp * std::sin(pi * t / ramp) : 0.0;
+    const double dr
+        = t < ramp ? 0.5 * pi / ramp * std::sin(pi * t / ramp) : 0.0;
     const double sx = 3.0 * std::sin(0.4 * t), sz = std::sin(0.8 * t);
     BodyKinematics A;
     A.p_WBo_W = Vector3(80.0 + r * sx, 0.0, 40.0 + r * sz);
@@ -132,21 +137,25 @@ MooringLineParameters chain(int N, double tolerance)
 
 constexpr double duration = 15.0, step = 0.05;
 
-std::vector<double> tensionHistory(int N, double tolerance, double& seconds, long& steps,
-                                   int runs = 2)
+std::vector<double> tensionHistory(int N, double tolerance, double& seconds,
+                                   long& steps, int runs = 2)
 {
     std::vector<double> history;
-    seconds = bestSeconds([&] {
-        history.clear();
-        MooringLine line(chain(N, tolerance));
-        MooringLineState s = line.initialState(fairlead(0.0), BodyKinematics(), 0.0);
-        for (int k = 1; k * step <= duration + 1e-9; ++k) {
-            line.advance(s, fairlead(k * step), BodyKinematics(), step);
-            history.push_back(
-                line.evaluate(s, fairlead(k * step), BodyKinematics(), 0).fairleadTension);
-        }
-        steps = line.statistics().steps;
-    }, runs);
+    seconds = bestSeconds(
+        [&] {
+            history.clear();
+            MooringLine line(chain(N, tolerance));
+            MooringLineState s
+                = line.initialState(fairlead(0.0), BodyKinematics(), 0.0);
+            for (int k = 1; k * step <= duration + 1e-9; ++k) {
+                line.advance(s, fairlead(k * step), BodyKinematics(), step);
+                history.push_back(
+                    line.evaluate(s, fairlead(k * step), BodyKinematics(), 0)
+                        .fairleadTension);
+            }
+            steps = line.statistics().steps;
+        },
+        runs);
     return history;
 }
 
@@ -154,33 +163,38 @@ void dynamic()
 {
     double referenceSeconds = 0.0;
     long referenceSteps = 0;
-    const std::vector<double> reference =
-        tensionHistory(80, 1e-8, referenceSeconds, referenceSteps, 1);
+    const std::vector<double> reference
+        = tensionHistory(80, 1e-8, referenceSeconds, referenceSteps, 1);
     double rms = 0.0;
     for (const double T : reference) {
         rms += T * T;
     }
     rms = std::sqrt(rms / double(reference.size()));
-    std::printf("## Dynamic line (%.0f s of fairlead motion, steps of %.2f s)\n\n", duration,
-                step);
-    std::printf("Reference N = 80, tolerances 1e-8: %.3f s cpu per simulated second, "
-                "RMS fairlead tension %.0f N.\n\n",
-                referenceSeconds / duration, rms);
-    std::printf("| N | tolerance | cpu s per simulated s | CVODE steps per step | RMS tension "
-                "error |\n");
+    std::printf(
+        "## Dynamic line (%.0f s of fairlead motion, steps of %.2f s)\n\n",
+        duration, step);
+    std::printf(
+        "Reference N = 80, tolerances 1e-8: %.3f s cpu per simulated second, "
+        "RMS fairlead tension %.0f N.\n\n",
+        referenceSeconds / duration, rms);
+    std::printf(
+        "| N | tolerance | cpu s per simulated s | CVODE steps per step | RMS tension "
+        "error |\n");
     std::printf("| --- | --- | --- | --- | --- |\n");
     for (const int N : {5, 10, 20, 40}) {
         for (const double tolerance : {1e-4, 1e-6, 1e-8}) {
             double seconds = 0.0;
             long steps = 0;
-            const std::vector<double> T = tensionHistory(N, tolerance, seconds, steps);
+            const std::vector<double> T
+                = tensionHistory(N, tolerance, seconds, steps);
             double error = 0.0;
             for (std::size_t i = 0; i < T.size(); ++i) {
                 error += (T[i] - reference[i]) * (T[i] - reference[i]);
             }
             error = std::sqrt(error / double(T.size())) / rms;
             std::printf("| %d | %.0e | %.4f | %.1f | %.2e |\n", N, tolerance,
-                        seconds / duration, double(steps) / double(T.size()), error);
+                        seconds / duration, double(steps) / double(T.size()),
+                        error);
         }
     }
     std::printf("\n");

@@ -34,8 +34,7 @@ void quietLogger(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String,
     std::fprintf(stderr, "fmu: %s\n", message);
 }
 
-template <class Function>
-Function* symbol(void* library, const char* name)
+template <class Function> Function* symbol(void* library, const char* name)
 {
     void* s = dlsym(library, name);
     if (s == nullptr) {
@@ -46,15 +45,14 @@ Function* symbol(void* library, const char* name)
 }
 
 //- Time per cycle [ns] of `body(i)` over one run of `cycles` cycles
-template <class Body>
-double nanosecondsPerCycle(Body&& body)
+template <class Body> double nanosecondsPerCycle(Body&& body)
 {
     const Clock::time_point start = Clock::now();
     for (int i = 0; i < cycles; ++i) {
         body(i);
     }
-    const std::chrono::duration<double, std::nano> elapsed =
-        Clock::now() - start;
+    const std::chrono::duration<double, std::nano> elapsed
+        = Clock::now() - start;
     return elapsed.count() / cycles;
 }
 
@@ -77,8 +75,8 @@ int main(int argc, char** argv)
     for (const pugi::xml_node v :
          root.child("ModelVariables").children("ScalarVariable")) {
         const std::string causality = v.attribute("causality").value();
-        vr[v.attribute("name").value()] =
-            v.attribute("valueReference").as_uint();
+        vr[v.attribute("name").value()]
+            = v.attribute("valueReference").as_uint();
         if (causality == "input") {
             in.push_back(v.attribute("valueReference").as_uint());
             inputNames.push_back(v.attribute("name").value());
@@ -87,8 +85,8 @@ int main(int argc, char** argv)
         }
     }
 
-    void* lib =
-        dlopen((dir + "/binaries/linux64/linearSpring.so").c_str(), RTLD_NOW);
+    void* lib
+        = dlopen((dir + "/binaries/linux64/linearSpring.so").c_str(), RTLD_NOW);
     if (lib == nullptr) {
         std::fprintf(stderr, "fmuOverhead: %s\n", dlerror());
         return 1;
@@ -123,18 +121,18 @@ int main(int argc, char** argv)
     B.v_WBo_W = {-0.6, 0.4, 0.25};
     B.w_WB_W = {-0.1, 0.2, 0.4};
 
-    fmi2CallbackFunctions callbacks{quietLogger, nullptr, nullptr, nullptr,
-                                    nullptr};
-    const fmi2Component c =
-        instantiate("bench", fmi2CoSimulation, root.attribute("guid").value(),
-                    "", &callbacks, fmi2False, fmi2False);
+    fmi2CallbackFunctions callbacks {quietLogger, nullptr, nullptr, nullptr,
+                                     nullptr};
+    const fmi2Component c
+        = instantiate("bench", fmi2CoSimulation, root.attribute("guid").value(),
+                      "", &callbacks, fmi2False, fmi2False);
     if (c == nullptr || enterInit(c) != fmi2OK) {
         return 1;
     }
-    const std::map<std::string, double> parameters = {
-        {"A.p[1]", 0.1},      {"A.p[2]", -0.2},    {"A.p[3]", 0.3},
-        {"B.p[1]", -0.4},     {"B.p[2]", 0.05},    {"B.p[3]", 0.2},
-        {"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
+    const std::map<std::string, double> parameters
+        = {{"A.p[1]", 0.1},      {"A.p[2]", -0.2},    {"A.p[3]", 0.3},
+           {"B.p[1]", -0.4},     {"B.p[2]", 0.05},    {"B.p[3]", 0.2},
+           {"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
     for (const auto& [name, value] : parameters) {
         setReal(c, &vr.at(name), 1, &value);
     }

@@ -43,18 +43,30 @@ struct Case {
     std::vector<double> steps, tolerances;
 };
 
-Case lab() { return {references::lab(20), 0.01, 1.0, 2e-4, 1e-3, {1e-3}, {1e-6, 1e-8}}; }
+Case lab()
+{
+    return {references::lab(20), 0.01, 1.0, 2e-4, 1e-3, {1e-3}, {1e-6, 1e-8}};
+}
 
-Case oc4() { return {references::oc4(20), 1.0, 10.0, 1e-2, 1e-2, {0.1}, {1e-6}}; }
+Case oc4()
+{
+    return {references::oc4(20), 1.0, 10.0, 1e-2, 1e-2, {0.1}, {1e-6}};
+}
 
 BodyKinematics fairleadAt(const Case& c, double t)
 {
     const double w = 2.0 * pi / c.period;
-    const double r = t < c.period ? 0.5 * (1.0 - std::cos(pi * t / c.period)) : 1.0;
-    const double dr = t < c.period ? 0.5 * pi / c.period * std::sin(pi * t / c.period) : 0.0;
+    const double r
+        = t < c.period ? 0.5 * (1.0 - std::cos(pi * t / c.period)) : 1.0;
+    const double dr = t < c.period
+        ? 0.5 * pi / c.period * std::sin(pi * t / c.period)
+        : 0.0;
     BodyKinematics A;
-    A.p_WBo_W = c.line.fairlead + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
-    A.v_WBo_W = Vector3(c.amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t)), 0.0, 0.0);
+    A.p_WBo_W = c.line.fairlead
+        + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
+    A.v_WBo_W = Vector3(c.amplitude
+                            * (dr * std::sin(w * t) + r * w * std::cos(w * t)),
+                        0.0, 0.0);
     return A;
 }
 
@@ -79,14 +91,17 @@ Result run(const Case& c, int N, double h, double tolerance = 1e-6)
         const double t = k * h;
         const BodyKinematics A = fairleadAt(c, t);
         line.advance(s, A, B, h);
-        if (k > 2 * perPeriod) { // rectangle rule: exact for a periodic trigonometric sum
+        if (k
+            > 2 * perPeriod) { // rectangle rule: exact for a periodic trigonometric sum
             const double T = line.evaluate(s, A, B, 0).fairleadTension;
-            a1 += T * std::exp(std::complex<double>(0.0, -2.0 * pi * t / c.period));
+            a1 += T
+                * std::exp(std::complex<double>(0.0, -2.0 * pi * t / c.period));
         }
     }
     Result r;
-    r.wallPerSecond = std::chrono::duration<double>(Clock::now() - start).count()
-                      / (3.0 * c.period);
+    r.wallPerSecond
+        = std::chrono::duration<double>(Clock::now() - start).count()
+        / (3.0 * c.period);
     r.amplitude = 2.0 * std::abs(a1) / perPeriod;
     return r;
 }
@@ -94,11 +109,13 @@ Result run(const Case& c, int N, double h, double tolerance = 1e-6)
 void bench(const Case& c)
 {
     const double reference = run(c, 80, c.referenceStep, 1e-9).amplitude;
-    std::printf("%s: first-harmonic fairlead tension amplitude %.6g N (N = 80, h = %g s, "
-                "tolerance 1e-9)\n",
-                c.line.name, reference, c.referenceStep);
-    std::printf("%4s %8s %9s %10s %10s %9s %12s %12s\n", "N", "h [s]", "tolerance",
-                "error [%]", "fine [%]", "diff [pp]", "wall [s/s]", "fine [s/s]");
+    std::printf(
+        "%s: first-harmonic fairlead tension amplitude %.6g N (N = 80, h = %g s, "
+        "tolerance 1e-9)\n",
+        c.line.name, reference, c.referenceStep);
+    std::printf("%4s %8s %9s %10s %10s %9s %12s %12s\n", "N", "h [s]",
+                "tolerance", "error [%]", "fine [%]", "diff [pp]", "wall [s/s]",
+                "fine [s/s]");
     for (const int N : {10, 20, 40}) {
         for (const double tolerance : c.tolerances) {
             const Result fine = run(c, N, c.fineStep, tolerance);
@@ -106,8 +123,9 @@ void bench(const Case& c)
             for (const double h : c.steps) {
                 const Result r = run(c, N, h, tolerance);
                 const double error = 100.0 * (r.amplitude / reference - 1.0);
-                std::printf("%4d %8g %9g %10.3f %10.3f %9.3f %12.4g %12.4g\n", N, h, tolerance,
-                            error, fineError, error - fineError, r.wallPerSecond,
+                std::printf("%4d %8g %9g %10.3f %10.3f %9.3f %12.4g %12.4g\n",
+                            N, h, tolerance, error, fineError,
+                            error - fineError, r.wallPerSecond,
                             fine.wallPerSecond);
                 std::fflush(stdout);
             }
@@ -123,8 +141,9 @@ int main(int argc, char** argv)
         const Case c = std::strcmp(argv[1], "lab") == 0 ? lab() : oc4();
         const Result r = run(c, std::atoi(argv[2]), std::atof(argv[3]),
                              argc == 5 ? std::atof(argv[4]) : 1e-6);
-        std::printf("%s N = %s h = %s: amplitude %.9g N, wall %.4g s per simulated s\n",
-                    c.line.name, argv[2], argv[3], r.amplitude, r.wallPerSecond);
+        std::printf(
+            "%s N = %s h = %s: amplitude %.9g N, wall %.4g s per simulated s\n",
+            c.line.name, argv[2], argv[3], r.amplitude, r.wallPerSecond);
         return 0;
     }
     const bool all = argc < 2;

@@ -52,8 +52,8 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
     const CatenaryLine& line = parameters_.line;
-    const AxialGeometry g =
-        axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
+    const AxialGeometry g
+        = axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
 
     // Profile plane: origin Q, e_h horizontal towards P, z up
     const Vector3 p_QP_W = -g.p_PQ_W;
@@ -62,8 +62,8 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     const Vector3 horizontal(p_QP_W[0], p_QP_W[1], 0.0);
     const double x = horizontal.norm();
     const double z = p_QP_W[2];
-    const Vector3 eH = x > 1e-12 * line.length ? Vector3(horizontal / x)
-                                                : Vector3::UnitX();
+    const Vector3 eH
+        = x > 1e-12 * line.length ? Vector3(horizontal / x) : Vector3::UnitX();
 
     CatenaryOutput out;
     out.solution = solveCatenary(line, x, z, guess, options);
@@ -78,8 +78,8 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     out.fairleadTension = std::hypot(s.H, s.V);
     out.anchorTension = std::hypot(s.HA, s.VA);
     r.tension = out.fairleadTension;
-    r.potentialEnergy =
-        catenaryEnergy(line, s, x, z) + line.weight * line.length * p_WQ_W[2];
+    r.potentialEnergy
+        = catenaryEnergy(line, s, x, z) + line.weight * line.length * p_WQ_W[2];
     r.dissipatedPower = 0.0;
 
     if (shapePoints == 1 || shapePoints < 0) {

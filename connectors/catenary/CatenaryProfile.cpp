@@ -82,7 +82,7 @@ Span touchdownSpan(const CatenaryLine& line, double H, double V)
 bool grounded(const CatenaryLine& line, double V)
 {
     return line.seabedContact && line.weight > 0.0
-           && V < line.weight * line.length;
+        && V < line.weight * line.length;
 }
 
 Span span(const CatenaryLine& line, double H, double V)
@@ -116,8 +116,8 @@ CatenaryGuess coldGuess(const CatenaryLine& line, double x, double z)
         g.V = T * z / chord + 0.5 * w * L;
         return g;
     }
-    const double lambda =
-        std::sqrt(3.0 * std::max((L * L - Z * Z) / (x * x) - 1.0, 1e-12));
+    const double lambda
+        = std::sqrt(3.0 * std::max((L * L - Z * Z) / (x * x) - 1.0, 1e-12));
     g.H = std::max(0.5 * W * x / lambda, 1e-6 * W * L);
     g.V = sign * 0.5 * W * (Z / std::tanh(lambda) + L);
     return g;
@@ -140,8 +140,8 @@ void fillEnds(const CatenaryLine& line, CatenarySolution& s)
 std::string describe(double x, double z, double H, double V)
 {
     return "horizontal span " + formatValue(x) + " m, vertical span "
-           + formatValue(z) + " m, H = " + formatValue(H) + " N, V = "
-           + formatValue(V) + " N";
+        + formatValue(z) + " m, H = " + formatValue(H)
+        + " N, V = " + formatValue(V) + " N";
 }
 
 CatenarySolution newton(const CatenaryLine& line, double x, double z,
@@ -267,11 +267,10 @@ CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
         s.VA = s.V - w * L;
         return s;
     }
-    const CatenaryGuess start =
-        guess != nullptr && guess->H > 0.0 && std::isfinite(guess->H)
-                && std::isfinite(guess->V)
-            ? *guess
-            : coldGuess(line, x, z);
+    const CatenaryGuess start = guess != nullptr && guess->H > 0.0
+            && std::isfinite(guess->H) && std::isfinite(guess->V)
+        ? *guess
+        : coldGuess(line, x, z);
     return newton(line, x, z, start, options);
 }
 
@@ -310,10 +309,12 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
     if (!heap && CB > 0.0) {
         const double c = CB * w, s0 = std::max(Lb - H / c, 0.0);
         xg = sg
-             + (sg <= s0 ? 0.0
-                         : (H * (sg - s0)
-                            - 0.5 * c * ((Lb - s0) * (Lb - s0) - (Lb - sg) * (Lb - sg)))
-                               / EA);
+            + (sg <= s0
+                   ? 0.0
+                   : (H * (sg - s0)
+                      - 0.5 * c
+                          * ((Lb - s0) * (Lb - s0) - (Lb - sg) * (Lb - sg)))
+                       / EA);
     }
     if (s <= Lb) {
         return {xg, 0.0};
@@ -352,9 +353,9 @@ double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
     // line is integrated on each side of its fold)
     static const double node[5] = {0.0, 0.5384693101056831, -0.5384693101056831,
                                    0.9061798459386640, -0.9061798459386640};
-    static const double weightOf[5] = {0.5688888888888889, 0.4786286704993665,
-                                       0.4786286704993665, 0.2369268850561891,
-                                       0.2369268850561891};
+    static const double weightOf[5]
+        = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+           0.2369268850561891, 0.2369268850561891};
     const auto integrateZ = [&](double from, double to) {
         const int panels = 8;
         const double h = (to - from) / panels;
@@ -363,14 +364,15 @@ double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
             const double mid = from + (k + 0.5) * h;
             for (int i = 0; i < 5; ++i) {
                 sum += weightOf[i] * 0.5 * h
-                       * catenaryPoint(line, sol, x, z, mid + 0.5 * h * node[i])[1];
+                    * catenaryPoint(line, sol, x, z,
+                                    mid + 0.5 * h * node[i])[1];
             }
         }
         return sum;
     };
     const double fold = sol.regime == CatenaryRegime::folded
-                            ? std::clamp(-sol.VA / w, Lb, L)
-                            : L;
+        ? std::clamp(-sol.VA / w, Lb, L)
+        : L;
     const double zIntegral = integrateZ(Lb, fold) + integrateZ(fold, L);
     return strain + w * zIntegral;
 }

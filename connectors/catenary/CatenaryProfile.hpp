@@ -116,8 +116,8 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
 
 //- Strain energy plus the weight's potential energy relative to the
 //  anchor's height: integral of T^2/(2EA) + w z(s) over s [J]
-double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& solution,
-                      double x, double z);
+double catenaryEnergy(const CatenaryLine& line,
+                      const CatenarySolution& solution, double x, double z);
 
 } // namespace connectors
 

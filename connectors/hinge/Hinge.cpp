@@ -22,7 +22,7 @@ constexpr double minimumReferenceSine = 1e-6;
 std::string formatVector(const Vector3& v)
 {
     return "(" + formatValue(v[0]) + ", " + formatValue(v[1]) + ", "
-           + formatValue(v[2]) + ")";
+        + formatValue(v[2]) + ")";
 }
 
 Vector3 unitAxis(const char* name, const Vector3& axis)
@@ -45,8 +45,8 @@ Vector3 unitReference(const char* name, const char* axisName,
     if (reference == Vector3::Zero()) {
         return deriveReference(unitAxis);
     }
-    const Vector3 perpendicular =
-        reference - reference.dot(unitAxis) * unitAxis;
+    const Vector3 perpendicular
+        = reference - reference.dot(unitAxis) * unitAxis;
     const double norm = perpendicular.norm();
     if (!(norm >= minimumReferenceSine * reference.norm())) {
         throw ConnectorError(std::string(lawName) + ": parameter " + name
@@ -120,7 +120,7 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     const Vector3 p_AoM_W = g.p_AoP_W + half_W;
     const Vector3 p_BoM_W = g.p_BoQ_W - half_W;
     const Vector3 v_M_W = (B.v_WBo_W + B.w_WB_W.cross(p_BoM_W))
-                          - (A.v_WBo_W + A.w_WB_W.cross(p_AoM_W));
+        - (A.v_WBo_W + A.w_WB_W.cross(p_AoM_W));
     const Vector3 f_A_W = p.stiffness * g.p_PQ_W + p.damping * v_M_W;
     r.A.f_W = f_A_W;
     r.A.m_Bo_W = p_AoM_W.cross(f_A_W);
@@ -141,8 +141,7 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
         // Opposite axes: every direction perpendicular to a_A turns a_B
         // back; the body-fixed e_A is the documented choice.
         align_B_W = p.rotationalStiffness * theta * e_A_W;
-    }
-    else {
+    } else {
         // theta / sin(theta) -> 1 as the axes align
         const double ratio = sine > 0.0 ? theta / sine : 1.0;
         align_B_W = p.rotationalStiffness * ratio * u_W;
@@ -152,14 +151,14 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     const Vector3 wPerp_W = w_AB_W - angleRate * a_A_W;
 
     // Angle from e_A to e_B about a_A; the axial part of e_B drops out.
-    const double raw =
-        std::atan2(a_A_W.dot(e_A_W.cross(e_B_W)), e_A_W.dot(e_B_W));
+    const double raw
+        = std::atan2(a_A_W.dot(e_A_W.cross(e_B_W)), e_A_W.dot(e_B_W));
     const double angle = unwrapAngle(raw, previousAngle);
     const double twist = angle - p.ptoRestAngle;
     const double tau = p.ptoStiffness * twist + p.ptoDamping * angleRate;
 
-    const Vector3 m_B_W =
-        align_B_W - p.rotationalDamping * wPerp_W - tau * a_A_W;
+    const Vector3 m_B_W
+        = align_B_W - p.rotationalDamping * wPerp_W - tau * a_A_W;
     r.B.m_Bo_W += m_B_W;
     r.A.m_Bo_W -= m_B_W;
 
@@ -167,11 +166,11 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     r.lengthRate = g.lengthRate;
     r.tension = g.axisDefined ? f_A_W.dot(g.e_W) : 0.0;
     r.potentialEnergy = 0.5 * p.stiffness * g.p_PQ_W.squaredNorm()
-                        + 0.5 * p.rotationalStiffness * theta * theta
-                        + 0.5 * p.ptoStiffness * twist * twist;
+        + 0.5 * p.rotationalStiffness * theta * theta
+        + 0.5 * p.ptoStiffness * twist * twist;
     r.dissipatedPower = p.damping * v_M_W.squaredNorm()
-                        + p.rotationalDamping * wPerp_W.squaredNorm()
-                        + p.ptoDamping * angleRate * angleRate;
+        + p.rotationalDamping * wPerp_W.squaredNorm()
+        + p.ptoDamping * angleRate * angleRate;
 
     h.angle = angle;
     h.angleRate = angleRate;

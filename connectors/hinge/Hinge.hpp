@@ -94,7 +94,7 @@ double unwrapAngle(double raw, double previous);
 Vector3 deriveReference(const Vector3& axis);
 
 class Hinge final : public ConnectorLaw {
-  public:
+public:
     //- Validates the parameters (ParameterError, or ConnectorError for a
     //  zero axis or a reference parallel to its axis), normalises the axes
     //  and builds the reference directions
@@ -117,7 +117,7 @@ class Hinge final : public ConnectorLaw {
     const Vector3& referenceA() const { return ref_A_; }
     const Vector3& referenceB() const { return ref_B_; }
 
-  private:
+private:
     HingeParameters parameters_;
     Vector3 axis_A_, axis_B_, ref_A_, ref_B_;
 };

@@ -24,8 +24,8 @@ ConnectorResult LinearDamper::evaluate(const BodyKinematics& A,
     requireFiniteInputs(lawName, "B", B);
 
     const double c = parameters_.damping;
-    const AxialGeometry g =
-        axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
+    const AxialGeometry g
+        = axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
 
     ConnectorResult result;
     const double tension = c * g.lengthRate; // 0 when the axis is undefined

@@ -30,8 +30,8 @@ ConnectorResult LinearSpring::evaluate(const BodyKinematics& A,
     const double k = parameters_.stiffness;
     const double L0 = parameters_.restLength;
     const double c = parameters_.damping;
-    const AxialGeometry g =
-        axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
+    const AxialGeometry g
+        = axialGeometry(A, B, parameters_.p_AoP_A, parameters_.p_BoQ_B);
 
     if (!g.axisDefined && k * L0 > 0.0) {
         throw UndefinedStateError(

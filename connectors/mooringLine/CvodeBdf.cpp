@@ -41,11 +41,11 @@ std::string flagName(long flag)
     return out;
 }
 
-template <class Pointer>
-Pointer created(Pointer p, const char* function)
+template <class Pointer> Pointer created(Pointer p, const char* function)
 {
     if (p == nullptr) {
-        throw std::runtime_error(std::string(function) + " failed (returned NULL)");
+        throw std::runtime_error(std::string(function)
+                                 + " failed (returned NULL)");
     }
     return p;
 }
@@ -53,8 +53,8 @@ Pointer created(Pointer p, const char* function)
 void errorHandler(int, const char*, const char* function, char* message,
                   void* data)
 {
-    *static_cast<std::string*>(data) =
-        std::string(function) + ": " + (message != nullptr ? message : "");
+    *static_cast<std::string*>(data)
+        = std::string(function) + ": " + (message != nullptr ? message : "");
 }
 
 } // namespace
@@ -63,7 +63,8 @@ struct CvodeBdf::Handles {
     std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextDeleter> context;
     std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorDeleter> y;
     std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter> matrix;
-    std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter> solver;
+    std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter>
+        solver;
     std::unique_ptr<void, CvodeDeleter> cvode;
 };
 
@@ -82,9 +83,9 @@ CvodeBdf::CvodeBdf(std::size_t size, Rhs rhs, const Options& options)
 {
     const auto check = [this](int flag, const char* function) {
         if (flag < 0) {
-            throw std::runtime_error(std::string(function) + " failed: "
-                                     + flagName(flag)
-                                     + (lastMessage_.empty() ? "" : " (" + lastMessage_ + ")"));
+            throw std::runtime_error(
+                std::string(function) + " failed: " + flagName(flag)
+                + (lastMessage_.empty() ? "" : " (" + lastMessage_ + ")"));
         }
     };
     SUNContext context = nullptr;
@@ -95,20 +96,26 @@ CvodeBdf::CvodeBdf(std::size_t size, Rhs rhs, const Options& options)
     N_VConst(0.0, h_->y.get());
     if (options.halfBandwidth >= 0 && options.halfBandwidth < long(size)) {
         const auto b = sunindextype(options.halfBandwidth);
-        h_->matrix.reset(created(SUNBandMatrix(n, b, b, context), "SUNBandMatrix"));
-        h_->solver.reset(created(SUNLinSol_Band(h_->y.get(), h_->matrix.get(), context),
-                                 "SUNLinSol_Band"));
+        h_->matrix.reset(
+            created(SUNBandMatrix(n, b, b, context), "SUNBandMatrix"));
+        h_->solver.reset(
+            created(SUNLinSol_Band(h_->y.get(), h_->matrix.get(), context),
+                    "SUNLinSol_Band"));
     } else {
-        h_->matrix.reset(created(SUNDenseMatrix(n, n, context), "SUNDenseMatrix"));
-        h_->solver.reset(created(SUNLinSol_Dense(h_->y.get(), h_->matrix.get(), context),
-                                 "SUNLinSol_Dense"));
+        h_->matrix.reset(
+            created(SUNDenseMatrix(n, n, context), "SUNDenseMatrix"));
+        h_->solver.reset(
+            created(SUNLinSol_Dense(h_->y.get(), h_->matrix.get(), context),
+                    "SUNLinSol_Dense"));
     }
     h_->cvode.reset(created(CVodeCreate(CV_BDF, context), "CVodeCreate"));
     void* mem = h_->cvode.get();
-    check(CVodeSetErrHandlerFn(mem, errorHandler, &lastMessage_), "CVodeSetErrHandlerFn");
+    check(CVodeSetErrHandlerFn(mem, errorHandler, &lastMessage_),
+          "CVodeSetErrHandlerFn");
     check(CVodeInit(mem, rhsCallback, 0.0, h_->y.get()), "CVodeInit");
     check(CVodeSetUserData(mem, this), "CVodeSetUserData");
-    check(CVodeSStolerances(mem, options.relativeTolerance, options.absoluteTolerance),
+    check(CVodeSStolerances(mem, options.relativeTolerance,
+                            options.absoluteTolerance),
           "CVodeSStolerances");
     check(CVodeSetLinearSolver(mem, h_->solver.get(), h_->matrix.get()),
           "CVodeSetLinearSolver");
@@ -140,14 +147,15 @@ void CvodeBdf::advance(double tEnd, double* yOut)
     void* mem = h_->cvode.get();
     int flag = CVodeSetStopTime(mem, tEnd);
     if (flag < 0) {
-        throw std::runtime_error("CVodeSetStopTime failed: " + flagName(flag) + " ("
-                                 + lastMessage_ + ")");
+        throw std::runtime_error("CVodeSetStopTime failed: " + flagName(flag)
+                                 + " (" + lastMessage_ + ")");
     }
     double t = 0.0;
     flag = CVode(mem, tEnd, h_->y.get(), &t, CV_NORMAL);
     if (flag < 0) {
-        throw std::runtime_error("CVode failed at t = " + std::to_string(t) + ": "
-                                 + flagName(flag) + " (" + lastMessage_ + ")");
+        throw std::runtime_error("CVode failed at t = " + std::to_string(t)
+                                 + ": " + flagName(flag) + " (" + lastMessage_
+                                 + ")");
     }
     const double* y = N_VGetArrayPointer(h_->y.get());
     std::copy(y, y + size_, yOut);
@@ -170,13 +178,16 @@ CvodeBdf::Statistics CvodeBdf::current() const
     Statistics s;
     const auto get = [](int flag, const char* function) {
         if (flag < 0) {
-            throw std::runtime_error(std::string(function) + " failed: " + flagName(flag));
+            throw std::runtime_error(std::string(function)
+                                     + " failed: " + flagName(flag));
         }
     };
     get(CVodeGetNumSteps(mem, &s.steps), "CVodeGetNumSteps");
     get(CVodeGetNumRhsEvals(mem, &s.rhsEvaluations), "CVodeGetNumRhsEvals");
-    get(CVodeGetNumJacEvals(mem, &s.jacobianEvaluations), "CVodeGetNumJacEvals");
-    get(CVodeGetNumErrTestFails(mem, &s.errorTestFailures), "CVodeGetNumErrTestFails");
+    get(CVodeGetNumJacEvals(mem, &s.jacobianEvaluations),
+        "CVodeGetNumJacEvals");
+    get(CVodeGetNumErrTestFails(mem, &s.errorTestFailures),
+        "CVodeGetNumErrTestFails");
     get(CVodeGetNumNonlinSolvConvFails(mem, &s.convergenceFailures),
         "CVodeGetNumNonlinSolvConvFails");
     return s;

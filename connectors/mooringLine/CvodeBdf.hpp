@@ -52,7 +52,10 @@ public:
     std::size_t size() const { return size_; }
 
     //- The right-hand side, as CVODE calls it
-    int rhs(double t, const double* y, double* ydot) const { return rhs_(t, y, ydot); }
+    int rhs(double t, const double* y, double* ydot) const
+    {
+        return rhs_(t, y, ydot);
+    }
 
 private:
     struct Handles;

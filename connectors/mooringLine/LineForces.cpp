@@ -16,8 +16,8 @@ const Vector3 zHat = Vector3::UnitZ();
 } // namespace
 
 NodeForces nodeForces(const MooringLineParameters& p, double w,
-                      const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                      double zb)
+                      const std::vector<Vector3>& r,
+                      const std::vector<Vector3>& v, double zb)
 {
     const int N = p.segments;
     const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
@@ -26,8 +26,9 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
     // weight; where that is zero (a buoyant line, no stiffness or no
     // diameter) the damping acts from the floor on
     const double support = p.seabedStiffness * d;
-    const double restDepth =
-        support > 0.0 && w > 0.0 ? w / support : std::numeric_limits<double>::min();
+    const double restDepth = support > 0.0 && w > 0.0
+        ? w / support
+        : std::numeric_limits<double>::min();
     NodeForces f;
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
@@ -45,7 +46,8 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
         const double strain = stretched / l - 1.0;
         const double strainRate = f.q[j].dot(v[j + 1] - v[j]) / l;
         f.T[j] = p.EA * std::max(strain, 0.0) + p.axialDamping * strainRate;
-        f.strainEnergy += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
+        f.strainEnergy
+            += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
         f.dissipatedPower += p.axialDamping * strainRate * strainRate * l;
     }
     std::vector<bool> onSeabed(std::size_t(N + 1), p.seabedContact);
@@ -58,9 +60,10 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
             // carries the line's weight, so that the force grows from zero
             // as a node lands: a force that jumped to cb d l |vz| at the
             // floor made CVODE's error test fail there
-            const double damping = p.seabedDamping * std::min(depth / restDepth, 1.0);
-            const double push =
-                std::max((p.seabedStiffness * depth - damping * v[i][2]) * d * l, 0.0);
+            const double damping
+                = p.seabedDamping * std::min(depth / restDepth, 1.0);
+            const double push = std::max(
+                (p.seabedStiffness * depth - damping * v[i][2]) * d * l, 0.0);
             F[2] += push;
             f.seabedEnergy += 0.5 * p.seabedStiffness * depth * depth * d * l;
             f.dissipatedPower += std::min(damping * v[i][2] * v[i][2] * d * l,
@@ -72,12 +75,14 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
         const Vector3 vRel = -v[i]; // still water
         const Vector3 vt = vRel.dot(t) * t, vn = vRel - vt;
         const Vector3 drag = 0.5 * rho * d * l * p.normalDrag * vn.norm() * vn
-                             + 0.5 * rho * pi * d * l * p.tangentialDrag * vt.norm() * vt;
+            + 0.5 * rho * pi * d * l * p.tangentialDrag * vt.norm() * vt;
         F += drag;
         f.F[i] = F;
         f.dissipatedPower += -drag.dot(v[i]);
-        const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
-        const double mt = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
+        const double mn
+            = p.massPerLength * l + p.normalAddedMass * rho * area * l;
+        const double mt
+            = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
         const Vector3 Ft = F.dot(t) * t;
         f.a[i] = (F - Ft) / mn + Ft / mt;
     }

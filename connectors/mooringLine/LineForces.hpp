@@ -28,8 +28,8 @@ struct NodeForces {
 //- Forces on the nodes at positions r and velocities v (0..N), for the
 //  submerged weight per length w [N/m] and the seabed at height zb [m]
 NodeForces nodeForces(const MooringLineParameters& p, double w,
-                      const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                      double zb);
+                      const std::vector<Vector3>& r,
+                      const std::vector<Vector3>& v, double zb);
 
 //- Positions and velocities of the free nodes 1..N-1 from the state vector
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,

@@ -8,7 +8,8 @@
 
 namespace connectors {
 
-std::vector<Vector3> BlockTridiagonal::solve(const std::vector<Vector3>& b) const
+std::vector<Vector3>
+BlockTridiagonal::solve(const std::vector<Vector3>& b) const
 {
     const std::size_t n = diagonal.size();
     std::vector<Matrix3> inverse(n);
@@ -51,7 +52,7 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
         const Matrix3 qq = q * q.transpose();
         const double geometric = std::max(T, std::abs(weight) * l) / s;
         const Matrix3 k = (s > l ? p.EA / l : geometric) * qq
-                          + geometric * (Matrix3::Identity() - qq);
+            + geometric * (Matrix3::Identity() - qq);
         if (j >= 1) {
             S.diagonal[std::size_t(j - 1)] += k; // node j
         }
@@ -65,7 +66,8 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
     if (p.seabedContact) {
         for (int i = 1; i < N; ++i) {
             if (r[std::size_t(i)][2] <= zb) {
-                S.diagonal[std::size_t(i - 1)](2, 2) += p.seabedStiffness * p.diameter * l;
+                S.diagonal[std::size_t(i - 1)](2, 2)
+                    += p.seabedStiffness * p.diameter * l;
             }
         }
     }

@@ -29,7 +29,8 @@ void requirePositive(const char* name, double value, const char* unit)
 }
 
 //- Potential energy of the line held still: strain, seabed, weight [J]
-double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r, double wl)
+double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r,
+                    double wl)
 {
     double heights = 0.0;
     for (std::size_t i = 1; i + 1 < r.size(); ++i) {
@@ -47,8 +48,8 @@ double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r, double w
 //  r becomes the iterate with the smallest largest node force; returns
 //  whether that fell below 1e-11 of the line's weight plus its largest
 //  tension (plus the round-off of a tension, 16 eps EA |r| / l).
-bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>& r,
-                  double zb)
+bool solveStatics(const MooringLineParameters& p, double w,
+                  std::vector<Vector3>& r, double zb)
 {
     const int N = p.segments;
     const double wl = w * p.length / N;
@@ -72,11 +73,12 @@ bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>
         // + the round-off of a tension from a strain: coordinates carry
         // eps |r|, a segment's strain eps |r| / l
         return 1e-11 * (std::abs(w) * p.length + tension)
-               + 16.0 * std::numeric_limits<double>::epsilon() * p.EA * extent / l;
+            + 16.0 * std::numeric_limits<double>::epsilon() * p.EA * extent / l;
     };
     int stalled = 0;
     double best = residual, bestTolerance = tolerance(f);
-    for (int iteration = 0; iteration < 200 && !(best <= bestTolerance && stalled >= 3);
+    for (int iteration = 0;
+         iteration < 200 && !(best <= bestTolerance && stalled >= 3);
          ++iteration) {
         const std::vector<Vector3> b(f.F.begin() + 1, f.F.end() - 1);
         const std::vector<Vector3> dx = staticStiffness(p, w, x, zb).solve(b);
@@ -87,7 +89,8 @@ bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>
         bool accepted = false;
         for (double alpha = 1.0; alpha > 1e-12 && !accepted; alpha *= 0.5) {
             for (int i = 1; i < N; ++i) {
-                trial[std::size_t(i)] = x[std::size_t(i)] + alpha * dx[std::size_t(i - 1)];
+                trial[std::size_t(i)]
+                    = x[std::size_t(i)] + alpha * dx[std::size_t(i - 1)];
             }
             NodeForces next = nodeForces(p, w, trial, still, zb);
             const double nextResidual = largestForce(next);
@@ -96,7 +99,7 @@ bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>
                 continue;
             }
             accepted = nextEnergy <= energy + 1e-4 * alpha * slope
-                       || (alpha == 1.0 && nextResidual < residual);
+                || (alpha == 1.0 && nextResidual < residual);
             if (accepted) {
                 x.swap(trial);
                 f = std::move(next);
@@ -123,12 +126,13 @@ bool solveStatics(const MooringLineParameters& p, double w, std::vector<Vector3>
 
 double MooringLineParameters::weight() const
 {
-    return (massPerLength - waterDensity * 0.25 * pi * diameter * diameter) * gravity;
+    return (massPerLength - waterDensity * 0.25 * pi * diameter * diameter)
+        * gravity;
 }
 
 std::vector<double> MooringLineState::serialize() const
 {
-    std::vector<double> out = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],
+    std::vector<double> out = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1], P[2],
                                vQ[0], vQ[1], vQ[2], vP[0], vP[1], vP[2]};
     out.insert(out.end(), nodes.begin(), nodes.end());
     return out;
@@ -168,13 +172,14 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
     requireNonNegative(lawName, "normalDrag", p.normalDrag, "1");
     requireNonNegative(lawName, "tangentialDrag", p.tangentialDrag, "1");
     requireNonNegative(lawName, "normalAddedMass", p.normalAddedMass, "1");
-    requireNonNegative(lawName, "tangentialAddedMass", p.tangentialAddedMass, "1");
+    requireNonNegative(lawName, "tangentialAddedMass", p.tangentialAddedMass,
+                       "1");
     requireNonNegative(lawName, "seabedStiffness", p.seabedStiffness, "Pa/m");
     requireNonNegative(lawName, "seabedDamping", p.seabedDamping, "Pa.s/m");
     if (p.segments < 2 || p.segments > 1000) {
-        throw ConnectorError("mooringLine: parameter segments = "
-                             + std::to_string(p.segments)
-                             + " is out of range (allowed: an integer from 2 to 1000)");
+        throw ConnectorError(
+            "mooringLine: parameter segments = " + std::to_string(p.segments)
+            + " is out of range (allowed: an integer from 2 to 1000)");
     }
     requirePositive("relativeTolerance", p.relativeTolerance, "1");
     requirePositive("absoluteTolerance", p.absoluteTolerance, "1");
@@ -185,18 +190,22 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
     options.halfBandwidth = 11; // a node's 6 states see its neighbours' 6
     integrator_ = std::make_unique<CvodeBdf>(
         6 * std::size_t(p.segments - 1),
-        [this](double t, const double* y, double* ydot) { return rhs(t, y, ydot); },
+        [this](double t, const double* y, double* ydot) {
+            return rhs(t, y, ydot);
+        },
         options);
 }
 
 MooringLine::~MooringLine() = default;
 
-Vector3 MooringLine::attachment(const BodyKinematics& body, const Vector3& p) const
+Vector3 MooringLine::attachment(const BodyKinematics& body,
+                                const Vector3& p) const
 {
     return body.p_WBo_W + body.R_WB * p;
 }
 
-Vector3 MooringLine::attachmentVelocity(const BodyKinematics& body, const Vector3& p) const
+Vector3 MooringLine::attachmentVelocity(const BodyKinematics& body,
+                                        const Vector3& p) const
 {
     return body.v_WBo_W + body.w_WB_W.cross(body.R_WB * p);
 }
@@ -210,11 +219,12 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     const MooringLineParameters& p = parameters_;
     const Vector3 P = attachment(A, p.p_AoP_A), Q = attachment(B, p.p_BoQ_B);
     if (p.seabedContact && P[2] < Q[2]) {
-        throw UndefinedStateError("mooringLine: the fairlead (A.p on body A) at z = "
-                                  + formatValue(P[2]) + " m is below the seabed (z = "
-                                  + formatValue(Q[2])
-                                  + " m, the height of the anchor B.p); with "
-                                    "seabedContact = 1 it must not be");
+        throw UndefinedStateError(
+            "mooringLine: the fairlead (A.p on body A) at z = "
+            + formatValue(P[2])
+            + " m is below the seabed (z = " + formatValue(Q[2])
+            + " m, the height of the anchor B.p); with "
+              "seabedContact = 1 it must not be");
     }
     CatenaryParameters c;
     c.p_AoP_A = p.p_AoP_A;
@@ -227,9 +237,10 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     try {
         shape = Catenary(c).evaluate(A, B, nullptr, p.segments + 1);
     } catch (const UndefinedStateError& e) {
-        throw UndefinedStateError(std::string("mooringLine: no quasi-static start "
-                                              "shape: ")
-                                  + e.what());
+        throw UndefinedStateError(
+            std::string("mooringLine: no quasi-static start "
+                        "shape: ")
+            + e.what());
     }
     MooringLineState s;
     s.time = time;
@@ -256,7 +267,8 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     s.nodes.assign(6 * std::size_t(N - 1), 0.0);
     for (int i = 1; i < N; ++i) {
         for (int k = 0; k < 3; ++k) {
-            s.nodes[6 * std::size_t(i - 1) + std::size_t(k)] = r[std::size_t(i)][k];
+            s.nodes[6 * std::size_t(i - 1) + std::size_t(k)]
+                = r[std::size_t(i)][k];
         }
     }
     return s;
@@ -266,7 +278,8 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
 {
     const int N = parameters_.segments;
     // cubic Hermite basis at s in [0, 1] and its derivative by t
-    const double s = std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0), h = ends_.h;
+    const double s = std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0),
+                 h = ends_.h;
     const double s2 = s * s, s3 = s2 * s;
     const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h10 = s3 - 2.0 * s2 + s;
     const double h01 = 3.0 * s2 - 2.0 * s3, h11 = s3 - s2;
@@ -279,14 +292,17 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
         v[0] = (ends_.Q1 - ends_.Q0) / h;
         v[N] = (ends_.P1 - ends_.P0) / h;
     } else {
-    r[0] = h00 * ends_.Q0 + h10 * h * ends_.vQ0 + h01 * ends_.Q1 + h11 * h * ends_.vQ1;
-    r[N] = h00 * ends_.P0 + h10 * h * ends_.vP0 + h01 * ends_.P1 + h11 * h * ends_.vP1;
-    v[0] = d00 * (ends_.Q0 - ends_.Q1) + d10 * ends_.vQ0 + d11 * ends_.vQ1;
-    v[N] = d00 * (ends_.P0 - ends_.P1) + d10 * ends_.vP0 + d11 * ends_.vP1;
-    if (s == 1.0) { // exactly the given end velocities (as evaluate sees them)
-        v[0] = ends_.vQ1;
-        v[N] = ends_.vP1;
-    }
+        r[0] = h00 * ends_.Q0 + h10 * h * ends_.vQ0 + h01 * ends_.Q1
+            + h11 * h * ends_.vQ1;
+        r[N] = h00 * ends_.P0 + h10 * h * ends_.vP0 + h01 * ends_.P1
+            + h11 * h * ends_.vP1;
+        v[0] = d00 * (ends_.Q0 - ends_.Q1) + d10 * ends_.vQ0 + d11 * ends_.vQ1;
+        v[N] = d00 * (ends_.P0 - ends_.P1) + d10 * ends_.vP0 + d11 * ends_.vP1;
+        if (s
+            == 1.0) { // exactly the given end velocities (as evaluate sees them)
+            v[0] = ends_.vQ1;
+            v[N] = ends_.vP1;
+        }
     }
     for (int i = 1; i < N; ++i) {
         const double* yi = y + 6 * (i - 1);
@@ -317,10 +333,9 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
                                   + " s must be finite and > 0");
     }
     if (state.nodes.size() != integrator_->size()) {
-        throw std::invalid_argument("mooringLine: state of "
-                                    + std::to_string(state.nodes.size())
-                                    + " node values, expected "
-                                    + std::to_string(integrator_->size()));
+        throw std::invalid_argument(
+            "mooringLine: state of " + std::to_string(state.nodes.size())
+            + " node values, expected " + std::to_string(integrator_->size()));
     }
     ends_.Q0 = state.Q;
     ends_.P0 = state.P;
@@ -374,7 +389,8 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     MooringLineOutput out;
     ConnectorResult& res = out.loads;
     res.A.f_W = -f.T[N - 1] * f.q[N - 1] - 0.5 * weight_ * l * zHat;
-    res.B.f_W = f.T[0] * f.q[0] - (p.seabedContact ? 0.0 : 0.5 * weight_ * l) * zHat;
+    res.B.f_W
+        = f.T[0] * f.q[0] - (p.seabedContact ? 0.0 : 0.5 * weight_ * l) * zHat;
     res.A.m_Bo_W = g.p_AoP_W.cross(res.A.f_W);
     res.B.m_Bo_W = g.p_BoQ_W.cross(res.B.f_W);
     res.length = g.length;
@@ -386,13 +402,15 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     for (int i = 1; i < N; ++i) {
         heights += r[i][2];
     }
-    res.potentialEnergy = f.strainEnergy + f.seabedEnergy + weight_ * l * heights;
+    res.potentialEnergy
+        = f.strainEnergy + f.seabedEnergy + weight_ * l * heights;
     res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
     out.groundedLength = l * f.groundedSegments;
     out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
     out.V = -res.A.f_W[2];
     if (shapePoints == 1 || shapePoints < 0) {
-        throw std::invalid_argument("mooringLine: shapePoints must be 0 or >= 2");
+        throw std::invalid_argument(
+            "mooringLine: shapePoints must be 0 or >= 2");
     }
     for (int k = 0; k < shapePoints; ++k) {
         const double u = N * (1.0 - double(k) / (shapePoints - 1));

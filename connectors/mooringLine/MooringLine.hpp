@@ -87,7 +87,8 @@ struct MooringLineState {
 
     std::vector<double> serialize() const;
     //- Throws std::invalid_argument unless `data` holds a state of N segments
-    static MooringLineState deserialize(const std::vector<double>& data, int segments);
+    static MooringLineState deserialize(const std::vector<double>& data,
+                                        int segments);
 };
 
 struct MooringLineOutput {
@@ -109,8 +110,8 @@ public:
     //  attachment points of A and B (damped Newton from the quasi-static
     //  elastic catenary shape; that shape where Newton finds none).
     //  UndefinedStateError for a fairlead below the seabed.
-    MooringLineState initialState(const BodyKinematics& A, const BodyKinematics& B,
-                                  double time) const;
+    MooringLineState initialState(const BodyKinematics& A,
+                                  const BodyKinematics& B, double time) const;
 
     //- Advances `state` by h > 0, the ends moving along the cubic Hermite
     //  path from their positions and velocities in `state` to those of the
@@ -122,8 +123,9 @@ public:
 
     //- Loads and diagnostics of `state` with the ends at A's and B's
     //  attachment points; shapePoints 0 or >= 2
-    MooringLineOutput evaluate(const MooringLineState& state, const BodyKinematics& A,
-                               const BodyKinematics& B, int shapePoints) const;
+    MooringLineOutput evaluate(const MooringLineState& state,
+                               const BodyKinematics& A, const BodyKinematics& B,
+                               int shapePoints) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
@@ -137,7 +139,8 @@ private:
     };
     int rhs(double t, const double* y, double* ydot) const;
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
-    Vector3 attachmentVelocity(const BodyKinematics& body, const Vector3& p) const;
+    Vector3 attachmentVelocity(const BodyKinematics& body,
+                               const Vector3& p) const;
 
     MooringLineParameters parameters_;
     double weight_ = 0.0;

@@ -69,7 +69,8 @@ CatenaryModel::CatenaryModel()
     lineFmu::declareAttachments(t, v_);
     length_ = t.parameter("unstretchedLength", Shape::scalar, "m",
                           "unstretched length L of the line, > 0", {1.5});
-    EA_ = t.parameter("EA", Shape::scalar, "N", "axial stiffness EA, > 0", {1e5});
+    EA_ = t.parameter("EA", Shape::scalar, "N", "axial stiffness EA, > 0",
+                      {1e5});
     weight_ = t.parameter("weight", Shape::scalar, "N/m",
                           "submerged weight per unstretched length (negative: "
                           "buoyant line)",
@@ -97,7 +98,8 @@ CatenaryModel::parameters(const double* values) const
     const double contact = values[seabedContact_.first];
     if (contact != 0.0 && contact != 1.0) {
         throw connectors::ConnectorError(
-            "catenary: parameter seabedContact = " + connectors::formatValue(contact)
+            "catenary: parameter seabedContact = "
+            + connectors::formatValue(contact)
             + " is out of range (allowed: 0 or 1)");
     }
     connectors::CatenaryParameters p;
@@ -114,12 +116,11 @@ CatenaryModel::parameters(const double* values) const
 void CatenaryModel::computeOutputs(double* values) const
 {
     const connectors::Catenary law(parameters(values));
-    const connectors::CatenaryGuess previous{values[v_.H.first],
-                                             values[v_.V.first]};
-    const connectors::CatenaryOutput c =
-        law.evaluate(lineFmu::kinematics(values, v_.A),
-                     lineFmu::kinematics(values, v_.B), &previous,
-                     lineFmu::shapePoints);
+    const connectors::CatenaryGuess previous {values[v_.H.first],
+                                              values[v_.V.first]};
+    const connectors::CatenaryOutput c = law.evaluate(
+        lineFmu::kinematics(values, v_.A), lineFmu::kinematics(values, v_.B),
+        &previous, lineFmu::shapePoints);
     lineFmu::LineOutputs o;
     o.loads = c.loads;
     o.fairleadTension = c.fairleadTension;

@@ -14,10 +14,11 @@ void declareAttachments(fmuExport::VariableTable& t, LineVariables& v)
     v.A_p = t.parameter("A.p", Shape::vector3, "m",
                         "fairlead on A, A's frame, from A's reference point",
                         {0, 0, 0});
-    v.B_p = t.parameter("B.p", Shape::vector3, "m",
-                        "anchor or fairlead on B, B's frame, from B's reference "
-                        "point (a global point when B is the world)",
-                        {0, 0, 0});
+    v.B_p
+        = t.parameter("B.p", Shape::vector3, "m",
+                      "anchor or fairlead on B, B's frame, from B's reference "
+                      "point (a global point when B is the world)",
+                      {0, 0, 0});
 }
 
 void declareBodies(fmuExport::VariableTable& t, LineVariables& v,
@@ -66,13 +67,14 @@ void declareOutputs(fmuExport::VariableTable& t, LineVariables& v,
                    d.loads);
     for (const char* axis : {"x", "y", "z"}) {
         for (int i = 1; i <= shapePoints; ++i) {
-            t.output(std::string("shape.") + axis + "[" + std::to_string(i) + "]",
+            t.output(std::string("shape.") + axis + "[" + std::to_string(i)
+                         + "]",
                      Shape::scalar, "m",
                      std::string(axis) + " of point " + std::to_string(i)
                          + " of " + std::to_string(shapePoints)
                          + " along the line, from the fairlead on A (1) to "
-                           "B (" + std::to_string(shapePoints)
-                         + "), global frame",
+                           "B ("
+                         + std::to_string(shapePoints) + "), global frame",
                      d.loads);
         }
     }
@@ -95,17 +97,32 @@ std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
 }
 
 void writeOutputs(double* values, const LineVariables& v,
-                  const fmuExport::VariableTable& table, const std::string& model,
-                  const LineOutputs& o)
+                  const fmuExport::VariableTable& table,
+                  const std::string& model, const LineOutputs& o)
 {
     const connectors::ConnectorResult& r = o.loads;
-    std::vector<double> out = {
-        r.A.f_W[0],   r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-        r.A.m_Bo_W[1], r.A.m_Bo_W[2], r.B.f_W[0],   r.B.f_W[1],
-        r.B.f_W[2],   r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
-        r.length,     r.lengthRate,  r.tension,     r.potentialEnergy,
-        r.dissipatedPower, o.fairleadTension, o.anchorTension,
-        o.groundedLength, o.H, o.V};
+    std::vector<double> out = {r.A.f_W[0],
+                               r.A.f_W[1],
+                               r.A.f_W[2],
+                               r.A.m_Bo_W[0],
+                               r.A.m_Bo_W[1],
+                               r.A.m_Bo_W[2],
+                               r.B.f_W[0],
+                               r.B.f_W[1],
+                               r.B.f_W[2],
+                               r.B.m_Bo_W[0],
+                               r.B.m_Bo_W[1],
+                               r.B.m_Bo_W[2],
+                               r.length,
+                               r.lengthRate,
+                               r.tension,
+                               r.potentialEnergy,
+                               r.dissipatedPower,
+                               o.fairleadTension,
+                               o.anchorTension,
+                               o.groundedLength,
+                               o.H,
+                               o.V};
     if (o.shape.size() != std::size_t(shapePoints)) {
         throw std::logic_error(model + ": " + std::to_string(o.shape.size())
                                + " shape points, expected "
@@ -120,8 +137,8 @@ void writeOutputs(double* values, const LineVariables& v,
     for (std::size_t i = 0; i < out.size(); ++i) {
         if (!std::isfinite(out[i])) {
             throw std::range_error(model + ": output "
-                                   + variables[v.firstOutput.first + i].name + " = "
-                                   + fmuExport::formatDouble(out[i])
+                                   + variables[v.firstOutput.first + i].name
+                                   + " = " + fmuExport::formatDouble(out[i])
                                    + " is not finite (inputs or parameters "
                                      "too large)");
         }

@@ -45,18 +45,16 @@ double __wrap_pow(double x, double y)
 
 int __wrap_getentropy(void* buffer, size_t length)
 {
-    if (length > 256)
-    {
+    if (length > 256) {
         errno = EIO;
         return -1;
     }
     char* p = buffer;
-    while (length > 0)
-    {
+    while (length > 0) {
         const long got = syscall(SYS_getrandom, p, length, 0);
-        if (got < 0)
-        {
-            if (errno == EINTR) continue;
+        if (got < 0) {
+            if (errno == EINTR)
+                continue;
             return -1;
         }
         p += got;
@@ -68,8 +66,6 @@ int __wrap_getentropy(void* buffer, size_t length)
 uint32_t __wrap_arc4random(void)
 {
     uint32_t value = 0;
-    while (__wrap_getentropy(&value, sizeof value) != 0)
-    {
-    }
+    while (__wrap_getentropy(&value, sizeof value) != 0) { }
     return value;
 }

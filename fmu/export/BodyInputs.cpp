@@ -9,10 +9,10 @@ BodyInputs declareBodyInputs(VariableTable& table, const std::string& body,
     in.r = table.input(
         body + ".r", Shape::vector3, "m",
         "position of " + body + "'s reference point, global frame", r0);
-    in.R =
-        table.input(body + ".R", Shape::matrix3, "1",
-                    "orientation of " + body + ", body frame to global frame",
-                    {1, 0, 0, 0, 1, 0, 0, 0, 1});
+    in.R
+        = table.input(body + ".R", Shape::matrix3, "1",
+                      "orientation of " + body + ", body frame to global frame",
+                      {1, 0, 0, 0, 1, 0, 0, 0, 1});
     in.v = table.input(
         body + ".v", Shape::vector3, "m/s",
         "velocity of " + body + "'s reference point, global frame", {0, 0, 0});

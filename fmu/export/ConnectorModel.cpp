@@ -99,16 +99,16 @@ connectors::Vector3 ConnectorModel::vector3(const double* values, Block block)
 
 void ConnectorModel::computeOutputs(double* values) const
 {
-    const connectors::ConnectorResult r =
-        evaluate(values, bodyKinematics(values, A), bodyKinematics(values, B));
-    const double out[outputCount] = {
-        r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-        r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
-        r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
-        r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
-        r.dissipatedPower};
-    const std::vector<ScalarVariable>& variables =
-        this->variables().variables();
+    const connectors::ConnectorResult r = evaluate(
+        values, bodyKinematics(values, A), bodyKinematics(values, B));
+    const double out[outputCount]
+        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+           r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+           r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+           r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
+           r.dissipatedPower};
+    const std::vector<ScalarVariable>& variables
+        = this->variables().variables();
     for (std::size_t i = 0; i < outputCount; ++i) {
         if (!std::isfinite(out[i])) {
             throw std::range_error(identity().modelIdentifier + ": output "

@@ -8,14 +8,14 @@
 
 namespace fmuExport {
 
-constexpr unsigned anyLiveState =
-    instantiated | initializationMode | stepComplete | terminated | error;
-constexpr unsigned savableState =
-    instantiated | initializationMode | stepComplete | terminated;
-constexpr unsigned readableState =
-    initializationMode | stepComplete | terminated | error;
-constexpr unsigned writableState =
-    instantiated | initializationMode | stepComplete;
+constexpr unsigned anyLiveState
+    = instantiated | initializationMode | stepComplete | terminated | error;
+constexpr unsigned savableState
+    = instantiated | initializationMode | stepComplete | terminated;
+constexpr unsigned readableState
+    = initializationMode | stepComplete | terminated | error;
+constexpr unsigned writableState
+    = instantiated | initializationMode | stepComplete;
 
 template <class Body>
 inline fmi2Status guarded(fmi2Component c, const char* function,

@@ -10,19 +10,16 @@ namespace fmuExport {
 
 FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                          const fmi2CallbackFunctions& callbacks, bool loggingOn)
-    : model_(std::move(model))
-    , instanceName_(std::move(instanceName))
-    , guid_(modelGuid(*model_))
-    , callbacks_(callbacks)
-    , logCalls_(loggingOn)
+    : model_(std::move(model)), instanceName_(std::move(instanceName)),
+      guid_(modelGuid(*model_)), callbacks_(callbacks), logCalls_(loggingOn)
 {
     for (const ScalarVariable& v : model_->variables().variables()) {
         realAccess_.push_back(
-            v.type != Type::real                  ? RealAccess::none
-            : v.causality == Causality::input     ? RealAccess::input
-            : v.causality == Causality::parameter ? RealAccess::parameter
-            : v.causality == Causality::output    ? RealAccess::output
-                                                  : RealAccess::none);
+            v.type != Type::real                      ? RealAccess::none
+                : v.causality == Causality::input     ? RealAccess::input
+                : v.causality == Causality::parameter ? RealAccess::parameter
+                : v.causality == Causality::output    ? RealAccess::output
+                                                      : RealAccess::none);
     }
     startValues();
 }
@@ -49,8 +46,8 @@ void FmuInstance::logFailure(fmi2Status status, const char* function,
 
 void FmuInstance::startValues()
 {
-    const std::vector<ScalarVariable>& variables =
-        model_->variables().variables();
+    const std::vector<ScalarVariable>& variables
+        = model_->variables().variables();
     values_.resize(variables.size());
     for (const ScalarVariable& v : variables) {
         values_[v.valueReference] = v.start;
@@ -166,8 +163,7 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
         if (access == RealAccess::parameter
             && (state_ & (instantiated | initializationMode)) == 0) {
             throw UsageError("parameter " + variableName(vr[i])
-                             + " (value reference "
-                             + std::to_string(vr[i])
+                             + " (value reference " + std::to_string(vr[i])
                              + ") is fixed: set it before "
                                "fmi2ExitInitializationMode");
         }
@@ -302,8 +298,8 @@ void FmuInstance::serializeState(fmi2FMUstate state, fmi2Byte buffer[],
 fmi2FMUstate FmuInstance::deserializeState(const fmi2Byte bytes[],
                                            std::size_t size, fmi2FMUstate reuse)
 {
-    SavedState state =
-        fmuExport::deserializeState(bytes, size, guid_, values_.size());
+    SavedState state
+        = fmuExport::deserializeState(bytes, size, guid_, values_.size());
     if (reuse != nullptr) {
         ownedState(reuse) = std::move(state);
         return reuse;

@@ -10,8 +10,8 @@ namespace {
 
 constexpr char magic[8] = {'F', 'O', 'A', 'M', 'F', 'M', 'I', '\0'};
 constexpr std::uint32_t formatVersion = 1;
-constexpr unsigned restorableStates =
-    instantiated | initializationMode | stepComplete | terminated;
+constexpr unsigned restorableStates
+    = instantiated | initializationMode | stepComplete | terminated;
 
 struct Header {
     char magic[8];
@@ -51,7 +51,7 @@ std::string stateNames(unsigned mask)
     for (unsigned bit = 1; bit <= fatal; bit <<= 1) {
         if (mask & bit) {
             out += (out.empty() ? "" : " or ")
-                   + std::string(stateName(ModelState(bit)));
+                + std::string(stateName(ModelState(bit)));
         }
     }
     return out.empty() ? "none" : out;
@@ -61,21 +61,21 @@ std::size_t serializedSize(std::size_t valueCount, std::size_t internalCount)
 {
     const std::size_t base = sizeof(Header) + valueCount * sizeof(double);
     return internalCount == 0
-               ? base
-               : base + sizeof(std::uint64_t) + internalCount * sizeof(double);
+        ? base
+        : base + sizeof(std::uint64_t) + internalCount * sizeof(double);
 }
 
 void serializeState(const SavedState& state, const std::string& guid,
                     char* buffer, std::size_t size)
 {
-    const std::size_t needed =
-        serializedSize(state.values.size(), state.internal.size());
+    const std::size_t needed
+        = serializedSize(state.values.size(), state.internal.size());
     if (size < needed) {
         throw UsageError("buffer of " + std::to_string(size)
                          + " bytes is too small, " + std::to_string(needed)
                          + " bytes needed (fmi2SerializedFMUstateSize)");
     }
-    Header header{};
+    Header header {};
     std::memcpy(header.magic, magic, sizeof magic);
     header.version = formatVersion;
     header.state = state.state;
@@ -98,7 +98,7 @@ void serializeState(const SavedState& state, const std::string& guid,
 SavedState deserializeState(const char* bytes, std::size_t size,
                             const std::string& guid, std::size_t valueCount)
 {
-    Header header{};
+    Header header {};
     if (bytes == nullptr || size < sizeof header) {
         throw UsageError("serialized state of " + std::to_string(size)
                          + " bytes is shorter than its header ("
@@ -122,8 +122,8 @@ SavedState deserializeState(const char* bytes, std::size_t size,
     // Internal state: present when the bytes go on after the value array
     std::size_t internalCount = 0;
     const std::size_t base = serializedSize(valueCount);
-    const std::string sizeText =
-        "serialized state has " + std::to_string(size) + " bytes";
+    const std::string sizeText
+        = "serialized state has " + std::to_string(size) + " bytes";
     if (header.valueCount != valueCount) {
         throw UsageError(sizeText + " of " + std::to_string(header.valueCount)
                          + " values, expected " + std::to_string(valueCount)

@@ -73,17 +73,16 @@ public:
     {
         (void)values;
         if (!state.empty()) {
-            throw std::invalid_argument(
-                identity_.modelIdentifier + " has no internal state, the "
-                "saved state has " + std::to_string(state.size()) + " values");
+            throw std::invalid_argument(identity_.modelIdentifier
+                                        + " has no internal state, the "
+                                          "saved state has "
+                                        + std::to_string(state.size())
+                                        + " values");
         }
     }
 
 protected:
-    explicit Model(ModelIdentity identity)
-        : identity_(std::move(identity))
-    {
-    }
+    explicit Model(ModelIdentity identity) : identity_(std::move(identity)) { }
 
     VariableTable& table() { return variables_; }
 

@@ -188,8 +188,8 @@ std::string modelGuid(const Model& model)
 std::string modelDescriptionXml(const Model& model)
 {
     const ModelIdentity& id = model.identity();
-    const std::vector<ScalarVariable>& variables =
-        model.variables().variables();
+    const std::vector<ScalarVariable>& variables
+        = model.variables().variables();
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\""
@@ -298,7 +298,7 @@ std::string documentationHtml(const Model& model)
           << v.valueReference << "</td><td>" << causalityName(v.causality)
           << "</td><td>" << escape(v.unit) << "</td><td>"
           << (v.initial == Initial::calculated ? std::string()
-              : v.type == Type::boolean
+                  : v.type == Type::boolean
                   ? std::string(v.start != 0.0 ? "true" : "false")
                   : formatDouble(v.start))
           << "</td><td>" << escape(v.description) << "</td></tr>\n";

@@ -29,7 +29,7 @@ std::string elementName(const std::string& name, Shape shape, std::size_t i)
         return name + "[" + std::to_string(i + 1) + "]";
     case Shape::matrix3:
         return name + "[" + std::to_string(i / 3 + 1) + ","
-               + std::to_string(i % 3 + 1) + "]";
+            + std::to_string(i % 3 + 1) + "]";
     }
     return name;
 }
@@ -44,7 +44,7 @@ std::string elementDescription(const std::string& description, Shape shape,
         return description + ", component " + std::to_string(i + 1);
     case Shape::matrix3:
         return description + ", row " + std::to_string(i / 3 + 1) + ", column "
-               + std::to_string(i % 3 + 1);
+            + std::to_string(i % 3 + 1);
     }
     return description;
 }
@@ -89,7 +89,7 @@ Block VariableTable::booleanConstant(const std::string& name,
     v.description = description;
     v.start = value ? 1.0 : 0.0;
     variables_.push_back(v);
-    return Block{v.valueReference, 1};
+    return Block {v.valueReference, 1};
 }
 
 Block VariableTable::add(const std::string& name, Shape shape,
@@ -123,17 +123,17 @@ Block VariableTable::add(const std::string& name, Shape shape,
     dependencies.erase(std::unique(dependencies.begin(), dependencies.end()),
                        dependencies.end());
 
-    const Block block{fmi2ValueReference(variables_.size()), n};
+    const Block block {fmi2ValueReference(variables_.size()), n};
     for (std::size_t i = 0; i < n; ++i) {
         ScalarVariable v;
         v.name = elementName(name, shape, i);
         v.valueReference = block.first + fmi2ValueReference(i);
         v.causality = causality;
         v.variability = causality == Causality::parameter
-                            ? Variability::fixed
-                            : Variability::continuous;
+            ? Variability::fixed
+            : Variability::continuous;
         v.initial = causality == Causality::parameter ? Initial::exact
-                    : causality == Causality::output  ? Initial::calculated
+            : causality == Causality::output          ? Initial::calculated
                                                       : Initial::none;
         v.unit = unit;
         v.description = elementDescription(description, shape, i);

@@ -14,8 +14,8 @@ using fmuExport::savableState;
 using fmuExport::unsupported;
 using fmuExport::UsageError;
 
-constexpr const char* modelExchangeOnly =
-    "model exchange is not supported: this is a co-simulation FMU";
+constexpr const char* modelExchangeOnly
+    = "model exchange is not supported: this is a co-simulation FMU";
 
 FmuInstance& instance(fmi2Component c)
 {
@@ -79,8 +79,8 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c,
 {
     return guarded(c, "fmi2DeSerializeFMUstate", anyLiveState, [&] {
         requireNonNull(FMUstate, "FMUstate");
-        *FMUstate =
-            instance(c).deserializeState(serializedState, size, *FMUstate);
+        *FMUstate
+            = instance(c).deserializeState(serializedState, size, *FMUstate);
     });
 }
 

@@ -78,17 +78,16 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
         std::unique_ptr<fmuExport::Model> model = fmuExport::createModel();
         const std::string name = model->identity().modelIdentifier;
         if (fmuType != fmi2CoSimulation) {
-            const std::string message =
-                name
+            const std::string message = name
                 + " supports co-simulation only (fmuType fmi2CoSimulation)";
             logInstantiateError(functions, instanceName, message.c_str());
             return nullptr;
         }
         const std::string guid = fmuExport::modelGuid(*model);
         if (fmuGUID == nullptr || guid != fmuGUID) {
-            const std::string message =
-                "GUID " + std::string(fmuGUID ? fmuGUID : "(null)")
-                + " does not match " + name + "'s GUID " + guid;
+            const std::string message = "GUID "
+                + std::string(fmuGUID ? fmuGUID : "(null)") + " does not match "
+                + name + "'s GUID " + guid;
             logInstantiateError(functions, instanceName, message.c_str());
             return nullptr;
         }

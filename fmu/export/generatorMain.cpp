@@ -27,8 +27,8 @@ int main(int argc, char** argv)
         return 2;
     }
     try {
-        const std::unique_ptr<fmuExport::Model> model =
-            fmuExport::createModel();
+        const std::unique_ptr<fmuExport::Model> model
+            = fmuExport::createModel();
         const std::filesystem::path dir(argv[1]);
         writeFile(dir / "modelDescription.xml",
                   fmuExport::modelDescriptionXml(*model));

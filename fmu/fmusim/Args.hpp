@@ -11,10 +11,10 @@
 
 namespace fmusim {
 
-struct Args
-{
+struct Args {
     std::vector<std::string> positional;
-    std::map<std::string, std::vector<std::string>> options;  // name without "--" -> values in order
+    std::map<std::string, std::vector<std::string>>
+        options; // name without "--" -> values in order
     std::set<std::string> flags;
 
     // The last value of option, if given.
@@ -30,7 +30,8 @@ double timeoutOption(const Args& args);
 
 // Throws UsageError for an option not in valueOptions or flagOptions, or an
 // option without its value.
-Args parseArgs(const std::vector<std::string>& args, const std::set<std::string>& valueOptions,
+Args parseArgs(const std::vector<std::string>& args,
+               const std::set<std::string>& valueOptions,
                const std::set<std::string>& flagOptions);
 
 // Parses a whole string as a finite double.
@@ -42,6 +43,6 @@ std::vector<std::string> splitNames(const std::string& list);
 // Removes leading and trailing blanks.
 std::string trim(const std::string& s);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -34,13 +34,16 @@ using fmuImport::Variability;
 
 const char* causalityName(Causality c)
 {
-    static const char* const names[] = {"parameter", "calculatedParameter", "input", "output", "local", "independent"};
+    static const char* const names[]
+        = {"parameter", "calculatedParameter", "input", "output",
+           "local",     "independent"};
     return names[static_cast<int>(c)];
 }
 
 const char* variabilityName(Variability v)
 {
-    static const char* const names[] = {"constant", "fixed", "tunable", "discrete", "continuous"};
+    static const char* const names[]
+        = {"constant", "fixed", "tunable", "discrete", "continuous"};
     return names[static_cast<int>(v)];
 }
 
@@ -48,8 +51,10 @@ std::string joined(const std::vector<std::string>& problems)
 {
     std::string text;
     const std::size_t shown = std::min<std::size_t>(problems.size(), 6);
-    for (std::size_t i = 0; i < shown; ++i) text += (i ? "; " : "") + problems[i];
-    if (problems.size() > shown) text += "; and " + std::to_string(problems.size() - shown) + " more";
+    for (std::size_t i = 0; i < shown; ++i)
+        text += (i ? "; " : "") + problems[i];
+    if (problems.size() > shown)
+        text += "; and " + std::to_string(problems.size() - shown) + " more";
     return text;
 }
 
@@ -57,103 +62,118 @@ std::string joined(const std::vector<std::string>& problems)
 // verbose (as in the probes); LoadError if it cannot be instantiated.
 void instantiateQuietly(const fmuImport::Fmu& fmu, bool verbose)
 {
-    try
-    {
+    try {
         WatchedInstance(
             fmu, "check",
-            [verbose](const std::string& i, int status, const std::string& category, const std::string& m) {
-                if (verbose) stderrLogger(true)(i, status, category, m);
+            [verbose](const std::string& i, int status,
+                      const std::string& category, const std::string& m) {
+                if (verbose)
+                    stderrLogger(true)(i, status, category, m);
             },
             false);
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
 }
 
-CheckResult verdict(const std::string& name, const std::vector<std::string>& problems)
+CheckResult verdict(const std::string& name,
+                    const std::vector<std::string>& problems)
 {
-    return problems.empty() ? CheckResult{name, CheckResult::pass, ""}
-                            : CheckResult{name, CheckResult::fail, joined(problems)};
+    return problems.empty()
+        ? CheckResult {name, CheckResult::pass, ""}
+        : CheckResult {name, CheckResult::fail, joined(problems)};
 }
 
 // Problems of one declared component against its vocabulary entry.
-void compare(const fmuImport::Variable& v, const VocabularyEntry& e, std::vector<std::string>& problems)
+void compare(const fmuImport::Variable& v, const VocabularyEntry& e,
+             std::vector<std::string>& problems)
 {
-    if (v.type != fmuImport::Type::Real) problems.push_back(v.name + " is not Real");
+    if (v.type != fmuImport::Type::Real)
+        problems.push_back(v.name + " is not Real");
     if (v.causality != e.causality)
-        problems.push_back(v.name + " has causality " + causalityName(v.causality) + ", expected " +
-                           causalityName(e.causality));
+        problems.push_back(v.name + " has causality "
+                           + causalityName(v.causality) + ", expected "
+                           + causalityName(e.causality));
     if (v.variability != e.variability)
-        problems.push_back(v.name + " has variability " + variabilityName(v.variability) + ", expected " +
-                           variabilityName(e.variability));
+        problems.push_back(v.name + " has variability "
+                           + variabilityName(v.variability) + ", expected "
+                           + variabilityName(e.variability));
 }
 
 bool required(const VocabularyEntry& e, bool twoBody)
 {
-    return e.requirement == Requirement::always || (e.requirement == Requirement::twoBody && twoBody);
+    return e.requirement == Requirement::always
+        || (e.requirement == Requirement::twoBody && twoBody);
 }
 
-std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu, const Connector& connector)
+std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu,
+                                         const Connector& connector)
 {
     std::vector<std::string> missing, optional, units;
-    for (const VocabularyEntry& e : connectorVocabulary())
-    {
+    for (const VocabularyEntry& e : connectorVocabulary()) {
         const std::vector<std::string> names = componentNames(e.base, e.shape);
         const bool isRequired = required(e, connector.twoBody());
-        const auto declared =
-            std::count_if(names.begin(), names.end(), [&](const std::string& n) { return fmu.hasVariable(n); });
-        if (declared == 0 && !isRequired) continue;
+        const auto declared = std::count_if(
+            names.begin(), names.end(),
+            [&](const std::string& n) { return fmu.hasVariable(n); });
+        if (declared == 0 && !isRequired)
+            continue;
         std::vector<std::string>& problems = isRequired ? missing : optional;
-        for (const std::string& name : names)
-        {
-            if (!fmu.hasVariable(name))
-            {
-                problems.push_back(isRequired
-                                       ? "missing " + name
-                                       : name + " is missing while other components of " + e.base + " are declared");
+        for (const std::string& name : names) {
+            if (!fmu.hasVariable(name)) {
+                problems.push_back(
+                    isRequired ? "missing " + name
+                               : name + " is missing while other components of "
+                            + e.base + " are declared");
                 continue;
             }
             const fmuImport::Variable& v = fmu.variable(name);
             compare(v, e, problems);
-            if (std::find(e.units.begin(), e.units.end(), v.unit) == e.units.end())
-                units.push_back(name + " has unit '" + v.unit + "', expected '" + e.units.front() + "'");
+            if (std::find(e.units.begin(), e.units.end(), v.unit)
+                == e.units.end())
+                units.push_back(name + " has unit '" + v.unit + "', expected '"
+                                + e.units.front() + "'");
         }
     }
 
     std::vector<std::string> capabilities;
     if (!fmu.modelDescription().canHandleVariableCommunicationStepSize)
-        capabilities.push_back("canHandleVariableCommunicationStepSize is not true");
+        capabilities.push_back(
+            "canHandleVariableCommunicationStepSize is not true");
 
     std::vector<std::string> parameters;
-    for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-    {
-        if (v.causality != Causality::parameter) continue;
-        if (!v.hasStart) parameters.push_back(v.name + " has no start value");
-        if (v.description.empty()) parameters.push_back(v.name + " has no description");
+    for (const fmuImport::Variable& v : fmu.modelDescription().variables) {
+        if (v.causality != Causality::parameter)
+            continue;
+        if (!v.hasStart)
+            parameters.push_back(v.name + " has no start value");
+        if (v.description.empty())
+            parameters.push_back(v.name + " has no description");
     }
 
-    return {verdict("required-variables", missing), verdict("optional-variables", optional), verdict("units", units),
-            verdict("capabilities", capabilities), verdict("parameters", parameters)};
+    return {verdict("required-variables", missing),
+            verdict("optional-variables", optional), verdict("units", units),
+            verdict("capabilities", capabilities),
+            verdict("parameters", parameters)};
 }
 
-}  // namespace
+} // namespace
 
 int checkCommand(const std::vector<std::string>& arguments)
 {
-    const Args args = parseArgs(arguments, {"seed", "samples", "timeout"}, {"verbose"});
-    if (args.positional.size() != 1) throw UsageError("check needs exactly one FMU file");
+    const Args args
+        = parseArgs(arguments, {"seed", "samples", "timeout"}, {"verbose"});
+    if (args.positional.size() != 1)
+        throw UsageError("check needs exactly one FMU file");
     ProbeOptions options;
-    if (const auto seed = args.number("seed"))
-    {
+    if (const auto seed = args.number("seed")) {
         if (*seed < 0 || *seed != static_cast<unsigned int>(*seed))
             throw UsageError("--seed must be a non-negative integer");
         options.seed = static_cast<unsigned int>(*seed);
     }
-    if (const auto samples = args.number("samples"))
-    {
-        if (*samples < 1 || *samples > 1e6 || *samples != static_cast<int>(*samples))
+    if (const auto samples = args.number("samples")) {
+        if (*samples < 1 || *samples > 1e6
+            || *samples != static_cast<int>(*samples))
             throw UsageError("--samples must be an integer from 1 to 1000000");
         options.samples = static_cast<int>(*samples);
     }
@@ -165,29 +185,25 @@ int checkCommand(const std::vector<std::string>& arguments)
 
     int passed = 0, failed = 0;
     auto report = [&](const CheckResult& r) {
-        if (r.outcome == CheckResult::pass)
-        {
+        if (r.outcome == CheckResult::pass) {
             ++passed;
             std::cout << "PASS " << r.name << '\n';
-        }
-        else
-        {
+        } else {
             failed += r.outcome == CheckResult::fail;
-            std::cout << (r.outcome == CheckResult::fail ? "FAIL " : "SKIP ") << r.name << ": " << r.reason << '\n';
+            std::cout << (r.outcome == CheckResult::fail ? "FAIL " : "SKIP ")
+                      << r.name << ": " << r.reason << '\n';
         }
         std::cout.flush();
     };
-    for (const CheckResult& r : interfaceChecks(fmu, connector)) report(r);
+    for (const CheckResult& r : interfaceChecks(fmu, connector))
+        report(r);
     // An FMU that cannot be instantiated (a GUID mismatch, a failing
     // fmi2Instantiate) is a load error, exit code 3 as for run and twobody,
     // not merely a failed check: nothing else can be checked. The report
     // still ends with its reason and the count.
-    try
-    {
+    try {
         instantiateQuietly(fmu, options.verbose);
-    }
-    catch (const LoadError& e)
-    {
+    } catch (const LoadError& e) {
         report({"initialization", CheckResult::fail, e.what()});
         std::cout << passed << " passed, " << failed << " failed\n";
         throw;
@@ -195,9 +211,10 @@ int checkCommand(const std::vector<std::string>& arguments)
     if (connector.missingRequired().empty())
         runProbes(fmu, connector, options, report);
     else
-        report({"probes", CheckResult::skip, "the required variables are not all declared"});
+        report({"probes", CheckResult::skip,
+                "the required variables are not all declared"});
     std::cout << passed << " passed, " << failed << " failed\n";
     return failed ? exitCheckFailed : exitOk;
 }
 
-}  // namespace fmusim
+} // namespace fmusim

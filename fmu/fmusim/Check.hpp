@@ -13,19 +13,13 @@ const char* checkUsage();
 // args: everything after "check". Returns exitOk or exitCheckFailed.
 int checkCommand(const std::vector<std::string>& args);
 
-struct CheckResult
-{
-    enum Outcome
-    {
-        pass,
-        fail,
-        skip
-    };
+struct CheckResult {
+    enum Outcome { pass, fail, skip };
     std::string name;
     Outcome outcome;
-    std::string reason;  // why it failed or was skipped
+    std::string reason; // why it failed or was skipped
 };
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -11,18 +11,18 @@
 
 namespace fmusim {
 
-struct ProbeOptions
-{
+struct ProbeOptions {
     unsigned int seed = 1;
-    int samples = 20;        // random configurations
-    double stepSize = 1e-3;  // communication step of every probe [s]
-    bool verbose = false;    // print the FMU's log messages
+    int samples = 20; // random configurations
+    double stepSize = 1e-3; // communication step of every probe [s]
+    bool verbose = false; // print the FMU's log messages
 };
 
 // Runs every probe, handing each result to report as soon as it is known.
-void runProbes(const fmuImport::Fmu& fmu, const Connector& connector, const ProbeOptions& options,
+void runProbes(const fmuImport::Fmu& fmu, const Connector& connector,
+               const ProbeOptions& options,
                const std::function<void(const CheckResult&)>& report);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

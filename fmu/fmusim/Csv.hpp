@@ -24,13 +24,15 @@ std::string formatNumber(double value);
 // any name), then rows of numbers with non-decreasing times. Blank lines
 // and lines starting with '#' are skipped. Errors are FileError with
 // "file:line: problem".
-class InputTable
-{
+class InputTable {
 public:
     explicit InputTable(const std::string& path);
 
     const std::string& path() const { return path_; }
-    const std::vector<std::string>& names() const { return names_; }  // the columns after time
+    const std::vector<std::string>& names() const
+    {
+        return names_;
+    } // the columns after time
     int headerLine() const { return headerLine_; }
 
     // Linear interpolation in time; the first and last rows hold outside
@@ -46,17 +48,17 @@ private:
     int headerLine_ = 0;
     std::vector<std::string> names_;
     std::vector<double> times_;
-    std::vector<std::vector<double>> values_;  // [row][column]
+    std::vector<std::vector<double>> values_; // [row][column]
 };
 
 // Writes rows to a file, or to standard output when the path is empty;
 // each row is flushed as it is written.
-class CsvWriter
-{
+class CsvWriter {
 public:
-    explicit CsvWriter(const std::string& path);  // FileError if it cannot be created
+    explicit CsvWriter(
+        const std::string& path); // FileError if it cannot be created
     void row(const std::vector<std::string>& fields);
-    void finish();  // FileError if writing failed
+    void finish(); // FileError if writing failed
 
 private:
     std::string path_;
@@ -64,6 +66,6 @@ private:
     std::ostream* out_;
 };
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

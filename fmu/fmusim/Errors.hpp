@@ -6,45 +6,41 @@
 
 namespace fmusim {
 
-enum ExitCode
-{
+enum ExitCode {
     exitOk = 0,
-    exitCheckFailed = 1,  // `check` found at least one FAIL
-    exitUsage = 2,        // bad command line
-    exitLoad = 3,         // the FMU could not be loaded or instantiated
-    exitFile = 4,         // an input file is unreadable or malformed, or an output file cannot be written
-    exitSimulation = 5,   // an FMU call failed or the simulation broke down
-    exitTimeout = 6       // an FMU call did not return within --timeout
+    exitCheckFailed = 1, // `check` found at least one FAIL
+    exitUsage = 2, // bad command line
+    exitLoad = 3, // the FMU could not be loaded or instantiated
+    exitFile
+    = 4, // an input file is unreadable or malformed, or an output file cannot be written
+    exitSimulation = 5, // an FMU call failed or the simulation broke down
+    exitTimeout = 6 // an FMU call did not return within --timeout
 };
 
 // The command line is wrong.
-class UsageError : public std::runtime_error
-{
+class UsageError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
 // A file is unreadable or malformed (message: file:line: problem).
-class FileError : public std::runtime_error
-{
+class FileError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
 // The FMU could not be loaded or instantiated.
-class LoadError : public std::runtime_error
-{
+class LoadError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
 // The simulation could not go on.
-class SimulationError : public std::runtime_error
-{
+class SimulationError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -11,34 +11,31 @@
 
 namespace fmusim {
 
-struct BodyState
-{
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();            // position of the centre of mass [m]
-    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();  // orientation, body to global
-    Eigen::Vector3d v = Eigen::Vector3d::Zero();            // velocity [m/s]
-    Eigen::Vector3d omega = Eigen::Vector3d::Zero();        // angular velocity, global frame [rad/s]
+struct BodyState {
+    Eigen::Vector3d x
+        = Eigen::Vector3d::Zero(); // position of the centre of mass [m]
+    Eigen::Quaterniond q
+        = Eigen::Quaterniond::Identity(); // orientation, body to global
+    Eigen::Vector3d v = Eigen::Vector3d::Zero(); // velocity [m/s]
+    Eigen::Vector3d omega
+        = Eigen::Vector3d::Zero(); // angular velocity, global frame [rad/s]
 };
 
-enum class MotionKind
-{
-    free,
-    fixed,
-    sinusoidal,
-    world
-};
+enum class MotionKind { free, fixed, sinusoidal, world };
 
-struct Body
-{
+struct Body {
     MotionKind motion = MotionKind::free;
-    double mass = 1;                                        // [kg]
-    Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();  // about the centre of mass, body frame [kg.m2]
+    double mass = 1; // [kg]
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::
+        Identity(); // about the centre of mass, body frame [kg.m2]
     BodyState initial;
     // Sinusoidal motion: x = x0 + amplitude sin(2 pi f t + phase),
     // R = exp(rotationAmplitude sin(2 pi f t + phase)) R0.
-    Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();          // [m]
-    Eigen::Vector3d rotationAmplitude = Eigen::Vector3d::Zero();  // rotation vector [rad]
-    double frequency = 0;                                         // [Hz]
-    double phase = 0;                                             // [rad]
+    Eigen::Vector3d amplitude = Eigen::Vector3d::Zero(); // [m]
+    Eigen::Vector3d rotationAmplitude
+        = Eigen::Vector3d::Zero(); // rotation vector [rad]
+    double frequency = 0; // [Hz]
+    double phase = 0; // [rad]
 
     bool isFree() const { return motion == MotionKind::free; }
 };
@@ -59,16 +56,18 @@ Eigen::Quaterniond rotationFromVector(const Eigen::Vector3d& phi);
 // Semi-implicit (symplectic) Euler with the loads at the start of the step:
 // v1 = v0 + h (F/m + g), x1 = x0 + h v1; omega1 = omega0 + h alpha(q0,
 // omega0, M), q1 = exp(h omega1) q0.
-BodyState explicitStep(const Body& body, const BodyState& s0, const Loads& loads0, const Eigen::Vector3d& gravity,
+BodyState explicitStep(const Body& body, const BodyState& s0,
+                       const Loads& loads0, const Eigen::Vector3d& gravity,
                        double h);
 
 // Trapezoidal rule with the loads at both ends of the step:
 // v1 = v0 + h/2 (a0 + a1), x1 = x0 + h/2 (v0 + v1), omega likewise with the
 // angular accelerations, q1 = exp(h (omega0 + omega1)/2) q0; the
 // gyroscopic term at the end of the step is iterated to round-off.
-BodyState trapezoidalStep(const Body& body, const BodyState& s0, const Loads& loads0, const Loads& loads1,
+BodyState trapezoidalStep(const Body& body, const BodyState& s0,
+                          const Loads& loads0, const Loads& loads1,
                           const Eigen::Vector3d& gravity, double h);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -39,40 +39,42 @@ const char* runUsage()
 
 namespace {
 
-struct InputColumn
-{
+struct InputColumn {
     std::size_t column;
     const fmuImport::Variable* variable;
 };
 
-struct RunOptions
-{
+struct RunOptions {
     std::string fmuPath;
     std::optional<double> startTime, stopTime, stepSize;
     std::vector<Setting> settings;
     std::string inputFile, outputFile;
     std::optional<std::string> outputVariables;
     bool logging = false;
-    double timeout = 0;  // [s], 0: none
+    double timeout = 0; // [s], 0: none
 };
 
 RunOptions parseRunOptions(const std::vector<std::string>& arguments)
 {
     const Args args = parseArgs(arguments,
-                                {"start-time", "stop-time", "step-size", "set", "parameters", "input-file",
-                                 "output-file", "output-variables", "timeout"},
+                                {"start-time", "stop-time", "step-size", "set",
+                                 "parameters", "input-file", "output-file",
+                                 "output-variables", "timeout"},
                                 {"logging"});
-    if (args.positional.size() != 1) throw UsageError("run needs exactly one FMU file");
+    if (args.positional.size() != 1)
+        throw UsageError("run needs exactly one FMU file");
     RunOptions o;
     o.fmuPath = args.positional[0];
     o.startTime = args.number("start-time");
     o.stopTime = args.number("stop-time");
     o.stepSize = args.number("step-size");
-    if (o.stepSize && !(*o.stepSize > 0)) throw UsageError("--step-size must be positive");
-    if (const auto file = args.last("parameters")) o.settings = readSettingsFile(*file);
-    if (args.options.count("set"))
-    {
-        const std::vector<Setting> set = parseSetOptions(args.options.at("set"));
+    if (o.stepSize && !(*o.stepSize > 0))
+        throw UsageError("--step-size must be positive");
+    if (const auto file = args.last("parameters"))
+        o.settings = readSettingsFile(*file);
+    if (args.options.count("set")) {
+        const std::vector<Setting> set
+            = parseSetOptions(args.options.at("set"));
         o.settings.insert(o.settings.end(), set.begin(), set.end());
     }
     o.inputFile = args.last("input-file").value_or("");
@@ -83,72 +85,79 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments)
     return o;
 }
 
-std::vector<InputColumn> matchInputs(const fmuImport::Fmu& fmu, const InputTable& table)
+std::vector<InputColumn> matchInputs(const fmuImport::Fmu& fmu,
+                                     const InputTable& table)
 {
     std::vector<InputColumn> columns;
-    const std::string where = table.path() + ":" + std::to_string(table.headerLine()) + ": column '";
-    for (std::size_t i = 0; i < table.names().size(); ++i)
-    {
+    const std::string where = table.path() + ":"
+        + std::to_string(table.headerLine()) + ": column '";
+    for (std::size_t i = 0; i < table.names().size(); ++i) {
         const std::string& name = table.names()[i];
         if (!fmu.hasVariable(name))
-            throw FileError(where + name + "': FMU '" + fmu.path() + "' has no variable '" + name + "'");
+            throw FileError(where + name + "': FMU '" + fmu.path()
+                            + "' has no variable '" + name + "'");
         const fmuImport::Variable& v = fmu.variable(name);
         if (v.causality != fmuImport::Causality::input)
             throw FileError(where + name + "': the variable is not an input");
         if (v.type == fmuImport::Type::String)
-            throw FileError(where + name + "': String inputs cannot come from a table");
+            throw FileError(where + name
+                            + "': String inputs cannot come from a table");
         columns.push_back({i, &v});
     }
     return columns;
 }
 
-void setInputs(WatchedInstance& instance, const InputTable* table, const std::vector<InputColumn>& columns, double t)
+void setInputs(WatchedInstance& instance, const InputTable* table,
+               const std::vector<InputColumn>& columns, double t)
 {
     std::vector<unsigned int> realVrs, intVrs, boolVrs;
     std::vector<double> reals;
     std::vector<int> ints;
     std::vector<bool> bools;
-    for (const InputColumn& c : columns)
-    {
-        switch (c.variable->type)
-        {
-            case fmuImport::Type::Real:
-                realVrs.push_back(c.variable->valueReference);
-                reals.push_back(table->interpolate(c.column, t));
-                break;
-            case fmuImport::Type::Boolean:
-                boolVrs.push_back(c.variable->valueReference);
-                bools.push_back(table->previous(c.column, t) != 0);
-                break;
-            default:
-                intVrs.push_back(c.variable->valueReference);
-                ints.push_back(static_cast<int>(std::lround(table->previous(c.column, t))));
+    for (const InputColumn& c : columns) {
+        switch (c.variable->type) {
+        case fmuImport::Type::Real:
+            realVrs.push_back(c.variable->valueReference);
+            reals.push_back(table->interpolate(c.column, t));
+            break;
+        case fmuImport::Type::Boolean:
+            boolVrs.push_back(c.variable->valueReference);
+            bools.push_back(table->previous(c.column, t) != 0);
+            break;
+        default:
+            intVrs.push_back(c.variable->valueReference);
+            ints.push_back(
+                static_cast<int>(std::lround(table->previous(c.column, t))));
         }
     }
-    if (!realVrs.empty()) instance.setReal(realVrs, reals);
-    if (!intVrs.empty()) instance.setInteger(intVrs, ints);
-    if (!boolVrs.empty()) instance.setBoolean(boolVrs, bools);
+    if (!realVrs.empty())
+        instance.setReal(realVrs, reals);
+    if (!intVrs.empty())
+        instance.setInteger(intVrs, ints);
+    if (!boolVrs.empty())
+        instance.setBoolean(boolVrs, bools);
 }
 
-std::vector<const fmuImport::Variable*> outputVariables(const fmuImport::Fmu& fmu, const RunOptions& o)
+std::vector<const fmuImport::Variable*>
+outputVariables(const fmuImport::Fmu& fmu, const RunOptions& o)
 {
     std::vector<const fmuImport::Variable*> chosen;
-    if (!o.outputVariables)
-    {
+    if (!o.outputVariables) {
         for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-            if (v.causality == fmuImport::Causality::output) chosen.push_back(&v);
+            if (v.causality == fmuImport::Causality::output)
+                chosen.push_back(&v);
         return chosen;
     }
-    for (const std::string& name : splitNames(*o.outputVariables))
-    {
+    for (const std::string& name : splitNames(*o.outputVariables)) {
         if (!fmu.hasVariable(name))
-            throw UsageError("--output-variables: FMU '" + fmu.path() + "' has no variable '" + name + "'");
+            throw UsageError("--output-variables: FMU '" + fmu.path()
+                             + "' has no variable '" + name + "'");
         chosen.push_back(&fmu.variable(name));
     }
     return chosen;
 }
 
-}  // namespace
+} // namespace
 
 int runCommand(const std::vector<std::string>& arguments)
 {
@@ -157,51 +166,58 @@ int runCommand(const std::vector<std::string>& arguments)
     const fmuImport::Fmu fmu = loadFmu(o.fmuPath);
     const fmuImport::ModelDescription& md = fmu.modelDescription();
 
-    const double t0 = o.startTime.value_or(md.hasDefaultExperiment ? md.startTime : 0.0);
-    double t1 = o.stopTime.value_or(md.hasDefaultExperiment && md.stopTime > t0 ? md.stopTime : t0 + 1.0);
+    const double t0
+        = o.startTime.value_or(md.hasDefaultExperiment ? md.startTime : 0.0);
+    double t1 = o.stopTime.value_or(
+        md.hasDefaultExperiment && md.stopTime > t0 ? md.stopTime : t0 + 1.0);
     if (!(t1 > t0))
-        throw UsageError("the stop time " + formatNumber(t1) + " is not after the start time " + formatNumber(t0));
-    const double h = o.stepSize.value_or(md.hasDefaultExperiment && md.stepSize > 0 ? md.stepSize : (t1 - t0) / 500);
+        throw UsageError("the stop time " + formatNumber(t1)
+                         + " is not after the start time " + formatNumber(t0));
+    const double h = o.stepSize.value_or(
+        md.hasDefaultExperiment && md.stepSize > 0 ? md.stepSize
+                                                   : (t1 - t0) / 500);
     const long steps = static_cast<long>(std::ceil((t1 - t0) / h - 1e-9));
 
     std::optional<InputTable> table;
     std::vector<InputColumn> columns;
-    if (!o.inputFile.empty())
-    {
+    if (!o.inputFile.empty()) {
         table.emplace(o.inputFile);
         columns = matchInputs(fmu, *table);
     }
-    const std::vector<const fmuImport::Variable*> outputs = outputVariables(fmu, o);
+    const std::vector<const fmuImport::Variable*> outputs
+        = outputVariables(fmu, o);
 
     WatchedInstance instance = instantiate(fmu, md.modelIdentifier, o.logging);
     instance.setupExperiment(t0, true, t1);
     applySettings(fmu, instance, o.settings);
     instance.enterInitializationMode();
-    if (table) setInputs(instance, &*table, columns, t0);
+    if (table)
+        setInputs(instance, &*table, columns, t0);
     instance.exitInitializationMode();
 
     CsvWriter out(o.outputFile);
-    std::vector<std::string> header{"time"};
-    for (const fmuImport::Variable* v : outputs) header.push_back(csvField(v->name));
+    std::vector<std::string> header {"time"};
+    for (const fmuImport::Variable* v : outputs)
+        header.push_back(csvField(v->name));
     out.row(header);
 
     auto writeRow = [&](double t) {
-        std::vector<std::string> row{formatNumber(t)};
+        std::vector<std::string> row {formatNumber(t)};
         const std::vector<std::string> values = readValues(instance, outputs);
         row.insert(row.end(), values.begin(), values.end());
         out.row(row);
     };
     writeRow(t0);
-    for (long k = 0; k < steps; ++k)
-    {
+    for (long k = 0; k < steps; ++k) {
         const double t = t0 + k * h;
         const double next = k + 1 == steps ? t1 : t0 + (k + 1) * h;
-        if (table) setInputs(instance, &*table, columns, next);
-        if (!stepOrEnd(instance, t, next - t))
-        {
+        if (table)
+            setInputs(instance, &*table, columns, next);
+        if (!stepOrEnd(instance, t, next - t)) {
             // Outputs of the last successful time, if the FMU got past t
             const double reached = instance.lastSuccessfulTime();
-            if (reached > t) writeRow(reached);
+            if (reached > t)
+                writeRow(reached);
             break;
         }
         writeRow(next);
@@ -211,4 +227,4 @@ int runCommand(const std::vector<std::string>& arguments)
     return exitOk;
 }
 
-}  // namespace fmusim
+} // namespace fmusim

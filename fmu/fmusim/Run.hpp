@@ -15,6 +15,6 @@ const char* runUsage();
 // of Errors.hpp.
 int runCommand(const std::vector<std::string>& args);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -8,36 +8,35 @@ namespace fmusim {
 
 fmuImport::Fmu loadFmu(const std::string& path)
 {
-    try
-    {
+    try {
         return fmuImport::Fmu(path);
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
 }
 
 fmuImport::Logger stderrLogger(bool verbose)
 {
-    return [verbose](const std::string& instance, int status, const std::string& category, const std::string& message) {
-        static const char* const names[] = {"ok", "warning", "discard", "error", "fatal", "pending"};
-        if (status == 0 && !verbose) return;
-        std::cerr << "fmusim: [" << instance << "] " << (status >= 0 && status <= 5 ? names[status] : "?") << " "
+    return [verbose](const std::string& instance, int status,
+                     const std::string& category, const std::string& message) {
+        static const char* const names[]
+            = {"ok", "warning", "discard", "error", "fatal", "pending"};
+        if (status == 0 && !verbose)
+            return;
+        std::cerr << "fmusim: [" << instance << "] "
+                  << (status >= 0 && status <= 5 ? names[status] : "?") << " "
                   << category << ": " << message << '\n';
     };
 }
 
-WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn)
+WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name,
+                            bool loggingOn)
 {
-    try
-    {
+    try {
         return WatchedInstance(fmu, name, stderrLogger(loggingOn), loggingOn);
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
 }
 
-}  // namespace fmusim
+} // namespace fmusim

@@ -15,11 +15,12 @@ fmuImport::Fmu loadFmu(const std::string& path);
 
 // An instance whose log messages go to standard error, prefixed by the
 // status; loggingOn switches on the FMU's debug logging.
-WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name, bool loggingOn);
+WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name,
+                            bool loggingOn);
 
 // Logs to standard error everything but fmi2OK messages, unless verbose.
 fmuImport::Logger stderrLogger(bool verbose);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

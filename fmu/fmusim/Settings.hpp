@@ -12,11 +12,10 @@
 
 namespace fmusim {
 
-struct Setting
-{
+struct Setting {
     std::string name;
     std::string value;
-    std::string origin;  // "file:line", or "--set" for the command line
+    std::string origin; // "file:line", or "--set" for the command line
     bool fromFile = false;
 };
 
@@ -46,17 +45,21 @@ bool stepOrEnd(WatchedInstance& instance, double t, double h);
 // Unknown or unsettable variables and values of the wrong type throw
 // FileError (settings from a file) or UsageError (from --set), naming the
 // origin.
-void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance, const std::vector<Setting>& settings);
+void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance,
+                   const std::vector<Setting>& settings);
 
 // The current values of the variables, as text for CSV output. A NaN or
 // infinite Real throws SimulationError (nonFiniteMessage).
-std::vector<std::string> readValues(WatchedInstance& instance,
-                                    const std::vector<const fmuImport::Variable*>& variables);
+std::vector<std::string>
+readValues(WatchedInstance& instance,
+           const std::vector<const fmuImport::Variable*>& variables);
 
 // "FMU 'x.fmu', instance 'x': output 'y' is nan at t = 0.5, expected a
 // finite number"; what: "output 'y'" or "variable 'y'".
-std::string nonFiniteMessage(const WatchedInstance& instance, const std::string& what, double value, double time);
+std::string nonFiniteMessage(const WatchedInstance& instance,
+                             const std::string& what, double value,
+                             double time);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -73,15 +73,19 @@ void unpack(const LoadVector& l, Loads& a, Loads& b)
 std::vector<std::string> bodyColumns(const std::string& prefix)
 {
     std::vector<std::string> names;
-    for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz", "kineticEnergy"})
+    for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy",
+                          "vz", "wx", "wy", "wz", "kineticEnergy"})
         names.push_back(prefix + "." + c);
     return names;
 }
 
-void appendBody(std::vector<std::string>& row, const Body& body, const BodyState& s)
+void appendBody(std::vector<std::string>& row, const Body& body,
+                const BodyState& s)
 {
-    for (const double value : {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z(), s.v.x(), s.v.y(), s.v.z(),
-                               s.omega.x(), s.omega.y(), s.omega.z(), kineticEnergy(body, s)})
+    for (const double value :
+         {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z(),
+          s.v.x(), s.v.y(), s.v.z(), s.omega.x(), s.omega.y(), s.omega.z(),
+          kineticEnergy(body, s)})
         row.push_back(formatNumber(value));
 }
 
@@ -91,7 +95,8 @@ const std::vector<std::string>& loadNames()
     static const std::vector<std::string> names = [] {
         std::vector<std::string> all;
         for (const char* base : {"A.F", "A.M", "B.F", "B.M"})
-            for (const std::string& name : componentNames(base, Shape::vector)) all.push_back(name);
+            for (const std::string& name : componentNames(base, Shape::vector))
+                all.push_back(name);
         return all;
     }();
     return names;
@@ -99,65 +104,70 @@ const std::vector<std::string>& loadNames()
 
 bool finite(const BodyState& s)
 {
-    return s.x.allFinite() && s.v.allFinite() && s.omega.allFinite() && s.q.coeffs().allFinite();
+    return s.x.allFinite() && s.v.allFinite() && s.omega.allFinite()
+        && s.q.coeffs().allFinite();
 }
 
-class Simulation
-{
+class Simulation {
 public:
-    Simulation(const TwoBodyConfig& config, const fmuImport::Fmu& fmu, const Connector& connector)
-        : c_(config),
-          fmu_(fmu),
-          connector_(connector),
+    Simulation(const TwoBodyConfig& config, const fmuImport::Fmu& fmu,
+               const Connector& connector)
+        : c_(config), fmu_(fmu), connector_(connector),
           instance_(instantiate(fmu, "twobody", config.logging)),
           out_(config.outputFile)
     {
         for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-            if (v.causality == fmuImport::Causality::output) outputs_.push_back(&v);
+            if (v.causality == fmuImport::Causality::output)
+                outputs_.push_back(&v);
     }
 
     void run()
     {
         const auto wallStart = std::chrono::steady_clock::now();
         initialize();
-        const long steps = static_cast<long>(std::ceil((c_.stopTime - c_.startTime) / c_.stepSize - 1e-9));
+        const long steps = static_cast<long>(
+            std::ceil((c_.stopTime - c_.startTime) / c_.stepSize - 1e-9));
         long n = 0;
-        for (; n < steps; ++n)
-        {
+        for (; n < steps; ++n) {
             const double t = c_.startTime + n * c_.stepSize;
-            const double next = n + 1 == steps ? c_.stopTime : c_.startTime + (n + 1) * c_.stepSize;
-            try
-            {
+            const double next = n + 1 == steps
+                ? c_.stopTime
+                : c_.startTime + (n + 1) * c_.stepSize;
+            try {
                 if (c_.scheme == Scheme::explicitEuler)
                     explicitStep(t, next - t);
                 else
                     implicitStep(t, next - t);
-            }
-            catch (const SimulationEnded&)
-            {
-                break;  // the rows end at the last step written
+            } catch (const SimulationEnded&) {
+                break; // the rows end at the last step written
             }
             if (!finite(a_) || !finite(b_))
-                throw SimulationError("the state of a body is not finite at t = " + formatNumber(next));
-            if ((n + 1) % c_.writeEvery == 0 || n + 1 == steps) write(next);
+                throw SimulationError(
+                    "the state of a body is not finite at t = "
+                    + formatNumber(next));
+            if ((n + 1) % c_.writeEvery == 0 || n + 1 == steps)
+                write(next);
         }
         instance_.terminate();
         out_.finish();
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-        std::cerr << "fmusim twobody: " << n << " steps, " << doSteps_ << " fmi2DoStep calls ("
-                  << static_cast<double>(doSteps_) / std::max(n, 1L) << " per step), " << wall << " s\n";
+        const double wall = std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - wallStart)
+                                .count();
+        std::cerr << "fmusim twobody: " << n << " steps, " << doSteps_
+                  << " fmi2DoStep calls ("
+                  << static_cast<double>(doSteps_) / std::max(n, 1L)
+                  << " per step), " << wall << " s\n";
     }
 
 private:
     // Thrown by evaluate when the FMU asks to end the simulation
-    struct SimulationEnded
-    {
-    };
+    struct SimulationEnded { };
 
-    BodyState advance(const Body& body, const BodyState& s0, const Loads& l0, const Loads* l1, double t1,
-                      double h) const
+    BodyState advance(const Body& body, const BodyState& s0, const Loads& l0,
+                      const Loads* l1, double t1, double h) const
     {
-        if (!body.isFree()) return prescribedState(body, t1);
+        if (!body.isFree())
+            return prescribedState(body, t1);
         return l1 ? trapezoidalStep(body, s0, l0, *l1, c_.gravity, h)
                   : fmusim::explicitStep(body, s0, l0, c_.gravity, h);
     }
@@ -169,16 +179,21 @@ private:
         instance_.setupExperiment(c_.startTime, true, c_.stopTime);
         applySettings(fmu_, instance_, c_.fmuSettings);
         instance_.enterInitializationMode();
-        connector_.setMassProperties(instance_, massPropertiesOf(c_.A), massPropertiesOf(c_.B));
+        connector_.setMassProperties(instance_, massPropertiesOf(c_.A),
+                                     massPropertiesOf(c_.B));
         connector_.setKinematics(instance_, kinematicsOf(a_), kinematicsOf(b_));
         instance_.exitInitializationMode();
         connector_.getLoads(instance_, loadsA_, loadsB_);
         loadScale_ = pack(loadsA_, loadsB_).norm();
-        std::vector<std::string> header{"time"};
-        for (const std::string& n : bodyColumns("A")) header.push_back(n);
-        for (const std::string& n : bodyColumns("B")) header.push_back(n);
-        for (const fmuImport::Variable* v : outputs_) header.push_back(csvField(v->name));
-        if (c_.scheme == Scheme::implicitTrapezoidal) header.push_back("couplingIterations");
+        std::vector<std::string> header {"time"};
+        for (const std::string& n : bodyColumns("A"))
+            header.push_back(n);
+        for (const std::string& n : bodyColumns("B"))
+            header.push_back(n);
+        for (const fmuImport::Variable* v : outputs_)
+            header.push_back(csvField(v->name));
+        if (c_.scheme == Scheme::implicitTrapezoidal)
+            header.push_back("couplingIterations");
         out_.row(header);
         write(c_.startTime);
     }
@@ -186,17 +201,21 @@ private:
     // Sets the kinematics at t + h, steps the FMU from t, reads the loads;
     // a non-finite load stops the run (SimulationError) before it moves a
     // body or reaches the output.
-    LoadVector evaluate(const BodyState& a1, const BodyState& b1, double t, double h)
+    LoadVector evaluate(const BodyState& a1, const BodyState& b1, double t,
+                        double h)
     {
         connector_.setKinematics(instance_, kinematicsOf(a1), kinematicsOf(b1));
         ++doSteps_;
-        if (!stepOrEnd(instance_, t, h)) throw SimulationEnded();
+        if (!stepOrEnd(instance_, t, h))
+            throw SimulationEnded();
         Loads la, lb;
         connector_.getLoads(instance_, la, lb);
         const LoadVector loads = pack(la, lb);
         for (int i = 0; i < loads.size(); ++i)
             if (!std::isfinite(loads[i]))
-                throw SimulationError(nonFiniteMessage(instance_, "output '" + loadNames()[i] + "'", loads[i], t + h));
+                throw SimulationError(nonFiniteMessage(
+                    instance_, "output '" + loadNames()[i] + "'", loads[i],
+                    t + h));
         return loads;
     }
 
@@ -212,23 +231,25 @@ private:
         const WatchedInstance::State start = instance_.getState();
         const LoadVector l0 = pack(loadsA_, loadsB_);
         // First guess: linear extrapolation of the loads of the last two steps.
-        LoadVector guess = havePrevious_ ? LoadVector(2 * l0 - previousLoads_) : l0;
-        LoadVector residual = LoadVector::Zero(), lastResidual = LoadVector::Zero();
+        LoadVector guess
+            = havePrevious_ ? LoadVector(2 * l0 - previousLoads_) : l0;
+        LoadVector residual = LoadVector::Zero(),
+                   lastResidual = LoadVector::Zero();
         double relaxation = c_.initialRelaxation;
-        for (iterations_ = 1; iterations_ <= c_.maxCouplingIterations; ++iterations_)
-        {
+        for (iterations_ = 1; iterations_ <= c_.maxCouplingIterations;
+             ++iterations_) {
             Loads ga, gb;
             unpack(guess, ga, gb);
             const BodyState a1 = advance(c_.A, a_, loadsA_, &ga, t + h, h);
             const BodyState b1 = advance(c_.B, b_, loadsB_, &gb, t + h, h);
-            if (iterations_ > 1) instance_.setState(start);
+            if (iterations_ > 1)
+                instance_.setState(start);
             const LoadVector l1 = evaluate(a1, b1, t, h);
             residual = l1 - guess;
             // Relative to this step's loads: a diverging iterate must not
             // loosen the test for the rest of the run.
             loadScale_ = std::max(l0.norm(), l1.norm());
-            if (residual.norm() <= c_.couplingTolerance * loadScale_)
-            {
+            if (residual.norm() <= c_.couplingTolerance * loadScale_) {
                 a_ = a1;
                 b_ = b1;
                 previousLoads_ = l0;
@@ -236,23 +257,25 @@ private:
                 unpack(l1, loadsA_, loadsB_);
                 return;
             }
-            if (iterations_ > 1)
-            {
+            if (iterations_ > 1) {
                 const LoadVector change = residual - lastResidual;
                 if (change.squaredNorm() > 0)
-                    relaxation = -relaxation * lastResidual.dot(change) / change.squaredNorm();
+                    relaxation = -relaxation * lastResidual.dot(change)
+                        / change.squaredNorm();
             }
             guess += relaxation * residual;
             lastResidual = residual;
         }
-        throw SimulationError("the implicit coupling did not converge at t = " + formatNumber(t) + " after " +
-                              std::to_string(c_.maxCouplingIterations) + " iterations (load change " +
-                              formatNumber(residual.norm()) + ", largest loads " + formatNumber(loadScale_) + ")");
+        throw SimulationError(
+            "the implicit coupling did not converge at t = " + formatNumber(t)
+            + " after " + std::to_string(c_.maxCouplingIterations)
+            + " iterations (load change " + formatNumber(residual.norm())
+            + ", largest loads " + formatNumber(loadScale_) + ")");
     }
 
     void write(double t)
     {
-        std::vector<std::string> row{formatNumber(t)};
+        std::vector<std::string> row {formatNumber(t)};
         appendBody(row, c_.A, a_);
         appendBody(row, c_.B, b_);
         const std::vector<std::string> values = readValues(instance_, outputs_);
@@ -277,7 +300,7 @@ private:
     long doSteps_ = 0;
 };
 
-}  // namespace
+} // namespace
 
 int twoBodyCommand(const std::vector<std::string>& args)
 {
@@ -286,22 +309,26 @@ int twoBodyCommand(const std::vector<std::string>& args)
     const fmuImport::Fmu fmu = loadFmu(config.fmuPath);
     const Connector connector(fmu);
     const std::vector<std::string> missing = connector.missingRequired();
-    if (!missing.empty())
-    {
+    if (!missing.empty()) {
         std::string list;
-        for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
-        throw LoadError("FMU '" + fmu.path() + "' is not a connector: it does not declare " + list);
+        for (const std::string& m : missing)
+            list += (list.empty() ? "" : ", ") + m;
+        throw LoadError("FMU '" + fmu.path()
+                        + "' is not a connector: it does not declare " + list);
     }
-    if (!connector.twoBody())
-    {
+    if (!connector.twoBody()) {
         if (config.bMotionGiven && config.B.motion != MotionKind::world)
-            throw UsageError("B.motion: FMU '" + fmu.path() + "' declares no B. inputs, so body B is the world");
+            throw UsageError(
+                "B.motion: FMU '" + fmu.path()
+                + "' declares no B. inputs, so body B is the world");
         config.B.motion = MotionKind::world;
     }
-    if (config.scheme == Scheme::implicitTrapezoidal && !fmu.modelDescription().canGetAndSetFMUstate)
-        throw UsageError("scheme implicit: FMU '" + fmu.path() + "' cannot get and set its state");
+    if (config.scheme == Scheme::implicitTrapezoidal
+        && !fmu.modelDescription().canGetAndSetFMUstate)
+        throw UsageError("scheme implicit: FMU '" + fmu.path()
+                         + "' cannot get and set its state");
     Simulation(config, fmu, connector).run();
     return exitOk;
 }
 
-}  // namespace fmusim
+} // namespace fmusim

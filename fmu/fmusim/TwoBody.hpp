@@ -13,6 +13,6 @@ const char* twoBodyUsage();
 // classes of Errors.hpp.
 int twoBodyCommand(const std::vector<std::string>& args);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -12,28 +12,26 @@
 
 namespace fmusim {
 
-enum class Scheme
-{
-    explicitEuler,
-    implicitTrapezoidal
-};
+enum class Scheme { explicitEuler, implicitTrapezoidal };
 
-struct TwoBodyConfig
-{
+struct TwoBodyConfig {
     std::string fmuPath;
-    double startTime = 0, stopTime = 10, stepSize = 1e-3;  // [s]
+    double startTime = 0, stopTime = 10, stepSize = 1e-3; // [s]
     Scheme scheme = Scheme::explicitEuler;
-    Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // [m/s2]
+    Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); // [m/s2]
     Body A, B;
-    bool bMotionGiven = false;         // else B is free for a two-body connector, the world otherwise
-    std::string outputFile;            // empty: standard output
-    int writeEvery = 1;                // write every n-th step
-    double couplingTolerance = 1e-10;  // implicit: relative change of the loads
+    bool bMotionGiven
+        = false; // else B is free for a two-body connector, the world otherwise
+    std::string outputFile; // empty: standard output
+    int writeEvery = 1; // write every n-th step
+    double couplingTolerance = 1e-10; // implicit: relative change of the loads
     int maxCouplingIterations = 50;
-    double initialRelaxation = 0.5;    // implicit: first Aitken factor of each step
-    std::vector<Setting> fmuSettings;  // --set, --parameters
+    double initialRelaxation
+        = 0.5; // implicit: first Aitken factor of each step
+    std::vector<Setting> fmuSettings; // --set, --parameters
     bool logging = false;
-    double timeout = 0;  // the longest one call into the FMU may take [s], 0: no limit
+    double timeout
+        = 0; // the longest one call into the FMU may take [s], 0: no limit
 };
 
 // The configuration keys, for the help text and the option parser.
@@ -42,6 +40,6 @@ const std::vector<std::string>& twoBodyKeys();
 // args: everything after "twobody".
 TwoBodyConfig parseTwoBodyConfig(const std::vector<std::string>& args);
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -19,8 +19,7 @@ namespace fmusim {
 
 // What a message about a call names: the FMU file and the instance, and the
 // directory the FMU is unpacked in (removed on a time-out).
-struct CallSite
-{
+struct CallSite {
     std::string fmuPath;
     std::string instanceName;
     std::string unpackDirectory;
@@ -36,8 +35,7 @@ void installCrashReport();
 // Announces a call from construction to destruction. The site and the
 // function name must outlive it; calls do not nest. Cheap: two atomic
 // increments and three atomic stores, no system call.
-class FmuCall
-{
+class FmuCall {
 public:
     // time: the communication point (NaN when there is none yet)
     FmuCall(const CallSite& site, const char* function, double time);
@@ -46,6 +44,6 @@ public:
     FmuCall& operator=(const FmuCall&) = delete;
 };
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -15,14 +15,14 @@
 
 namespace fmusim {
 
-class WatchedInstance
-{
+class WatchedInstance {
 public:
     using State = fmuImport::Instance::State;
 
     // fmi2Instantiate; throws fmuImport::Error as fmuImport::Instance does.
-    WatchedInstance(const fmuImport::Fmu& fmu, const std::string& name, fmuImport::Logger logger, bool loggingOn);
-    ~WatchedInstance();  // fmi2FreeInstance (unless a saved State still holds the instance)
+    WatchedInstance(const fmuImport::Fmu& fmu, const std::string& name,
+                    fmuImport::Logger logger, bool loggingOn);
+    ~WatchedInstance(); // fmi2FreeInstance (unless a saved State still holds the instance)
     WatchedInstance(WatchedInstance&&) noexcept = default;
     WatchedInstance& operator=(WatchedInstance&&) noexcept = default;
 
@@ -30,24 +30,30 @@ public:
     const std::string& fmuPath() const { return site_->fmuPath; }
     double time() const { return instance_->time(); }
 
-    void setupExperiment(double startTime, bool stopTimeDefined = false, double stopTime = 0);
+    void setupExperiment(double startTime, bool stopTimeDefined = false,
+                         double stopTime = 0);
     void enterInitializationMode();
     void exitInitializationMode();
     void terminate();
 
-    void setReal(const std::vector<unsigned int>& vrs, const std::vector<double>& values);
+    void setReal(const std::vector<unsigned int>& vrs,
+                 const std::vector<double>& values);
     std::vector<double> getReal(const std::vector<unsigned int>& vrs);
-    void setInteger(const std::vector<unsigned int>& vrs, const std::vector<int>& values);
+    void setInteger(const std::vector<unsigned int>& vrs,
+                    const std::vector<int>& values);
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs);
-    void setBoolean(const std::vector<unsigned int>& vrs, const std::vector<bool>& values);
+    void setBoolean(const std::vector<unsigned int>& vrs,
+                    const std::vector<bool>& values);
     std::vector<bool> getBoolean(const std::vector<unsigned int>& vrs);
-    void setString(const std::vector<unsigned int>& vrs, const std::vector<std::string>& values);
+    void setString(const std::vector<unsigned int>& vrs,
+                   const std::vector<std::string>& values);
     std::vector<std::string> getString(const std::vector<unsigned int>& vrs);
 
     void doStep(double currentTime, double stepSize);
     // fmuImport::Instance::tryDoStep: a discarded or terminated step is a
     // result, not an error
-    fmuImport::Instance::StepResult tryDoStep(double currentTime, double stepSize);
+    fmuImport::Instance::StepResult tryDoStep(double currentTime,
+                                              double stepSize);
     double lastSuccessfulTime();
     std::string lastMessage() const { return instance_->lastMessage(); }
 
@@ -62,6 +68,6 @@ private:
     std::unique_ptr<fmuImport::Instance> instance_;
 };
 
-}  // namespace fmusim
+} // namespace fmusim
 
 #endif

@@ -15,17 +15,17 @@
 
 namespace {
 
-const char* const exitCodes =
-    "Exit codes:\n"
-    "  0  success\n"
-    "  1  check: at least one check failed\n"
-    "  2  usage error: unknown subcommand or option, missing or malformed value\n"
-    "  3  the FMU could not be loaded or instantiated\n"
-    "  4  bad file: input table, parameter or configuration file unreadable or\n"
-    "     malformed, or naming an unknown variable; output file not writable\n"
-    "  5  simulation error: an FMU call failed, an output became NaN or infinite,\n"
-    "     the coupling did not converge or a body state became non-finite\n"
-    "  6  time-out: a call into the FMU did not return within --timeout seconds\n";
+const char* const exitCodes
+    = "Exit codes:\n"
+      "  0  success\n"
+      "  1  check: at least one check failed\n"
+      "  2  usage error: unknown subcommand or option, missing or malformed value\n"
+      "  3  the FMU could not be loaded or instantiated\n"
+      "  4  bad file: input table, parameter or configuration file unreadable or\n"
+      "     malformed, or naming an unknown variable; output file not writable\n"
+      "  5  simulation error: an FMU call failed, an output became NaN or infinite,\n"
+      "     the coupling did not converge or a body state became non-finite\n"
+      "  6  time-out: a call into the FMU did not return within --timeout seconds\n";
 
 void printHelp(std::ostream& out)
 {
@@ -39,67 +39,65 @@ void printHelp(std::ostream& out)
 bool wantsHelp(const std::vector<std::string>& args)
 {
     for (const std::string& a : args)
-        if (a == "--help" || a == "-h") return true;
+        if (a == "--help" || a == "-h")
+            return true;
     return false;
 }
 
 int dispatch(const std::string& command, const std::vector<std::string>& args)
 {
-    if (command == "run")
-    {
-        if (wantsHelp(args)) return std::cout << fmusim::runUsage() << '\n' << exitCodes, fmusim::exitOk;
+    if (command == "run") {
+        if (wantsHelp(args))
+            return std::cout << fmusim::runUsage() << '\n'
+                             << exitCodes,
+                   fmusim::exitOk;
         return fmusim::runCommand(args);
     }
-    if (command == "check")
-    {
-        if (wantsHelp(args)) return std::cout << fmusim::checkUsage() << '\n' << exitCodes, fmusim::exitOk;
+    if (command == "check") {
+        if (wantsHelp(args))
+            return std::cout << fmusim::checkUsage() << '\n'
+                             << exitCodes,
+                   fmusim::exitOk;
         return fmusim::checkCommand(args);
     }
-    if (command == "twobody")
-    {
-        if (wantsHelp(args)) return std::cout << fmusim::twoBodyUsage() << '\n' << exitCodes, fmusim::exitOk;
+    if (command == "twobody") {
+        if (wantsHelp(args))
+            return std::cout << fmusim::twoBodyUsage() << '\n'
+                             << exitCodes,
+                   fmusim::exitOk;
         return fmusim::twoBodyCommand(args);
     }
-    throw fmusim::UsageError("unknown subcommand '" + command + "' (run, check or twobody)");
+    throw fmusim::UsageError("unknown subcommand '" + command
+                             + "' (run, check or twobody)");
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv)
 {
     fmusim::installCrashReport();
     const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
-    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
-    {
+    if (argc < 2 || !std::strcmp(argv[1], "--help")
+        || !std::strcmp(argv[1], "-h")) {
         printHelp(argc < 2 ? std::cerr : std::cout);
         return argc < 2 ? fmusim::exitUsage : fmusim::exitOk;
     }
-    try
-    {
+    try {
         return dispatch(argv[1], args);
-    }
-    catch (const fmusim::UsageError& e)
-    {
-        std::cerr << "fmusim: usage error: " << e.what() << "\n(fmusim --help lists the options)\n";
+    } catch (const fmusim::UsageError& e) {
+        std::cerr << "fmusim: usage error: " << e.what()
+                  << "\n(fmusim --help lists the options)\n";
         return fmusim::exitUsage;
-    }
-    catch (const fmusim::LoadError& e)
-    {
+    } catch (const fmusim::LoadError& e) {
         std::cerr << "fmusim: cannot load the FMU: " << e.what() << '\n';
         return fmusim::exitLoad;
-    }
-    catch (const fmusim::FileError& e)
-    {
+    } catch (const fmusim::FileError& e) {
         std::cerr << "fmusim: bad file: " << e.what() << '\n';
         return fmusim::exitFile;
-    }
-    catch (const fmusim::SimulationError& e)
-    {
+    } catch (const fmusim::SimulationError& e) {
         std::cerr << "fmusim: simulation error: " << e.what() << '\n';
         return fmusim::exitSimulation;
-    }
-    catch (const std::exception& e)
-    {
+    } catch (const std::exception& e) {
         // fmuImport::Error after loading: an FMU call failed.
         std::cerr << "fmusim: simulation error: " << e.what() << '\n';
         return fmusim::exitSimulation;

@@ -55,7 +55,7 @@ std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
 }
 
 class HingeModel final : public fmuExport::Model {
-  public:
+public:
     HingeModel();
 
     void checkParameters(const double* values) const override
@@ -65,7 +65,7 @@ class HingeModel final : public fmuExport::Model {
 
     void computeOutputs(double* values) const override;
 
-  private:
+private:
     connectors::HingeParameters parameters(const double* values) const;
     void declareOutputs();
 
@@ -116,20 +116,20 @@ HingeModel::HingeModel()
                              "translational penalty stiffness, >= 0", {1e5});
     damping_ = t.parameter("damping", Shape::scalar, "N.s/m",
                            "translational penalty damping, >= 0", {100.0});
-    rotationalStiffness_ =
-        t.parameter("rotationalStiffness", Shape::scalar, "N.m/rad",
-                    "axis alignment penalty stiffness, >= 0", {1e3});
-    rotationalDamping_ =
-        t.parameter("rotationalDamping", Shape::scalar, "N.m.s/rad",
-                    "axis alignment penalty damping, >= 0", {1.0});
-    ptoStiffness_ =
-        t.parameter("ptoStiffness", Shape::scalar, "N.m/rad",
-                    "PTO rotary stiffness about the axis, >= 0", {0.0});
+    rotationalStiffness_
+        = t.parameter("rotationalStiffness", Shape::scalar, "N.m/rad",
+                      "axis alignment penalty stiffness, >= 0", {1e3});
+    rotationalDamping_
+        = t.parameter("rotationalDamping", Shape::scalar, "N.m.s/rad",
+                      "axis alignment penalty damping, >= 0", {1.0});
+    ptoStiffness_
+        = t.parameter("ptoStiffness", Shape::scalar, "N.m/rad",
+                      "PTO rotary stiffness about the axis, >= 0", {0.0});
     ptoDamping_ = t.parameter("ptoDamping", Shape::scalar, "N.m.s/rad",
                               "PTO rotary damping about the axis, >= 0", {0.0});
-    ptoRestAngle_ =
-        t.parameter("ptoRestAngle", Shape::scalar, "rad",
-                    "angle at which the PTO spring is unloaded", {0.0});
+    ptoRestAngle_
+        = t.parameter("ptoRestAngle", Shape::scalar, "rad",
+                      "angle at which the PTO spring is unloaded", {0.0});
     A_ = fmuExport::declareBodyInputs(t, "A", {0, 0, 0});
     B_ = fmuExport::declareBodyInputs(t, "B", {0, 0, 0});
     // Both bodies at the origin with the default hinge points: no load
@@ -144,22 +144,22 @@ void HingeModel::declareOutputs()
 {
     fmuExport::VariableTable& t = table();
     const std::vector<Block> points = {A_p_, B_p_, A_.r, A_.R, B_.r, B_.R};
-    const std::vector<Block> pointMotion =
-        join(points, {A_.v, A_.omega, B_.v, B_.omega});
+    const std::vector<Block> pointMotion
+        = join(points, {A_.v, A_.omega, B_.v, B_.omega});
     const std::vector<Block> orientations = {A_.R, B_.R, A_axis_, B_axis_};
     const std::vector<Block> angle = join(orientations, {A_ref_, B_ref_});
     const std::vector<Block> angleRate = {A_.R, A_axis_, A_.omega, B_.omega};
     const std::vector<Block> pto = join(
         join(angle, angleRate), {ptoStiffness_, ptoDamping_, ptoRestAngle_});
-    const std::vector<Block> loads =
-        join(join(pointMotion, pto),
-             {stiffness_, damping_, rotationalStiffness_, rotationalDamping_});
-    const std::vector<Block> energy =
-        join(join(points, angle),
-             {stiffness_, rotationalStiffness_, ptoStiffness_, ptoRestAngle_});
-    const std::vector<Block> dissipation =
-        join(join(pointMotion, angleRate),
-             {damping_, rotationalDamping_, ptoDamping_});
+    const std::vector<Block> loads = join(
+        join(pointMotion, pto),
+        {stiffness_, damping_, rotationalStiffness_, rotationalDamping_});
+    const std::vector<Block> energy = join(
+        join(points, angle),
+        {stiffness_, rotationalStiffness_, ptoStiffness_, ptoRestAngle_});
+    const std::vector<Block> dissipation
+        = join(join(pointMotion, angleRate),
+               {damping_, rotationalDamping_, ptoDamping_});
 
     firstOutput_ = t.output("A.F", Shape::vector3, "N",
                             "force of the hinge on A, global frame", loads);
@@ -226,19 +226,19 @@ void HingeModel::computeOutputs(double* values) const
 {
     const connectors::Hinge law(parameters(values));
     const connectors::HingeResult h = law.evaluate(
-        fmuExport::bodyKinematics(values, A_), fmuExport::bodyKinematics(values, B_),
-        values[angle_.first]);
+        fmuExport::bodyKinematics(values, A_),
+        fmuExport::bodyKinematics(values, B_), values[angle_.first]);
     const connectors::ConnectorResult& r = h.loads;
-    const double out[] = {
-        r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-        r.A.m_Bo_W[1],     r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
-        r.B.f_W[2],        r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
-        r.length,          r.lengthRate,  r.tension,     r.potentialEnergy,
-        r.dissipatedPower, h.angle,       h.angleRate,   h.gap,
-        h.misalignment,    h.ptoTorque,   h.ptoPower};
+    const double out[]
+        = {r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+           r.A.m_Bo_W[1],     r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+           r.B.f_W[2],        r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+           r.length,          r.lengthRate,  r.tension,     r.potentialEnergy,
+           r.dissipatedPower, h.angle,       h.angleRate,   h.gap,
+           h.misalignment,    h.ptoTorque,   h.ptoPower};
     const std::size_t n = sizeof out / sizeof out[0];
-    const std::vector<fmuExport::ScalarVariable>& variables =
-        this->variables().variables();
+    const std::vector<fmuExport::ScalarVariable>& variables
+        = this->variables().variables();
     for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(out[i])) {
             throw std::range_error(

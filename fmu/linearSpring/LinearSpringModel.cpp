@@ -37,9 +37,9 @@ public:
                                        "spring stiffness k, >= 0", {1000.0});
         restLength_ = table().parameter("restLength", Shape::scalar, "m",
                                         "rest length L0, >= 0", {1.0});
-        damping_ =
-            table().parameter("damping", Shape::scalar, "N.s/m",
-                              "axial damping coefficient c, >= 0", {0.0});
+        damping_
+            = table().parameter("damping", Shape::scalar, "N.s/m",
+                                "axial damping coefficient c, >= 0", {0.0});
         const std::vector<Block> positions = positionBlocks();
         const std::vector<Block> motion = join(positions, velocityBlocks());
         OutputDependencies d;

@@ -60,22 +60,27 @@ struct Scalar {
 const Scalar scalars[] = {
     {"unstretchedLength", "m", "unstretched length L, > 0", 1.5},
     {"EA", "N", "axial stiffness, > 0", 1e4},
-    {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0", 10.0},
+    {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
+     10.0},
     {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5},
-    {"diameter", "m", "volume-equivalent diameter (buoyancy, drag, added mass), >= 0",
-     0.01},
+    {"diameter", "m",
+     "volume-equivalent diameter (buoyancy, drag, added mass), >= 0", 0.01},
     {"waterDensity", "kg/m3", "water density, >= 0", 1025.0},
     {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81},
     {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2},
     {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05},
-    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0", 1.0},
-    {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0", 0.0},
+    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0",
+     1.0},
+    {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0",
+     0.0},
     {"seabedContact", "1",
      "1: B.p is an anchor on the seabed (the horizontal plane through it); 0: no "
      "seabed",
      0.0},
-    {"seabedStiffness", "Pa/m", "seabed penalty stiffness per contact area, >= 0", 3e6},
-    {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0", 3e5},
+    {"seabedStiffness", "Pa/m",
+     "seabed penalty stiffness per contact area, >= 0", 3e6},
+    {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
+     3e5},
     {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},
     {"relativeTolerance", "1", "CVODE relative tolerance, > 0", 1e-6},
     {"absoluteTolerance", "1", "CVODE absolute tolerance (m, m/s), > 0", 1e-6},
@@ -124,17 +129,17 @@ MooringLineModel::MooringLineModel()
     fmuExport::VariableTable& t = table();
     lineFmu::declareAttachments(t, v_);
     for (const Scalar& s : scalars) {
-        const Block b = t.parameter(s.name, Shape::scalar, s.unit, s.description,
-                                    {s.start});
+        const Block b = t.parameter(s.name, Shape::scalar, s.unit,
+                                    s.description, {s.start});
         if (&s == scalars) {
             first_ = b;
         }
     }
     lineFmu::declareBodies(t, v_, {1, 0, 0});
     const std::vector<Block> positions = lineFmu::positionBlocks(v_);
-    const std::vector<Block> motion =
-        lineFmu::join(positions, lineFmu::velocityBlocks(v_));
-    const Block all{first_.first, scalarCount};
+    const std::vector<Block> motion
+        = lineFmu::join(positions, lineFmu::velocityBlocks(v_));
+    const Block all {first_.first, scalarCount};
     lineFmu::LineDependencies d;
     d.loads = lineFmu::join(motion, {all});
     d.length = positions;
@@ -152,14 +157,17 @@ MooringLineModel::parameters(const double* values) const
         if (value != 0.0 && value != 1.0) {
             throw connectors::ConnectorError(
                 std::string("mooringLine: parameter ") + name + " = "
-                + connectors::formatValue(value) + " is out of range (allowed: 0 or 1)");
+                + connectors::formatValue(value)
+                + " is out of range (allowed: 0 or 1)");
         }
         return value == 1.0;
     };
     const double segments = s[14];
-    if (!(segments >= 2.0 && segments <= 1000.0 && segments == std::floor(segments))) {
+    if (!(segments >= 2.0 && segments <= 1000.0
+          && segments == std::floor(segments))) {
         throw connectors::ConnectorError(
-            "mooringLine: parameter segments = " + connectors::formatValue(segments)
+            "mooringLine: parameter segments = "
+            + connectors::formatValue(segments)
             + " is out of range (allowed: an integer from 2 to 1000)");
     }
     connectors::MooringLineParameters p;
@@ -224,8 +232,9 @@ void MooringLineModel::computeOutputs(double* values) const
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     const connectors::MooringLine law(parameters(values));
-    write(values, law.evaluate(law.initialState(A, B, 0.0), A, B,
-                               lineFmu::shapePoints));
+    write(
+        values,
+        law.evaluate(law.initialState(A, B, 0.0), A, B, lineFmu::shapePoints));
 }
 
 void MooringLineModel::initializeState(const double* values, double time)
@@ -252,7 +261,7 @@ void MooringLineModel::doStep(double* values, double, double h)
 
 std::vector<double> MooringLineModel::internalState() const
 {
-    return state_ ? state_->serialize() : std::vector<double>{};
+    return state_ ? state_->serialize() : std::vector<double> {};
 }
 
 void MooringLineModel::setInternalState(const double* values,
@@ -263,8 +272,8 @@ void MooringLineModel::setInternalState(const double* values,
         return;
     }
     connectors::MooringLine& law = line(values);
-    state_ = connectors::MooringLineState::deserialize(state,
-                                                       law.parameters().segments);
+    state_ = connectors::MooringLineState::deserialize(
+        state, law.parameters().segments);
 }
 
 } // namespace

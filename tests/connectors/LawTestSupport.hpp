@@ -51,7 +51,7 @@ inline double powerIntoBodies(const ConnectorResult& r, const BodyKinematics& A,
                               const BodyKinematics& B)
 {
     return r.A.f_W.dot(A.v_WBo_W) + r.A.m_Bo_W.dot(A.w_WB_W)
-           + r.B.f_W.dot(B.v_WBo_W) + r.B.m_Bo_W.dot(B.w_WB_W);
+        + r.B.f_W.dot(B.v_WBo_W) + r.B.m_Bo_W.dot(B.w_WB_W);
 }
 
 //- Total moment of the loads on A and B about the global origin [N.m]
@@ -60,7 +60,7 @@ inline Vector3 totalMomentAboutOrigin(const ConnectorResult& r,
                                       const BodyKinematics& B)
 {
     return A.p_WBo_W.cross(r.A.f_W) + r.A.m_Bo_W + B.p_WBo_W.cross(r.B.f_W)
-           + r.B.m_Bo_W;
+        + r.B.m_Bo_W;
 }
 
 inline void expectVectorNear(const Vector3& actual, const Vector3& expected,

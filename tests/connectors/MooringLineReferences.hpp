@@ -19,7 +19,8 @@ struct ReferenceLine {
 //- Lab chain: 1.2 m in 0.5 m of water
 inline ReferenceLine lab(int segments)
 {
-    ReferenceLine r{"lab chain", {}, Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05)};
+    ReferenceLine r {
+        "lab chain", {}, Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05)};
     MooringLineParameters& p = r.p;
     p.length = 1.2;
     p.massPerLength = 0.0796;
@@ -40,8 +41,10 @@ inline ReferenceLine lab(int segments)
 //- OC4 semi-submersible line: 835.5 m in 200 m of water
 inline ReferenceLine oc4(int segments)
 {
-    ReferenceLine r{"OC4 line", {}, Vector3(-837.6, 0.0, -200.0),
-                    Vector3(-40.868, 0.0, -14.0)};
+    ReferenceLine r {"OC4 line",
+                     {},
+                     Vector3(-837.6, 0.0, -200.0),
+                     Vector3(-40.868, 0.0, -14.0)};
     MooringLineParameters& p = r.p;
     p.length = 835.5;
     p.massPerLength = 113.35;

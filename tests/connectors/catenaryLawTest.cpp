@@ -30,7 +30,8 @@ const Vector3 zHat = Vector3::UnitZ();
 TEST(CatenaryLaw, AnchoredLineLoadsAndBalance)
 {
     const Catenary law(mooring(true));
-    const BodyKinematics A = body(Vector3(60, 45, 43), rotation(0.3, Vector3(0.2, 1, 3)));
+    const BodyKinematics A
+        = body(Vector3(60, 45, 43), rotation(0.3, Vector3(0.2, 1, 3)));
     const BodyKinematics world;
     const CatenaryOutput out = law.evaluate(A, world, nullptr, 11);
     const auto& s = out.solution;
@@ -45,11 +46,14 @@ TEST(CatenaryLaw, AnchoredLineLoadsAndBalance)
     const Vector3 Q(0.5, 0.2, 0.0);
     Vector3 toAnchor = Q - P;
     toAnchor[2] = 0;
-    EXPECT_NEAR(out.loads.A.f_W.head<2>().normalized().dot(toAnchor.head<2>().normalized()),
+    EXPECT_NEAR(out.loads.A.f_W.head<2>().normalized().dot(
+                    toAnchor.head<2>().normalized()),
                 1.0, 1e-12);
-    expectVectorNear(out.loads.A.m_Bo_W, (A.R_WB * Vector3(2, -1, -3)).cross(out.loads.A.f_W),
+    expectVectorNear(out.loads.A.m_Bo_W,
+                     (A.R_WB * Vector3(2, -1, -3)).cross(out.loads.A.f_W),
                      1e-9 * out.fairleadTension);
-    EXPECT_NEAR(out.fairleadTension, std::hypot(s.H, s.V), 1e-9 * out.fairleadTension);
+    EXPECT_NEAR(out.fairleadTension, std::hypot(s.H, s.V),
+                1e-9 * out.fairleadTension);
     EXPECT_EQ(out.loads.tension, out.fairleadTension);
     // Shape: from P to Q, grounded points on the seabed (z = 0)
     ASSERT_EQ(out.shape.size(), 11u);
@@ -68,10 +72,13 @@ TEST(CatenaryLaw, LineBetweenTwoBodies)
 {
     // Weightless taut line: loads exactly equal, opposite and collinear
     const Catenary straight(mooring(false, 0.0));
-    const BodyKinematics A = body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 0, 1)));
-    const BodyKinematics B = body(Vector3(70, 60, -20), rotation(-0.4, Vector3(0, 1, 1)));
+    const BodyKinematics A
+        = body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 0, 1)));
+    const BodyKinematics B
+        = body(Vector3(70, 60, -20), rotation(-0.4, Vector3(0, 1, 1)));
     const CatenaryOutput s = straight.evaluate(A, B, nullptr, 0);
-    expectVectorNear(s.loads.A.f_W + s.loads.B.f_W, Vector3::Zero(), 1e-9 * s.fairleadTension);
+    expectVectorNear(s.loads.A.f_W + s.loads.B.f_W, Vector3::Zero(),
+                     1e-9 * s.fairleadTension);
     expectVectorNear(totalMomentAboutOrigin(s.loads, A, B), Vector3::Zero(),
                      1e-9 * s.fairleadTension * 100);
     // Heavy line: horizontal parts equal and opposite, the bodies share
@@ -91,7 +98,8 @@ TEST(CatenaryLaw, ForceIsMinusTheEnergyGradient)
     // ~ E''' h^2 and Newton noise 1e-8 m * T / h; 1e-4 relative is ample.
     for (const bool seabed : {true, false}) {
         const Catenary law(mooring(seabed));
-        const BodyKinematics A = body(Vector3(70, 50, 8), rotation(0.2, Vector3(1, 1, 0)));
+        const BodyKinematics A
+            = body(Vector3(70, 50, 8), rotation(0.2, Vector3(1, 1, 0)));
         const BodyKinematics B = body(Vector3(0, 0, seabed ? 0 : -30));
         const CatenaryOutput out = law.evaluate(A, B, nullptr, 0);
         for (int i = 0; i < 3; ++i) {
@@ -101,7 +109,7 @@ TEST(CatenaryLaw, ForceIsMinusTheEnergyGradient)
             minus.p_WBo_W[i] -= h;
             const double dE = (law.evaluate(plus, B).potentialEnergy
                                - law.evaluate(minus, B).potentialEnergy)
-                              / (2 * h);
+                / (2 * h);
             EXPECT_NEAR(-dE, out.loads.A.f_W[i], 1e-4 * out.fairleadTension)
                 << (seabed ? "seabed " : "free ") << i;
             BodyKinematics bp = B, bm = B;
@@ -112,8 +120,9 @@ TEST(CatenaryLaw, ForceIsMinusTheEnergyGradient)
             }
             const double dEB = (law.evaluate(A, bp).potentialEnergy
                                 - law.evaluate(A, bm).potentialEnergy)
-                               / (2 * h);
-            EXPECT_NEAR(-dEB, out.loads.B.f_W[i], 1e-4 * out.fairleadTension) << i;
+                / (2 * h);
+            EXPECT_NEAR(-dEB, out.loads.B.f_W[i], 1e-4 * out.fairleadTension)
+                << i;
         }
         EXPECT_EQ(out.loads.dissipatedPower, 0.0);
     }
@@ -148,7 +157,7 @@ TEST(CatenaryLaw, ParametersAreChecked)
         "catenary: parameter unstretchedLength = -1 m is out of range (allowed: finite and > 0)");
     p = mooring(true);
     p.line.seabedFriction = -0.1;
-    EXPECT_THROW(Catenary{p}, connectors::ParameterError);
+    EXPECT_THROW(Catenary {p}, connectors::ParameterError);
     const Catenary law(mooring(true));
     BodyKinematics A = body(Vector3(80, 0, 45));
     A.v_WBo_W[1] = std::nan("");

@@ -18,16 +18,20 @@ using connectors::CatenarySolution;
 using connectors::solveCatenary;
 
 //- Spans of a fully suspended line, textbook form (Irvine eq. 2.25)
-void suspendedSpans(const CatenaryLine& l, double H, double V, double& x, double& z)
+void suspendedSpans(const CatenaryLine& l, double H, double V, double& x,
+                    double& z)
 {
     const double w = l.weight, L = l.length, EA = l.EA;
     x = H / w * (std::asinh(V / H) - std::asinh((V - w * L) / H)) + H * L / EA;
-    z = H / w * (std::sqrt(1 + V * V / (H * H)) - std::sqrt(1 + (V - w * L) * (V - w * L) / (H * H)))
+    z = H / w
+            * (std::sqrt(1 + V * V / (H * H))
+               - std::sqrt(1 + (V - w * L) * (V - w * L) / (H * H)))
         + (V * L - w * L * L / 2) / EA;
 }
 
 //- Spans of an anchored line with a grounded part (MoorDyn's Catenary)
-void touchdownSpans(const CatenaryLine& l, double H, double V, double& x, double& z)
+void touchdownSpans(const CatenaryLine& l, double H, double V, double& x,
+                    double& z)
 {
     const double w = l.weight, L = l.length, EA = l.EA, CB = l.seabedFriction;
     const double Lb = L - V / w;
@@ -43,7 +47,7 @@ CatenaryLine chain(bool seabed, double friction = 0.0)
 {
     CatenaryLine l;
     l.length = 100.0;
-    l.EA = 5e7;     // N, a studless chain of ~ 60 mm
+    l.EA = 5e7; // N, a studless chain of ~ 60 mm
     l.weight = 700; // N/m submerged
     l.seabedFriction = friction;
     l.seabedContact = seabed;
@@ -58,7 +62,8 @@ TEST(CatenaryProfile, SuspendedMatchesClosedForm)
 {
     for (const bool seabed : {false, true}) {
         const CatenaryLine l = chain(seabed);
-        for (const auto& [H, V] : {std::pair{2e4, 9e4}, {1e5, 7.5e4}, {3e3, 7.01e4}, {5e5, -1e5}}) {
+        for (const auto& [H, V] :
+             {std::pair {2e4, 9e4}, {1e5, 7.5e4}, {3e3, 7.01e4}, {5e5, -1e5}}) {
             if (seabed && V < l.weight * l.length) {
                 continue; // would touch down
             }
@@ -79,7 +84,8 @@ TEST(CatenaryProfile, TouchdownMatchesClosedForm)
 {
     for (const double friction : {0.0, 0.5, 1.0}) {
         const CatenaryLine l = chain(true, friction);
-        for (const auto& [H, V] : {std::pair{2e4, 3e4}, {500.0, 1.4e4}, {8e4, 6.9e4}}) {
+        for (const auto& [H, V] :
+             {std::pair {2e4, 3e4}, {500.0, 1.4e4}, {8e4, 6.9e4}}) {
             double x, z;
             touchdownSpans(l, H, V, x, z);
             const CatenarySolution s = solveCatenary(l, x, z);
@@ -89,9 +95,11 @@ TEST(CatenaryProfile, TouchdownMatchesClosedForm)
             EXPECT_NEAR(s.groundedLength, l.length - V / l.weight, 1e-6);
             // the seabed carries the grounded weight: V = w (L - Lb); the
             // anchor keeps H minus the friction on the grounded part
-            EXPECT_NEAR(s.V, l.weight * (l.length - s.groundedLength), 1e-9 * V);
-            EXPECT_NEAR(s.HA, std::max(H - friction * l.weight * s.groundedLength, 0.0),
-                        relTol * H);
+            EXPECT_NEAR(s.V, l.weight * (l.length - s.groundedLength),
+                        1e-9 * V);
+            EXPECT_NEAR(
+                s.HA, std::max(H - friction * l.weight * s.groundedLength, 0.0),
+                relTol * H);
             EXPECT_EQ(s.VA, 0.0);
         }
     }
@@ -177,7 +185,8 @@ TEST(CatenaryProfile, SlackOnTheSeabedAndAnchorBelowTheFairlead)
     const CatenaryLine l = chain(true, 0.3);
     const double z = 20.0;
     // hanging length Ls: z = Ls + w Ls^2/(2 EA)
-    const double Ls = (std::sqrt(1 + 2 * l.weight * z / l.EA) - 1) * l.EA / l.weight;
+    const double Ls
+        = (std::sqrt(1 + 2 * l.weight * z / l.EA) - 1) * l.EA / l.weight;
     for (const double x : {0.0, 30.0, l.length - Ls - 1e-9}) {
         const CatenarySolution s = solveCatenary(l, x, z);
         EXPECT_EQ(s.regime, CatenaryRegime::slackOnSeabed) << x;
@@ -194,7 +203,9 @@ TEST(CatenaryProfile, SlackOnTheSeabedAndAnchorBelowTheFairlead)
     const double zTaut = l.length + 0.2; // above L + w L^2/(2 EA) = L + 0.07
     const CatenarySolution v = solveCatenary(l, 0.0, zTaut);
     EXPECT_EQ(v.regime, CatenaryRegime::vertical);
-    EXPECT_NEAR(v.V, (zTaut - l.length) * l.EA / l.length + 0.5 * l.weight * l.length, 1e-6);
+    EXPECT_NEAR(
+        v.V, (zTaut - l.length) * l.EA / l.length + 0.5 * l.weight * l.length,
+        1e-6);
 }
 
 TEST(CatenaryProfile, LiftOffIsContinuous)
@@ -220,11 +231,12 @@ TEST(CatenaryProfile, SweepFromSlackToTautIsMonotoneAndFinite)
     for (const bool seabed : {true, false}) {
         const CatenaryLine l = chain(seabed, 0.5);
         double previous = 0.0;
-        CatenaryGuess warm{};
+        CatenaryGuess warm {};
         for (double x = 0.0; x <= 102.0; x += 0.5) {
             const double z = 40.0;
             const CatenarySolution cold = solveCatenary(l, x, z);
-            const CatenarySolution hot = solveCatenary(l, x, z, warm.H > 0 ? &warm : nullptr);
+            const CatenarySolution hot
+                = solveCatenary(l, x, z, warm.H > 0 ? &warm : nullptr);
             ASSERT_TRUE(std::isfinite(cold.H) && std::isfinite(cold.V)) << x;
             EXPECT_NEAR(hot.H, cold.H, 1e-6 * std::hypot(cold.H, cold.V)) << x;
             EXPECT_GE(cold.H, previous * (1 - 1e-9)) << x;
@@ -239,12 +251,13 @@ TEST(CatenaryProfile, WarmStartTakesFewerIterations)
     // A fairlead moving 0.02 m per call (a CFD time step), from a slack
     // line mostly on the seabed through lift-off to a taut one
     const CatenaryLine l = chain(true, 0.5);
-    CatenaryGuess guess{};
+    CatenaryGuess guess {};
     int cold = 0, warm = 0, worstWarm = 0;
     for (double x = 62.0; x < 92.0; x += 0.02) {
         const double z = 40.0 + 5.0 * std::sin(x);
         const CatenarySolution c = solveCatenary(l, x, z);
-        const CatenarySolution h = solveCatenary(l, x, z, guess.H > 0 ? &guess : nullptr);
+        const CatenarySolution h
+            = solveCatenary(l, x, z, guess.H > 0 ? &guess : nullptr);
         cold += c.iterations;
         warm += h.iterations;
         worstWarm = std::max(worstWarm, h.iterations);
@@ -254,8 +267,8 @@ TEST(CatenaryProfile, WarmStartTakesFewerIterations)
     // entering the touchdown regime from the slack one (no previous H) or
     // crossing lift-off (a kink in the Jacobian) takes a few more
     EXPECT_LE(worstWarm, 8);
-    std::cout << "Newton iterations over the path: cold " << cold << ", warm " << warm
-              << '\n';
+    std::cout << "Newton iterations over the path: cold " << cold << ", warm "
+              << warm << '\n';
 }
 
 TEST(CatenaryProfile, FailuresNameTheRegimeAndResidual)
@@ -265,9 +278,10 @@ TEST(CatenaryProfile, FailuresNameTheRegimeAndResidual)
         solveCatenary(l, 10.0, -5.0);
         ADD_FAILURE() << "no exception";
     } catch (const connectors::UndefinedStateError& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "catenary: the fairlead is 5 m below the seabed (the anchor's height): "
-                  "horizontal span 10 m, vertical span -5 m, H = 0 N, V = 0 N");
+        EXPECT_EQ(
+            std::string(e.what()),
+            "catenary: the fairlead is 5 m below the seabed (the anchor's height): "
+            "horizontal span 10 m, vertical span -5 m, H = 0 N, V = 0 N");
     }
     connectors::CatenaryOptions one;
     one.maxIterations = 1;
@@ -276,7 +290,12 @@ TEST(CatenaryProfile, FailuresNameTheRegimeAndResidual)
         ADD_FAILURE() << "no exception";
     } catch (const connectors::UndefinedStateError& e) {
         const std::string m = e.what();
-        EXPECT_EQ(m.rfind("catenary: Newton did not converge in 1 iterations (regime ", 0), 0u) << m;
+        EXPECT_EQ(
+            m.rfind(
+                "catenary: Newton did not converge in 1 iterations (regime ",
+                0),
+            0u)
+            << m;
         EXPECT_NE(m.find(", residual "), std::string::npos) << m;
     }
 }
@@ -293,7 +312,8 @@ TEST(CatenaryProfile, SlackLineOnOneVerticalFolds)
         const double z = 30.0;
         const CatenarySolution f = solveCatenary(l, 0.0, z);
         EXPECT_EQ(f.regime, CatenaryRegime::folded);
-        const double V = 0.5 * (w * l.length + z / (1 / std::abs(w) + l.length / (2 * l.EA)));
+        const double V = 0.5
+            * (w * l.length + z / (1 / std::abs(w) + l.length / (2 * l.EA)));
         EXPECT_NEAR(f.V, V, 1e-9 * std::abs(V));
         EXPECT_LE(f.V * f.VA, 0.0); // one strand up, one down
         const CatenarySolution near = solveCatenary(l, 1e-6, z);
@@ -301,10 +321,11 @@ TEST(CatenaryProfile, SlackLineOnOneVerticalFolds)
         EXPECT_LT(near.H, 1e-3);
         // the shape reaches the fairlead and the fold is the lowest (or,
         // buoyant, highest) point
-        const Eigen::Vector2d end = connectors::catenaryPoint(l, f, 0.0, z, l.length);
+        const Eigen::Vector2d end
+            = connectors::catenaryPoint(l, f, 0.0, z, l.length);
         EXPECT_NEAR(end[1], z, 1e-9);
-        const Eigen::Vector2d fold =
-            connectors::catenaryPoint(l, f, 0.0, z, -f.VA / w);
+        const Eigen::Vector2d fold
+            = connectors::catenaryPoint(l, f, 0.0, z, -f.VA / w);
         EXPECT_NEAR(fold[1], w > 0 ? -(l.length - z) / 2 : (l.length + z) / 2,
                     2e-3 * l.length); // plus the strands' elastic stretch
     }

@@ -26,7 +26,8 @@ int oscillator(double, const double* s, double* ds)
 double exact(double t)
 {
     const double w = 2.0, zeta = 0.1, wd = w * std::sqrt(1 - zeta * zeta);
-    return std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
+    return std::exp(-zeta * w * t)
+        * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
 }
 
 TEST(CvodeBdf, AccurateOnAStiffProblemWithRestartsEveryStep)
@@ -58,7 +59,8 @@ TEST(CvodeBdf, AccurateOnAStiffProblemWithRestartsEveryStep)
 TEST(CvodeBdf, FailuresNameTheFunction)
 {
     CvodeBdf::Options o;
-    CvodeBdf cvode(1, [](double, const double*, double*) { return -1; }, o);
+    CvodeBdf cvode(
+        1, [](double, const double*, double*) { return -1; }, o);
     const double y0 = 1.0;
     double y = 0.0;
     cvode.restart(0.0, &y0);
@@ -77,7 +79,8 @@ TEST(CvodeBdf, FailuresNameTheFunction)
         ADD_FAILURE() << "no exception";
     } catch (const std::runtime_error& e) {
         const std::string m = e.what();
-        EXPECT_EQ(m.rfind("CVodeSStolerances failed: CV_ILL_INPUT", 0), 0u) << m;
+        EXPECT_EQ(m.rfind("CVodeSStolerances failed: CV_ILL_INPUT", 0), 0u)
+            << m;
     }
 }
 

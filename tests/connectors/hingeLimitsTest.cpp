@@ -29,8 +29,8 @@ TEST(HingeLimits, AngleIsContinuousThroughSeveralTurns)
     const int steps = int(5 * 2 * EIGEN_PI / 0.3);
     for (int i = 0; i < 2 * steps; ++i) {
         accumulated += i < steps ? 0.3 : -0.3;
-        const HingeResult h =
-            hinge.evaluate(A, hingedBody(hinge, A, accumulated, 0.0), previous);
+        const HingeResult h = hinge.evaluate(
+            A, hingedBody(hinge, A, accumulated, 0.0), previous);
         // Each step adds one rotation's round-off (~1e-15 rad); over 200
         // steps 1e-11 rad bounds it with a wide margin.
         ASSERT_NEAR(h.angle, accumulated, 1e-11) << "step " << i;
@@ -59,8 +59,8 @@ TEST(HingeLimits, OppositeAxesTurnBackAboutTheReferenceOfA)
     p.rotationalStiffness = 40.0;
     const Hinge hinge(p);
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B =
-        body(Vector3::Zero(), rotation(EIGEN_PI, Vector3::UnitY()));
+    const BodyKinematics B
+        = body(Vector3::Zero(), rotation(EIGEN_PI, Vector3::UnitY()));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // sin(pi) = 1.2e-16 in the rotation: theta = pi to ~1e-16
     EXPECT_NEAR(h.misalignment, EIGEN_PI, 1e-15);
@@ -72,8 +72,8 @@ TEST(HingeLimits, OppositeAxesTurnBackAboutTheReferenceOfA)
 
     // Just off the flip the moment keeps its magnitude k_r theta and turns
     // about the (now defined) a_B x a_A.
-    const BodyKinematics near =
-        body(Vector3::Zero(), rotation(EIGEN_PI - 1e-5, Vector3::UnitY()));
+    const BodyKinematics near
+        = body(Vector3::Zero(), rotation(EIGEN_PI - 1e-5, Vector3::UnitY()));
     const HingeResult hn = hinge.evaluate(A, near, 0.0);
     EXPECT_NEAR(hn.misalignment, EIGEN_PI - 1e-5, 1e-12);
     EXPECT_NEAR(hn.loads.B.m_Bo_W.norm(), 40 * (EIGEN_PI - 1e-5), 1e-10);
@@ -84,12 +84,12 @@ TEST(HingeLimits, CoincidentBodiesAndZeroStiffness)
 {
     // Two bodies in the same place and pose with the hinge points at their
     // reference points: no gap, no misalignment, no load, nothing NaN.
-    const Hinge hinge(HingeParameters{});
+    const Hinge hinge(HingeParameters {});
     HingeParameters stiff;
     stiff.stiffness = 1e6;
     stiff.rotationalStiffness = 1e4;
-    const BodyKinematics A =
-        body(Vector3(1, 2, 3), rotation(0.4, Vector3(1, 1, 0)));
+    const BodyKinematics A
+        = body(Vector3(1, 2, 3), rotation(0.4, Vector3(1, 1, 0)));
     for (const Hinge& h : {hinge, Hinge(stiff)}) {
         const HingeResult r = h.evaluate(A, A, 0.0);
         expectAllFinite(r.loads);

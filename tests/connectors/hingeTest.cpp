@@ -53,8 +53,8 @@ TEST(Hinge, GapGivesASpringDamperForce)
     // 1000 (0.01,0,0) + 20 (-0.2,0,0) = (6, 0, 0) N, pulling P towards Q.
     const Hinge hinge(plainHinge(1000.0, 20.0, 50.0, 1.0));
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B =
-        body(Vector3(0.01, 0, 0), Matrix3::Identity(), Vector3(-0.2, 0, 0));
+    const BodyKinematics B
+        = body(Vector3(0.01, 0, 0), Matrix3::Identity(), Vector3(-0.2, 0, 0));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // 0.01 is not exact in binary; k 0.01 = 10 to ~2e-15.
     expectVectorNear(h.loads.A.f_W, Vector3(6, 0, 0), 1e-13);
@@ -111,9 +111,9 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     p.ptoRestAngle = 0.1;
     const Hinge hinge(p);
     const BodyKinematics A = body(Vector3::Zero());
-    const BodyKinematics B =
-        body(Vector3::Zero(), rotation(0.3, Vector3::UnitZ()), Vector3::Zero(),
-             Vector3(0, 0, 2));
+    const BodyKinematics B
+        = body(Vector3::Zero(), rotation(0.3, Vector3::UnitZ()),
+               Vector3::Zero(), Vector3(0, 0, 2));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // angle from atan2 of cos/sin 0.3: a few ulps
     EXPECT_NEAR(h.angle, 0.3, 1e-15);
@@ -127,8 +127,8 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     EXPECT_NEAR(powerIntoBodies(h.loads, A, B), -h.ptoPower, 1e-13);
     // Turning the other way at the same angle: the damper still absorbs,
     // the spring returns energy: tau = 2 - 8 = -6, ptoPower = 12 W > 0.
-    const BodyKinematics Bback =
-        body(Vector3::Zero(), B.R_WB, Vector3::Zero(), Vector3(0, 0, -2));
+    const BodyKinematics Bback
+        = body(Vector3::Zero(), B.R_WB, Vector3::Zero(), Vector3(0, 0, -2));
     EXPECT_NEAR(hinge.evaluate(A, Bback, 0.0).ptoPower, 12.0, 1e-13);
 }
 
@@ -179,9 +179,9 @@ double energyRate(const Hinge& hinge, const BodyKinematics& A,
     const double dt = 1e-6;
     const double plus = hinge.evaluate(advanced(A, dt), advanced(B, dt), angle)
                             .loads.potentialEnergy;
-    const double minus =
-        hinge.evaluate(advanced(A, -dt), advanced(B, -dt), angle)
-            .loads.potentialEnergy;
+    const double minus
+        = hinge.evaluate(advanced(A, -dt), advanced(B, -dt), angle)
+              .loads.potentialEnergy;
     return (plus - minus) / (2 * dt);
 }
 
@@ -204,7 +204,7 @@ TEST(Hinge, SpringsAreConservative)
         // ~ 1e-16 V / dt ~ 1e-7 W on V ~ 1e3 J: 1e-5 relative to the power
         // scale (~1e3 W) is the bound.
         const double scale = 1.0 + h.loads.dissipatedPower
-                             + std::abs(energyRate(free, A, B, 0.0));
+            + std::abs(energyRate(free, A, B, 0.0));
         EXPECT_NEAR(powerIntoBodies(h.loads, A, B),
                     -energyRate(free, A, B, 0.0) - h.loads.dissipatedPower,
                     1e-6 * scale)

@@ -36,11 +36,11 @@ TEST(LinearDamper, AnalyticRotatedBodies)
     // (3,3,-1), dL/dt = 1.8 - 0.8 = 1, c = 6: T = 6 N, f_A = (0,3.6,4.8), m_A =
     // (0,1,0) x f_A = (4.8,0,0), D = 6 W.
     const LinearDamper damper(damperParameters(6.0, Vector3(1, 0, 0)));
-    const BodyKinematics A =
-        body(Vector3::Zero(), rotation(EIGEN_PI / 2, Vector3::UnitZ()),
-             Vector3::Zero(), Vector3(0, 0, 1));
-    const BodyKinematics B =
-        body(Vector3(0, 4, 4), Matrix3::Identity(), Vector3(2, 3, -1));
+    const BodyKinematics A
+        = body(Vector3::Zero(), rotation(EIGEN_PI / 2, Vector3::UnitZ()),
+               Vector3::Zero(), Vector3(0, 0, 1));
+    const BodyKinematics B
+        = body(Vector3(0, 4, 4), Matrix3::Identity(), Vector3(2, 3, -1));
     const connectors::ConnectorResult r = damper.evaluate(A, B);
     // Tolerance: cos(pi/2) ~ 6e-17 in R_A perturbs the arm by ~1e-16 m;
     // with O(10) values the error is ~1e-15. 1e-12 leaves a wide margin.

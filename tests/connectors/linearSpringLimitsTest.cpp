@@ -71,8 +71,9 @@ TEST(LinearSpringErrors, NonFiniteParameters)
     p = valid();
     p.p_BoQ_B[1] = nan;
     expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); }, "linearSpring: parameter B.p[2] = nan m is "
-                                    "out of range (allowed: finite)");
+        [&] { LinearSpring s(p); },
+        "linearSpring: parameter B.p[2] = nan m is "
+        "out of range (allowed: finite)");
 }
 
 TEST(LinearSpringErrors, NonFiniteInputs)
@@ -105,8 +106,8 @@ TEST(LinearSpringZeroLength, ZeroRestLengthIsTheVectorLaw)
     const LinearSpring spring(p);
     for (const Vector3& d : {Vector3(0, 0, 0), Vector3(3e-13, -4e-13, 0),
                              Vector3(1e-9, 2e-9, -2e-9), Vector3(0.5, 0, 0)}) {
-        const ConnectorResult r =
-            spring.evaluate(body(Vector3::Zero()), body(d));
+        const ConnectorResult r
+            = spring.evaluate(body(Vector3::Zero()), body(d));
         expectAllFinite(r);
         // One multiplication of exact inputs: equal up to 1 ulp.
         expectVectorNear(r.A.f_W, p.stiffness * d,
@@ -125,17 +126,17 @@ TEST(LinearSpringZeroLength, DampingVanishesWhereTheAxisIsUndefined)
     p.restLength = 0.0;
     const LinearSpring spring(p);
     const Vector3 v_B(0.3, -0.2, 0.1);
-    const ConnectorResult below =
-        spring.evaluate(body(Vector3::Zero()),
-                        body(Vector3(5e-13, 0, 0), Matrix3::Identity(), v_B));
+    const ConnectorResult below
+        = spring.evaluate(body(Vector3::Zero()),
+                          body(Vector3(5e-13, 0, 0), Matrix3::Identity(), v_B));
     expectAllFinite(below);
     EXPECT_EQ(below.lengthRate, 0.0);
     EXPECT_EQ(below.dissipatedPower, 0.0);
     // Only the elastic part k d remains (exact: one product).
     EXPECT_EQ(below.A.f_W, Vector3(p.stiffness * 5e-13, 0, 0));
-    const ConnectorResult above =
-        spring.evaluate(body(Vector3::Zero()),
-                        body(Vector3(5e-12, 0, 0), Matrix3::Identity(), v_B));
+    const ConnectorResult above
+        = spring.evaluate(body(Vector3::Zero()),
+                          body(Vector3(5e-12, 0, 0), Matrix3::Identity(), v_B));
     EXPECT_EQ(above.lengthRate, 0.3);
     // f_A,x = k L + c dL/dt = 100 * 5e-12 + 2 * 0.3; tolerance 1 ulp of 0.6.
     EXPECT_NEAR(above.A.f_W[0], 100.0 * 5e-12 + 0.6, 1e-16);
@@ -151,8 +152,8 @@ TEST(LinearSpringZeroLength, PositiveRestLengthIsAnError)
         "linearSpring: length 0 m is below 1e-12 m with restLength = 1 m > 0: "
         "the spring force direction is undefined");
     // Just above the threshold the axis is defined again: |F| = k (L0 - L).
-    const ConnectorResult r =
-        spring.evaluate(body(Vector3::Zero()), body(Vector3(2e-12, 0, 0)));
+    const ConnectorResult r
+        = spring.evaluate(body(Vector3::Zero()), body(Vector3(2e-12, 0, 0)));
     expectAllFinite(r);
     // Tolerance: 1e-12 relative to the 100 N force (round-off only).
     EXPECT_NEAR(r.A.f_W[0], -100.0 * (1.0 - 2e-12), 1e-10);

@@ -31,14 +31,14 @@ TEST(LinearSpring, ZeroForceAtRestLength)
     // placed exactly 1.5 m apart along a skew direction.
     const LinearSpring spring(springParameters(
         200.0, 1.5, 0.0, Vector3(0.1, -0.2, 0.3), Vector3(-0.4, 0.0, 0.2)));
-    const BodyKinematics A =
-        body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 1, 0)));
+    const BodyKinematics A
+        = body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 1, 0)));
     const Vector3 p_WP = A.p_WBo_W + A.R_WB * spring.parameters().p_AoP_A;
     const Vector3 e = Vector3(2, -1, 2) / 3.0;
     const Matrix3 R_B = rotation(-1.1, Vector3(0, 1, 1));
     const Vector3 p_WQ = p_WP + 1.5 * e;
-    const BodyKinematics B =
-        body(p_WQ - R_B * spring.parameters().p_BoQ_B, R_B);
+    const BodyKinematics B
+        = body(p_WQ - R_B * spring.parameters().p_BoQ_B, R_B);
     const ConnectorResult r = spring.evaluate(A, B);
     // Tolerance: the length is rebuilt from sums of O(1) m coordinates, so
     // L - L0 is exact only to a few ulps of 1.5 (~1e-15 m); k = 200 N/m
@@ -56,8 +56,8 @@ TEST(LinearSpring, StretchedAlongX)
     // k = 100 N/m, L0 = 1.5 m, L = 2 m: T = 50 N, V = 12.5 J. Every input is
     // exactly representable, so the values are exact (tolerance 0).
     const LinearSpring spring(springParameters(100.0, 1.5, 0.0));
-    const ConnectorResult r =
-        spring.evaluate(body(Vector3::Zero()), body(Vector3(2, 0, 0)));
+    const ConnectorResult r
+        = spring.evaluate(body(Vector3::Zero()), body(Vector3(2, 0, 0)));
     EXPECT_EQ(r.A.f_W, Vector3(50, 0, 0));
     EXPECT_EQ(r.B.f_W, Vector3(-50, 0, 0));
     EXPECT_EQ(r.A.m_Bo_W, Vector3::Zero());
@@ -77,10 +77,10 @@ TEST(LinearSpring, RotatedBodiesWithOffsetAttachments)
     // m_B = (0,0,-1) x f_B = (-12,0,0), V = 20 J.
     const LinearSpring spring(
         springParameters(10.0, 3.0, 0.0, Vector3(1, 0, 0), Vector3(0, -1, 0)));
-    const BodyKinematics A =
-        body(Vector3(1, 2, 3), rotation(EIGEN_PI / 2, Vector3::UnitZ()));
-    const BodyKinematics B =
-        body(Vector3(1, 6, 8), rotation(EIGEN_PI / 2, Vector3::UnitX()));
+    const BodyKinematics A
+        = body(Vector3(1, 2, 3), rotation(EIGEN_PI / 2, Vector3::UnitZ()));
+    const BodyKinematics B
+        = body(Vector3(1, 6, 8), rotation(EIGEN_PI / 2, Vector3::UnitX()));
     const ConnectorResult r = spring.evaluate(A, B);
     // Tolerance: cos(pi/2) = 6e-17 instead of 0 in the rotation matrices
     // perturbs the lever arms by ~1e-16 m; times forces of 20 N and a few
@@ -106,8 +106,8 @@ TEST(LinearSpring, DampingUsesTheVelocityOfTheAttachmentPoints)
         springParameters(10.0, 1.0, 4.0, Vector3(0, 1, 0)));
     const BodyKinematics A = body(Vector3::Zero(), Matrix3::Identity(),
                                   Vector3::Zero(), Vector3(0, 0, 2));
-    const BodyKinematics B =
-        body(Vector3(3, 1, 0), Matrix3::Identity(), Vector3(1, 5, 0));
+    const BodyKinematics B
+        = body(Vector3(3, 1, 0), Matrix3::Identity(), Vector3(1, 5, 0));
     const ConnectorResult r = spring.evaluate(A, B);
     // Exact inputs, exact arithmetic: tolerance 0.
     EXPECT_EQ(r.lengthRate, 3.0);

@@ -24,9 +24,9 @@ using connectors::MooringLineParameters;
 using connectors::MooringLineState;
 
 constexpr double pi = 3.14159265358979323846;
-using connectors::references::ReferenceLine;
 using connectors::references::lab;
 using connectors::references::oc4;
+using connectors::references::ReferenceLine;
 
 //- Largest relative change of the fairlead tension and largest node speed
 //  over `steps` coupling steps of h with both ends held still
@@ -41,10 +41,13 @@ void holdStill(const ReferenceLine& r, double h, int steps, double& change,
     speed = 0.0;
     for (int k = 0; k < steps; ++k) {
         line.advance(s, A, B, h);
-        change = std::max(change,
-                          std::abs(line.evaluate(s, A, B, 0).fairleadTension - T0) / T0);
+        change = std::max(
+            change,
+            std::abs(line.evaluate(s, A, B, 0).fairleadTension - T0) / T0);
         for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
-            speed = std::max(speed, std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
+            speed = std::max(
+                speed,
+                std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
         }
     }
     ASSERT_EQ(s.P, r.fairlead); // the fairlead is held where it was put
@@ -59,14 +62,16 @@ TEST(MooringLineStart, HeldStillTheTensionIsConstantFromTheStart)
     // changes of 38, 111 and 244 (lab, N = 5, 20, 80).
     for (const double tolerance : {1e-10, 1e-6}) {
         for (const int N : {5, 20, 80}) {
-            for (auto [r, h, steps] : {std::tuple<ReferenceLine, double, int>{lab(N), 1e-3, 300},
-                                       {oc4(N), 0.1, 200}}) {
+            for (auto [r, h, steps] :
+                 {std::tuple<ReferenceLine, double, int> {lab(N), 1e-3, 300},
+                  {oc4(N), 0.1, 200}}) {
                 r.p.relativeTolerance = r.p.absoluteTolerance = tolerance;
                 double change = 0.0, speed = 0.0, T0 = 0.0;
                 holdStill(r, h, steps, change, speed, T0);
-                std::cout << r.name << ", N = " << N << ", CVODE tolerance " << tolerance
-                          << ": fairlead tension " << T0 << " N, largest relative change "
-                          << change << ", largest node speed " << speed << " m/s\n";
+                std::cout << r.name << ", N = " << N << ", CVODE tolerance "
+                          << tolerance << ": fairlead tension " << T0
+                          << " N, largest relative change " << change
+                          << ", largest node speed " << speed << " m/s\n";
                 // Newton leaves node forces at round-off (16 eps EA |r| / l
                 // at most), so what moves the tension is CVODE's error at
                 // rest, which its tolerance bounds: a velocity error dv of
@@ -90,11 +95,13 @@ TEST(MooringLineStart, NodesRestOnTheSeabedPenalty)
     // (0.63 mm for the lab chain), never more
     const ReferenceLine r = lab(20);
     MooringLine line(r.p);
-    const MooringLineState s = line.initialState(body(r.fairlead), body(r.anchor), 0.0);
+    const MooringLineState s
+        = line.initialState(body(r.fairlead), body(r.anchor), 0.0);
     const double sink = r.p.weight() / (r.p.seabedStiffness * r.p.diameter);
     int grounded = 0;
     for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
-        EXPECT_GE(s.nodes[i + 2], r.anchor[2] - (1.0 + 1e-6) * sink) << i / 6 + 1;
+        EXPECT_GE(s.nodes[i + 2], r.anchor[2] - (1.0 + 1e-6) * sink)
+            << i / 6 + 1;
         grounded += s.nodes[i + 2] < r.anchor[2];
         EXPECT_EQ(s.nodes[i + 3], 0.0);
     }
@@ -118,7 +125,10 @@ TEST(MooringLineStart, UnusableParametersAreNamed)
         "2 to 1000)");
     MooringLine line(r.p);
     expectThrowWithMessage<connectors::UndefinedStateError>(
-        [&] { line.initialState(body(Vector3(0.0, 0.0, -0.6)), body(r.anchor), 0.0); },
+        [&] {
+            line.initialState(body(Vector3(0.0, 0.0, -0.6)), body(r.anchor),
+                              0.0);
+        },
         "mooringLine: the fairlead (A.p on body A) at z = -0.6 m is below the seabed "
         "(z = -0.5 m, the height of the anchor B.p); with seabedContact = 1 it must not "
         "be");
@@ -131,13 +141,17 @@ BodyKinematics surging(const ReferenceLine& r, double a, double T, double t)
     const double w = 2.0 * pi / T;
     const double ramp = t < T ? 0.5 * (1.0 - std::cos(pi * t / T)) : 1.0;
     const double rampRate = t < T ? 0.5 * pi / T * std::sin(pi * t / T) : 0.0;
-    return body(r.fairlead + Vector3(a * ramp * std::sin(w * t), 0.0, 0.0), Matrix3::Identity(),
-                Vector3(a * (rampRate * std::sin(w * t) + ramp * w * std::cos(w * t)), 0.0, 0.0));
+    return body(
+        r.fairlead + Vector3(a * ramp * std::sin(w * t), 0.0, 0.0),
+        Matrix3::Identity(),
+        Vector3(a * (rampRate * std::sin(w * t) + ramp * w * std::cos(w * t)),
+                0.0, 0.0));
 }
 
 //- First-harmonic amplitude of the fairlead tension over the last of
 //  `periods` periods at coupling step h
-double tensionHarmonic(const ReferenceLine& r, double a, double T, int periods, double h)
+double tensionHarmonic(const ReferenceLine& r, double a, double T, int periods,
+                       double h)
 {
     MooringLine line(r.p);
     const BodyKinematics B = body(r.anchor);
@@ -149,7 +163,7 @@ double tensionHarmonic(const ReferenceLine& r, double a, double T, int periods, 
         line.advance(s, A, B, h);
         if (k > (periods - 1) * perPeriod) {
             sum += line.evaluate(s, A, B, 0).fairleadTension
-                   * std::exp(std::complex<double>(0.0, -2.0 * pi * k * h / T));
+                * std::exp(std::complex<double>(0.0, -2.0 * pi * k * h / T));
         }
     }
     return 2.0 * std::abs(sum) / perPeriod;
@@ -181,9 +195,10 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     const double oc4Fine = tensionHarmonic(o, 1.0, 10.0, 3, 0.01);
     const double labDifference = 100.0 * (labCoarse / labFine - 1.0);
     const double oc4Difference = 100.0 * (oc4Coarse / oc4Fine - 1.0);
-    std::cout << "lab chain N = 10: harmonic " << labCoarse << " N at 1 ms, " << labFine
-              << " N at 0.2 ms (" << labDifference << " %); OC4 N = 10: " << oc4Coarse
-              << " N at 0.1 s, " << oc4Fine << " N at 0.01 s (" << oc4Difference << " %)\n";
+    std::cout << "lab chain N = 10: harmonic " << labCoarse << " N at 1 ms, "
+              << labFine << " N at 0.2 ms (" << labDifference
+              << " %); OC4 N = 10: " << oc4Coarse << " N at 0.1 s, " << oc4Fine
+              << " N at 0.01 s (" << oc4Difference << " %)\n";
     EXPECT_LT(std::abs(labDifference), 1.0);
     EXPECT_LT(std::abs(oc4Difference), 1.0);
 

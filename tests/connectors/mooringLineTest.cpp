@@ -48,7 +48,8 @@ TEST(MooringLine, HeldStillSettlesOnTheQuasiStaticCatenary)
     c.line.EA = 5e7;
     c.line.weight = chain(10).weight();
     c.line.seabedContact = true;
-    const double Tqs = connectors::Catenary(c).evaluate(fairlead, anchor, nullptr, 0)
+    const double Tqs = connectors::Catenary(c)
+                           .evaluate(fairlead, anchor, nullptr, 0)
                            .fairleadTension;
     double previous = 1.0;
     for (const int N : {5, 10, 20}) {
@@ -66,13 +67,16 @@ TEST(MooringLine, HeldStillSettlesOnTheQuasiStaticCatenary)
         }
         double speed = 0.0;
         for (int i = 0; i + 5 < int(s.nodes.size()); i += 6) {
-            speed = std::max(speed, std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
+            speed = std::max(
+                speed,
+                std::hypot(s.nodes[i + 3], s.nodes[i + 4], s.nodes[i + 5]));
         }
         const double T = sum / samples;
         const double difference = std::abs(T - Tqs) / Tqs;
-        std::cout << "N = " << N << ": mean fairlead tension " << T << " N, quasi-static "
-                  << Tqs << " N, relative difference " << difference
-                  << ", largest node speed " << speed << " m/s at 40 s\n";
+        std::cout << "N = " << N << ": mean fairlead tension " << T
+                  << " N, quasi-static " << Tqs << " N, relative difference "
+                  << difference << ", largest node speed " << speed
+                  << " m/s at 40 s\n";
         // Nearly at rest: quadratic drag removes small motions slowly
         // (amplitude ~ 1/t); residual vibration of a few cm/s moves the
         // tension by ~0.1 %
@@ -109,7 +113,7 @@ double measuredFrequency(int N, double& expectedDiscrete, double& string)
     string = 0.5 / stretched * std::sqrt(T / muStretched);
     // chain of N equal masses: omega = 2 sqrt(T/(m l)) sin(pi/(2N))
     expectedDiscrete = N / (pi * stretched) * std::sqrt(T / muStretched)
-                       * std::sin(pi / (2.0 * N));
+        * std::sin(pi / (2.0 * N));
     const std::size_t mid = 6 * std::size_t(N / 2 - 1) + 1;
     const double h = 0.05;
     double previous = s.nodes[mid], t = 0.0;
@@ -123,7 +127,7 @@ double measuredFrequency(int N, double& expectedDiscrete, double& string)
         }
         previous = y;
     }
-    return 2.0 / (crossings.back() - crossings.front()) ; // 4 half periods
+    return 2.0 / (crossings.back() - crossings.front()); // 4 half periods
 }
 
 TEST(MooringLine, TautLineTransverseFrequency)
@@ -134,8 +138,8 @@ TEST(MooringLine, TautLineTransverseFrequency)
         const double f = measuredFrequency(N, discrete, string);
         const double error = std::abs(f - string) / string;
         std::cout << "N = " << N << ": f1 = " << f << " Hz, string " << string
-                  << " Hz (error " << error << "), chain of N masses " << discrete
-                  << " Hz\n";
+                  << " Hz (error " << error << "), chain of N masses "
+                  << discrete << " Hz\n";
         // The integrator reproduces the discrete chain's frequency (tolerance
         // 1e-9, crossings interpolated over 0.05 s of a 4.5 s period: 1e-4)
         EXPECT_NEAR(f, discrete, 1e-4 * string);
@@ -167,8 +171,8 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
     // restored: an unrelated step in between, then the same two steps
     MooringLineState other = saved;
     line.advance(other, fairlead, anchor, 0.3);
-    MooringLineState restored =
-        MooringLineState::deserialize(saved.serialize(), line.parameters().segments);
+    MooringLineState restored = MooringLineState::deserialize(
+        saved.serialize(), line.parameters().segments);
     next = moving;
     next.p_WBo_W[2] += 0.1;
     line.advance(restored, next, anchor, 0.1);
@@ -195,9 +199,14 @@ TEST(MooringLine, EnergyBalance)
     MooringLine line(p);
     const auto fairleadAt = [](double t) {
         const double r = t < 5.0 ? 0.5 * (1.0 - std::cos(pi * t / 5.0)) : 1.0;
-        const double dr = t < 5.0 ? 0.5 * pi / 5.0 * std::sin(pi * t / 5.0) : 0.0;
-        return body(Vector3(70.0 + 2.0 * r * std::sin(0.5 * t), 0.0, 10.0), Matrix3::Identity(),
-                    Vector3(2.0 * (dr * std::sin(0.5 * t) + 0.5 * r * std::cos(0.5 * t)), 0.0, 0.0));
+        const double dr
+            = t < 5.0 ? 0.5 * pi / 5.0 * std::sin(pi * t / 5.0) : 0.0;
+        return body(
+            Vector3(70.0 + 2.0 * r * std::sin(0.5 * t), 0.0, 10.0),
+            Matrix3::Identity(),
+            Vector3(
+                2.0 * (dr * std::sin(0.5 * t) + 0.5 * r * std::cos(0.5 * t)),
+                0.0, 0.0));
     };
     const BodyKinematics B = body(Vector3::Zero());
     const double l = p.length / p.segments;
@@ -205,8 +214,9 @@ TEST(MooringLine, EnergyBalance)
         double e = 0.0;
         for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
             e += 0.5 * p.massPerLength * l
-                 * (s.nodes[i + 3] * s.nodes[i + 3] + s.nodes[i + 4] * s.nodes[i + 4]
-                    + s.nodes[i + 5] * s.nodes[i + 5]);
+                * (s.nodes[i + 3] * s.nodes[i + 3]
+                   + s.nodes[i + 4] * s.nodes[i + 4]
+                   + s.nodes[i + 5] * s.nodes[i + 5]);
         }
         return e;
     };
@@ -230,8 +240,9 @@ TEST(MooringLine, EnergyBalance)
         EXPECT_GE(out.loads.dissipatedPower, 0.0);
     }
     const double change = out.loads.potentialEnergy + kinetic(s) - energy0;
-    std::cout << "work in " << work << " J, energy change " << change << " J, dissipated "
-              << dissipated << " J, imbalance " << work - change - dissipated << " J\n";
+    std::cout << "work in " << work << " J, energy change " << change
+              << " J, dissipated " << dissipated << " J, imbalance "
+              << work - change - dissipated << " J\n";
     // Trapezoidal power integrals over 0.01 s steps and the piecewise
     // linear end motion inside a step: O(h^2) errors, ~1e-4 of the energy
     // that flows through the fairlead; 1e-3 asserted.
@@ -269,7 +280,7 @@ TEST(MooringLine, LoadsAndShapeAtTheStart)
     expectVectorNear(out.shape.back(), Vector3::Zero(), 0.0);
     EXPECT_GT(out.groundedLength, 0.0);
     EXPECT_LT(out.loads.A.f_W[0], 0.0); // pulled towards the anchor
-    EXPECT_GT(out.V, 0.0);              // and down
+    EXPECT_GT(out.V, 0.0); // and down
     EXPECT_GE(out.loads.dissipatedPower, 0.0);
     expectAllFinite(out.loads);
 }

@@ -30,15 +30,16 @@ inline std::map<std::string, double> inputs(const BodyKinematics& A,
 {
     std::map<std::string, double> m;
     for (const auto& [prefix, k] :
-         {std::pair<std::string, const BodyKinematics&>{"A", A},
-          std::pair<std::string, const BodyKinematics&>{"B", B}}) {
+         {std::pair<std::string, const BodyKinematics&> {"A", A},
+          std::pair<std::string, const BodyKinematics&> {"B", B}}) {
         addVector(m, prefix + ".r", k.p_WBo_W);
         addVector(m, prefix + ".v", k.v_WBo_W);
         addVector(m, prefix + ".omega", k.w_WB_W);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
                 m[prefix + ".R[" + std::to_string(i + 1) + ","
-                  + std::to_string(j + 1) + "]"] = k.R_WB(i, j);
+                  + std::to_string(j + 1) + "]"]
+                    = k.R_WB(i, j);
             }
         }
     }
@@ -74,8 +75,8 @@ inline BodyKinematics genericB()
 //  the FMU declares)
 inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
 {
-    std::map<std::string, double> all = {
-        {"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
+    std::map<std::string, double> all
+        = {{"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
     addVector(all, "A.p", Vector3(0.1, -0.2, 0.3));
     addVector(all, "B.p", Vector3(-0.4, 0.05, 0.2));
     std::map<std::string, double> declared;

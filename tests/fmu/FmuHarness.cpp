@@ -62,11 +62,10 @@ std::string fmuPath(const std::string& name)
     return std::string(FOAMFMI_FMU_DIR) + "/" + name + ".fmu";
 }
 
-LoadedFmu::LoadedFmu(const std::string& modelName)
-    : name(modelName)
+LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
 {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
+    std::string pattern
+        = (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) {
         throw std::runtime_error("mkdtemp failed");
     }
@@ -80,11 +79,11 @@ LoadedFmu::LoadedFmu(const std::string& modelName)
     guid = root.attribute("guid").value();
     for (const pugi::xml_node v :
          root.child("ModelVariables").children("ScalarVariable")) {
-        vr[v.attribute("name").value()] =
-            v.attribute("valueReference").as_uint();
+        vr[v.attribute("name").value()]
+            = v.attribute("valueReference").as_uint();
     }
-    const std::string so =
-        (directory / "binaries" / "linux64" / (name + ".so")).string();
+    const std::string so
+        = (directory / "binaries" / "linux64" / (name + ".so")).string();
     library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (library_ == nullptr) {
         throw std::runtime_error("dlopen " + so + ": " + dlerror());
@@ -138,8 +137,8 @@ Instance::~Instance()
 
 fmi2Status Instance::initialize(const std::map<std::string, double>& parameters)
 {
-    fmi2Status s =
-        fmu_.api.SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
+    fmi2Status s
+        = fmu_.api.SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
     if (s == fmi2OK) {
         s = fmu_.api.EnterInitializationMode(c);
     }

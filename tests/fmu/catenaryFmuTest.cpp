@@ -14,11 +14,18 @@ namespace {
 
 using namespace fmuTest;
 
-const std::map<std::string, double> mooringParameters = {
-    {"unstretchedLength", 100.0}, {"EA", 5e7},           {"weight", 700.0},
-    {"seabedContact", 1.0},       {"seabedFriction", 0.5}, {"A.p[1]", 2.0},
-    {"A.p[2]", -1.0},             {"A.p[3]", -3.0},      {"B.p[1]", 0.5},
-    {"B.p[2]", 0.2},              {"B.p[3]", -60.0}};
+const std::map<std::string, double> mooringParameters
+    = {{"unstretchedLength", 100.0},
+       {"EA", 5e7},
+       {"weight", 700.0},
+       {"seabedContact", 1.0},
+       {"seabedFriction", 0.5},
+       {"A.p[1]", 2.0},
+       {"A.p[2]", -1.0},
+       {"A.p[3]", -3.0},
+       {"B.p[1]", 0.5},
+       {"B.p[2]", 0.2},
+       {"B.p[3]", -60.0}};
 
 connectors::CatenaryParameters lawParameters()
 {
@@ -36,20 +43,23 @@ connectors::CatenaryParameters lawParameters()
 //- A floating body 70 m from the anchor in 58 m of water, pitched and moving
 BodyKinematics floater(double t)
 {
-    return kinematics(Vector3(70.0 + 2.0 * std::sin(t), 3.0, 1.0 * std::cos(t)), 0.05,
-                      Vector3(0, 1, 0), Vector3(2.0 * std::cos(t), 0, -std::sin(t)),
+    return kinematics(Vector3(70.0 + 2.0 * std::sin(t), 3.0, 1.0 * std::cos(t)),
+                      0.05, Vector3(0, 1, 0),
+                      Vector3(2.0 * std::cos(t), 0, -std::sin(t)),
                       Vector3(0, 0.02, 0));
 }
 
 std::vector<std::string> lineOutputs()
 {
     std::vector<std::string> names = connectorOutputs();
-    for (const char* n : {"fairleadTension", "anchorTension", "groundedLength", "H", "V"}) {
+    for (const char* n :
+         {"fairleadTension", "anchorTension", "groundedLength", "H", "V"}) {
         names.push_back(n);
     }
     for (const char* axis : {"x", "y", "z"}) {
         for (int i = 1; i <= 11; ++i) {
-            names.push_back(std::string("shape.") + axis + "[" + std::to_string(i) + "]");
+            names.push_back(std::string("shape.") + axis + "["
+                            + std::to_string(i) + "]");
         }
     }
     return names;
@@ -64,12 +74,14 @@ TEST(CatenaryFmu, OutputsEqualTheLaw)
     double t = 0.0;
     for (int step = 0; step < 20; ++step, t += 0.1) {
         ASSERT_EQ(in.set(inputs(floater(t + 0.1), BodyKinematics())), fmi2OK);
-        ASSERT_EQ(fmu.api.DoStep(in.c, t, 0.1, fmi2True), fmi2OK) << in.lastMessage();
-        const connectors::CatenaryOutput c =
-            law.evaluate(floater(t + 0.1), BodyKinematics(), nullptr, 11);
+        ASSERT_EQ(fmu.api.DoStep(in.c, t, 0.1, fmi2True), fmi2OK)
+            << in.lastMessage();
+        const connectors::CatenaryOutput c
+            = law.evaluate(floater(t + 0.1), BodyKinematics(), nullptr, 11);
         std::vector<double> got;
         ASSERT_EQ(in.get(lineOutputs(), got), fmi2OK);
-        std::vector<double> want = {c.loads.A.f_W[0], c.loads.A.f_W[1], c.loads.A.f_W[2]};
+        std::vector<double> want
+            = {c.loads.A.f_W[0], c.loads.A.f_W[1], c.loads.A.f_W[2]};
         // The FMU is warm started, the law here cold: both stop at a span
         // residual below 1e-10 L = 1e-8 m; with dT/dx ~ 1e5 N/m that is
         // 1e-3 N on tensions of ~1e5 N: 1e-7 relative, 1e-6 asserted.
@@ -78,10 +90,10 @@ TEST(CatenaryFmu, OutputsEqualTheLaw)
             EXPECT_NEAR(got[std::size_t(i)], c.loads.A.f_W[i], 1e-6 * T);
             EXPECT_NEAR(got[std::size_t(6 + i)], c.loads.B.f_W[i], 1e-6 * T);
         }
-        EXPECT_NEAR(got[14], T, 1e-6 * T);                         // tension
-        EXPECT_NEAR(got[17], T, 1e-6 * T);                         // fairleadTension
-        EXPECT_NEAR(got[18], c.anchorTension, 1e-6 * T);           // anchorTension
-        EXPECT_NEAR(got[19], c.solution.groundedLength, 1e-6);     // m
+        EXPECT_NEAR(got[14], T, 1e-6 * T); // tension
+        EXPECT_NEAR(got[17], T, 1e-6 * T); // fairleadTension
+        EXPECT_NEAR(got[18], c.anchorTension, 1e-6 * T); // anchorTension
+        EXPECT_NEAR(got[19], c.solution.groundedLength, 1e-6); // m
         EXPECT_NEAR(got[20], c.solution.H, 1e-6 * T);
         EXPECT_NEAR(got[21], c.solution.V, 1e-6 * T);
         for (int i = 0; i < 11; ++i) {
@@ -124,16 +136,18 @@ TEST(CatenaryFmu, ErrorsAreNamed)
         std::map<std::string, double> p = mooringParameters;
         p["seabedContact"] = 0.5;
         EXPECT_EQ(in.initialize(p), fmi2Error);
-        EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: catenary: parameter "
-                                    "seabedContact = 0.5 is out of range (allowed: 0 or 1)");
+        EXPECT_EQ(in.lastMessage(),
+                  "fmi2ExitInitializationMode: catenary: parameter "
+                  "seabedContact = 0.5 is out of range (allowed: 0 or 1)");
     }
     {
         Instance in(fmu);
         std::map<std::string, double> p = mooringParameters;
         p["EA"] = -1.0;
         EXPECT_EQ(in.initialize(p), fmi2Error);
-        EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: catenary: parameter "
-                                    "EA = -1 N is out of range (allowed: finite and > 0)");
+        EXPECT_EQ(in.lastMessage(),
+                  "fmi2ExitInitializationMode: catenary: parameter "
+                  "EA = -1 N is out of range (allowed: finite and > 0)");
     }
     Instance in(fmu);
     ASSERT_EQ(in.initialize(mooringParameters), fmi2OK);
@@ -141,7 +155,8 @@ TEST(CatenaryFmu, ErrorsAreNamed)
     sunk.p_WBo_W[2] = -70.0;
     ASSERT_EQ(in.set(inputs(sunk, BodyKinematics())), fmi2OK);
     EXPECT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
-    EXPECT_EQ(in.lastMessage().rfind("fmi2DoStep: catenary: the fairlead is ", 0), 0u)
+    EXPECT_EQ(
+        in.lastMessage().rfind("fmi2DoStep: catenary: the fairlead is ", 0), 0u)
         << in.lastMessage();
     std::vector<double> out(lineOutputs().size(), 0.0);
     EXPECT_EQ(in.get(lineOutputs(), out), fmi2Error);
@@ -153,9 +168,11 @@ TEST(CatenaryFmu, ErrorsAreNamed)
 //- Output of a command run on the binary of an unpacked FMU
 std::string onBinary(const std::string& tool, const LoadedFmu& fmu)
 {
-    const std::string command =
-        tool + " '" + (fmu.directory / "binaries/linux64" / (fmu.name + ".so")).string() + "'";
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    const std::string command = tool + " '"
+        + (fmu.directory / "binaries/linux64" / (fmu.name + ".so")).string()
+        + "'";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"),
+                                               pclose);
     std::string text;
     char buffer[512];
     while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {
@@ -173,10 +190,13 @@ TEST(CatenaryFmu, SpringAndCatenaryCarryNoSundials)
         const LoadedFmu fmu(name);
         const std::string deps = onBinary("ldd", fmu);
         ASSERT_NE(deps.find("libc.so"), std::string::npos) << deps; // ldd ran
-        EXPECT_EQ(deps.find("libsundials"), std::string::npos) << name << ":\n" << deps;
+        EXPECT_EQ(deps.find("libsundials"), std::string::npos) << name << ":\n"
+                                                               << deps;
         const std::string symbols = onBinary("nm", fmu);
-        ASSERT_NE(symbols.find("fmi2DoStep"), std::string::npos) << name; // nm ran
-        EXPECT_EQ(symbols.find("CVode"), std::string::npos) << name << " links CVODE in";
+        ASSERT_NE(symbols.find("fmi2DoStep"), std::string::npos)
+            << name; // nm ran
+        EXPECT_EQ(symbols.find("CVode"), std::string::npos)
+            << name << " links CVODE in";
     }
 }
 

@@ -59,9 +59,9 @@ TEST(LinearSpringFmu, OutputsEqualTheLaw)
     ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK);
     expectOutputs(in, law.evaluate(genericA(), genericB()));
     // A second configuration, read without a step (direct feedthrough).
-    const BodyKinematics A =
-        kinematics(Vector3(-1, 0.5, 0.2), 2.0, Vector3(0, 1, 0),
-                   Vector3(0, 0, 1), Vector3(1, 0, 0));
+    const BodyKinematics A
+        = kinematics(Vector3(-1, 0.5, 0.2), 2.0, Vector3(0, 1, 0),
+                     Vector3(0, 0, 1), Vector3(1, 0, 0));
     ASSERT_EQ(in.set(inputs(A, genericA())), fmi2OK);
     expectOutputs(in, law.evaluate(A, genericA()));
 }

@@ -14,7 +14,7 @@ namespace {
 
 using namespace fmuTest;
 
-class FmuApi : public ConnectorFmu {};
+class FmuApi : public ConnectorFmu { };
 
 TEST_P(FmuApi, ExportsEveryFmi2Function)
 {
@@ -41,9 +41,10 @@ TEST_P(FmuApi, ModelExchangeInstanceIsRefused)
 {
     Instance instance(*fmu, nullptr, fmi2ModelExchange);
     EXPECT_EQ(instance.c, nullptr);
-    EXPECT_EQ(instance.lastMessage(), "fmi2Instantiate: " + fmu->name
-                                          + " supports co-simulation only "
-                                            "(fmuType fmi2CoSimulation)");
+    EXPECT_EQ(instance.lastMessage(),
+              "fmi2Instantiate: " + fmu->name
+                  + " supports co-simulation only "
+                    "(fmuType fmi2CoSimulation)");
 }
 
 TEST_P(FmuApi, CallsInTheWrongStateAreRejected)
@@ -52,8 +53,9 @@ TEST_P(FmuApi, CallsInTheWrongStateAreRejected)
     ASSERT_NE(in.c, nullptr);
     const Fmi2Api& f = fmu->api;
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: not allowed in state instantiated "
-                                "(allowed in stepComplete)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2DoStep: not allowed in state instantiated "
+              "(allowed in stepComplete)");
     EXPECT_EQ(in.log.back().category, "logStatusError");
     EXPECT_EQ(f.ExitInitializationMode(in.c), fmi2Error);
     EXPECT_EQ(in.lastMessage(),
@@ -67,14 +69,16 @@ TEST_P(FmuApi, CallsInTheWrongStateAreRejected)
     ASSERT_EQ(in.initialize({}), fmi2OK);
     EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0),
               fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetupExperiment: not allowed in state "
-                                "stepComplete (allowed in instantiated)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetupExperiment: not allowed in state "
+              "stepComplete (allowed in instantiated)");
     EXPECT_EQ(f.EnterInitializationMode(in.c), fmi2Error);
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
     EXPECT_EQ(f.Terminate(in.c), fmi2OK);
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: not allowed in state terminated "
-                                "(allowed in stepComplete)");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2DoStep: not allowed in state terminated "
+              "(allowed in stepComplete)");
     EXPECT_EQ(in.set({{"A.r[1]", 1.0}}), fmi2Error);
     EXPECT_EQ(f.Reset(in.c), fmi2OK);
     EXPECT_EQ(in.initialize({}), fmi2OK);
@@ -101,9 +105,9 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
               std::string::npos)
         << in.lastMessage();
     EXPECT_EQ(f.SetReal(in.c, &force, 1, &value), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetReal: variable A.F[1] (value reference "
-                                    + std::to_string(force)
-                                    + ") is an output and cannot be set");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetReal: variable A.F[1] (value reference "
+                  + std::to_string(force) + ") is an output and cannot be set");
     const fmi2ValueReference p = fmu->ref("A.p[1]");
     EXPECT_EQ(f.SetReal(in.c, &p, 1, &value), fmi2Error);
     EXPECT_EQ(in.lastMessage(),
@@ -113,10 +117,10 @@ TEST_P(FmuApi, BadValueReferencesAreNamed)
                     "fmi2ExitInitializationMode");
     fmi2Integer integer = 0;
     EXPECT_EQ(f.GetInteger(in.c, &p, 1, &integer), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetInteger: value reference "
-                                    + std::to_string(p)
-                                    + " is not of type Integer: " + fmu->name
-                                    + " has only Real and Boolean variables");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetInteger: value reference " + std::to_string(p)
+                  + " is not of type Integer: " + fmu->name
+                  + " has only Real and Boolean variables");
     // The instance is still usable.
     EXPECT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
 }
@@ -128,18 +132,18 @@ TEST_P(FmuApi, UnsupportedFunctionsReturnError)
     const Fmi2Api& f = fmu->api;
     fmi2Real x[1] = {0.0};
     fmi2Boolean b = fmi2False;
-    fmi2EventInfo info{};
-    const std::vector<fmi2Status> statuses = {
-        f.SetTime(in.c, 1.0),
-        f.EnterEventMode(in.c),
-        f.NewDiscreteStates(in.c, &info),
-        f.EnterContinuousTimeMode(in.c),
-        f.CompletedIntegratorStep(in.c, fmi2True, &b, &b),
-        f.SetContinuousStates(in.c, x, 0),
-        f.GetDerivatives(in.c, x, 0),
-        f.GetEventIndicators(in.c, x, 0),
-        f.GetContinuousStates(in.c, x, 0),
-        f.GetNominalsOfContinuousStates(in.c, x, 0)};
+    fmi2EventInfo info {};
+    const std::vector<fmi2Status> statuses
+        = {f.SetTime(in.c, 1.0),
+           f.EnterEventMode(in.c),
+           f.NewDiscreteStates(in.c, &info),
+           f.EnterContinuousTimeMode(in.c),
+           f.CompletedIntegratorStep(in.c, fmi2True, &b, &b),
+           f.SetContinuousStates(in.c, x, 0),
+           f.GetDerivatives(in.c, x, 0),
+           f.GetEventIndicators(in.c, x, 0),
+           f.GetContinuousStates(in.c, x, 0),
+           f.GetNominalsOfContinuousStates(in.c, x, 0)};
     for (const fmi2Status s : statuses) {
         EXPECT_EQ(s, fmi2Error);
     }
@@ -212,8 +216,9 @@ TEST_P(FmuApi, NonFiniteInputIsAnErrorNeverANaN)
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2Error);
     EXPECT_EQ(in.log.back().status, fmi2Error);
     EXPECT_EQ(in.log.back().category, "logStatusError");
-    EXPECT_EQ(in.lastMessage(), "fmi2DoStep: " + fmu->name
-                                    + ": input A.v[2] = nan is not finite");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2DoStep: " + fmu->name
+                  + ": input A.v[2] = nan is not finite");
     // In the error state outputs cannot be read, and nothing NaN comes out.
     std::vector<double> out(connectorOutputs().size(), 0.0);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
@@ -227,8 +232,9 @@ TEST_P(FmuApi, NonFiniteInputIsAnErrorNeverANaN)
     ASSERT_EQ(in.set({{"A.R[3,1]", -std::numeric_limits<double>::infinity()}}),
               fmi2OK);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2GetReal: " + fmu->name
-                                    + ": input A.R[3,1] = -inf is not finite");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetReal: " + fmu->name
+                  + ": input A.R[3,1] = -inf is not finite");
     ASSERT_EQ(f.SetFMUstate(in.c, saved), fmi2OK);
     EXPECT_EQ(f.DoStep(in.c, 0.1, 0.1, fmi2True), fmi2OK);
     EXPECT_EQ(in.get(connectorOutputs(), out), fmi2OK);
@@ -267,14 +273,15 @@ TEST_P(FmuApi, RestConfigurationHasNoLoad)
     ASSERT_EQ(f.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK);
     std::vector<double> out;
     ASSERT_EQ(in.get(connectorOutputs(), out), fmi2OK);
-    for (std::size_t i = 0; i < 12; ++i) {               // A.F, A.M, B.F, B.M
+    for (std::size_t i = 0; i < 12; ++i) { // A.F, A.M, B.F, B.M
         // Tolerance: round-off of O(1) m geometry times stiffnesses up to
         // ~1e3 N/m (linearSpring and linearDamper give exactly 0).
         EXPECT_NEAR(out[i], 0.0, 1e-10) << connectorOutputs()[i];
     }
     EXPECT_EQ(f.SetBoolean(in.c, &rest, 1, &value), fmi2Error);
-    EXPECT_EQ(in.lastMessage(), "fmi2SetBoolean: variable inputsStartAtRest is "
-                                "a constant and cannot be set");
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2SetBoolean: variable inputsStartAtRest is "
+              "a constant and cannot be set");
     double real = 0.0;
     EXPECT_EQ(f.GetReal(in.c, &rest, 1, &real), fmi2Error);
     EXPECT_EQ(in.lastMessage(),
@@ -293,14 +300,17 @@ TEST_P(FmuApi, UnloadingLeavesNoHeapBehind)
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "LeakSanitizer checks the heap of a sanitized build";
 #endif
-    { LoadedFmu warmUp(GetParam()); }
+    {
+        LoadedFmu warmUp(GetParam());
+    }
     const std::size_t before = mallinfo2().uordblks;
     for (int load = 0; load < 10; ++load) {
         LoadedFmu again(GetParam());
         ASSERT_TRUE(again.missing.empty());
     }
     const std::size_t after = mallinfo2().uordblks;
-    EXPECT_LT(after, before + 72704) << after - before
+    EXPECT_LT(after, before + 72704)
+        << after - before
         << " bytes left on the heap by 10 loads and unloads of " << GetParam();
 }
 

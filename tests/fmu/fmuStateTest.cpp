@@ -11,7 +11,7 @@ namespace {
 
 using namespace fmuTest;
 
-class FmuStates : public ConnectorFmu {};
+class FmuStates : public ConnectorFmu { };
 
 //- Initialised instance with generic parameters and inputs, stepped once
 void prepare(const LoadedFmu& fmu, Instance& in)
@@ -146,11 +146,11 @@ TEST_P(FmuStates, DeserializingGarbageFails)
               fmi2Error);
     // the size of this FMU's states first (then, for an FMU without
     // internal state, the size a state with one would need)
-    EXPECT_EQ(in.lastMessage().rfind("fmi2DeSerializeFMUstate: serialized state has "
-                                         + std::to_string(longer.size())
-                                         + " bytes, expected "
-                                         + std::to_string(good.size()),
-                                     0),
+    EXPECT_EQ(in.lastMessage().rfind(
+                  "fmi2DeSerializeFMUstate: serialized state has "
+                      + std::to_string(longer.size()) + " bytes, expected "
+                      + std::to_string(good.size()),
+                  0),
               0u)
         << in.lastMessage();
     EXPECT_EQ(s, nullptr);

@@ -12,8 +12,8 @@ namespace {
 
 using namespace fmuTest;
 
-const std::vector<std::string> hingeOutputs = {
-    "angle", "angleRate", "gap", "misalignment", "ptoTorque", "ptoPower"};
+const std::vector<std::string> hingeOutputs
+    = {"angle", "angleRate", "gap", "misalignment", "ptoTorque", "ptoPower"};
 
 connectors::HingeParameters lawParameters()
 {
@@ -37,14 +37,14 @@ connectors::HingeParameters lawParameters()
 std::map<std::string, double>
 fmuParameters(const connectors::HingeParameters& p)
 {
-    std::map<std::string, double> m = {
-        {"stiffness", p.stiffness},
-        {"damping", p.damping},
-        {"rotationalStiffness", p.rotationalStiffness},
-        {"rotationalDamping", p.rotationalDamping},
-        {"ptoStiffness", p.ptoStiffness},
-        {"ptoDamping", p.ptoDamping},
-        {"ptoRestAngle", p.ptoRestAngle}};
+    std::map<std::string, double> m
+        = {{"stiffness", p.stiffness},
+           {"damping", p.damping},
+           {"rotationalStiffness", p.rotationalStiffness},
+           {"rotationalDamping", p.rotationalDamping},
+           {"ptoStiffness", p.ptoStiffness},
+           {"ptoDamping", p.ptoDamping},
+           {"ptoRestAngle", p.ptoRestAngle}};
     addVector(m, "A.p", p.p_AoP_A);
     addVector(m, "B.p", p.p_BoQ_B);
     addVector(m, "A.axis", p.axis_A);
@@ -103,8 +103,8 @@ TEST(HingeFmu, OutputsEqualTheLaw)
     ASSERT_EQ(in.set(inputs(genericA(), genericB())), fmi2OK);
     ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK)
         << in.lastMessage();
-    const connectors::HingeResult first =
-        law.evaluate(genericA(), genericB(), 0.0);
+    const connectors::HingeResult first
+        = law.evaluate(genericA(), genericB(), 0.0);
     expectOutputs(in, first);
     ASSERT_EQ(in.set(inputs(genericB(), genericA())), fmi2OK);
     expectOutputs(in, law.evaluate(genericB(), genericA(), first.angle));
@@ -186,9 +186,9 @@ TEST(HingeFmu, OppositeAxesGiveFiniteOutputs)
     LoadedFmu fmu("hinge");
     Instance in(fmu);
     ASSERT_EQ(in.initialize({{"rotationalStiffness", 10.0}}), fmi2OK);
-    const BodyKinematics flipped =
-        kinematics(Vector3::Zero(), EIGEN_PI, Vector3(1, 0, 0), Vector3::Zero(),
-                   Vector3::Zero());
+    const BodyKinematics flipped
+        = kinematics(Vector3::Zero(), EIGEN_PI, Vector3(1, 0, 0),
+                     Vector3::Zero(), Vector3::Zero());
     ASSERT_EQ(in.set(inputs(BodyKinematics(), flipped)), fmi2OK);
     ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK)
         << in.lastMessage();

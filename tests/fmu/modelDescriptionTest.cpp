@@ -109,7 +109,8 @@ TEST_P(ModelDescription, InterfaceVariables)
             expected[body + ".M" + k] = {"output", "N.m"};
             for (int j = 1; j <= 3; ++j) {
                 expected[body + ".R[" + std::to_string(i) + ","
-                         + std::to_string(j) + "]"] = {"input", "1"};
+                         + std::to_string(j) + "]"]
+                    = {"input", "1"};
             }
         }
     }
@@ -128,10 +129,10 @@ TEST_P(ModelDescription, InterfaceVariables)
         const bool twoBody = byName.count("B.r[1]") == 1;
         const std::string head = name.substr(0, 3);
         const bool required = head == "A.r" || head == "A.R" || head == "A.F"
-                              || head == "A.M"
-                              || (twoBody
-                                  && (head == "B.r" || head == "B.R"
-                                      || head == "B.F" || head == "B.M"));
+            || head == "A.M"
+            || (twoBody
+                && (head == "B.r" || head == "B.R" || head == "B.F"
+                    || head == "B.M"));
         if (!required && byName.count(name) == 0) {
             continue;
         }
@@ -198,8 +199,8 @@ TEST_P(ModelDescription, ObservedDependenciesAreDeclared)
     // input must move some output (a connector declares only what it reads).
     const std::vector<pugi::xml_node> vars = variables();
     const std::map<int, std::set<int>> declaredOut = unknowns("Outputs");
-    const std::map<int, std::set<int>> declaredInit =
-        unknowns("InitialUnknowns");
+    const std::map<int, std::set<int>> declaredInit
+        = unknowns("InitialUnknowns");
     const std::map<std::string, double> base = inputs(genericA(), genericB());
     const std::map<std::string, double> parameters = genericParameters(*fmu);
     std::map<std::string, int> indexOf; // 1-based position in ModelVariables

@@ -15,11 +15,18 @@ namespace {
 
 using namespace fmuTest;
 
-const std::map<std::string, double> chainParameters = {
-    {"unstretchedLength", 100.0}, {"EA", 5e7},          {"axialDamping", 2e5},
-    {"massPerLength", 80.0},      {"diameter", 0.1},    {"normalDrag", 1.2},
-    {"tangentialDrag", 0.05},     {"normalAddedMass", 1.0}, {"seabedContact", 1.0},
-    {"segments", 10.0},           {"A.p[3]", -2.0}};
+const std::map<std::string, double> chainParameters
+    = {{"unstretchedLength", 100.0},
+       {"EA", 5e7},
+       {"axialDamping", 2e5},
+       {"massPerLength", 80.0},
+       {"diameter", 0.1},
+       {"normalDrag", 1.2},
+       {"tangentialDrag", 0.05},
+       {"normalAddedMass", 1.0},
+       {"seabedContact", 1.0},
+       {"segments", 10.0},
+       {"A.p[3]", -2.0}};
 
 connectors::MooringLineParameters lawParameters()
 {
@@ -41,15 +48,17 @@ connectors::MooringLineParameters lawParameters()
 //- A body surging and heaving 80 m from the anchor in 40 m of water
 BodyKinematics floater(double t)
 {
-    return kinematics(Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)),
-                      0.0, Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
-                      Vector3::Zero());
+    return kinematics(
+        Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)), 0.0,
+        Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
+        Vector3::Zero());
 }
 
 std::vector<std::string> names()
 {
     std::vector<std::string> n = connectorOutputs();
-    for (const char* extra : {"fairleadTension", "anchorTension", "groundedLength", "H", "V"}) {
+    for (const char* extra :
+         {"fairleadTension", "anchorTension", "groundedLength", "H", "V"}) {
         n.push_back(extra);
     }
     return n;
@@ -83,7 +92,8 @@ TEST(MooringLineFmu, OutputsEqualTheLaw)
     Instance in(fmu);
     ASSERT_EQ(initialise(fmu, in), fmi2OK) << in.lastMessage();
     connectors::MooringLine law(lawParameters());
-    connectors::MooringLineState s = law.initialState(floater(0.0), BodyKinematics(), 0.0);
+    connectors::MooringLineState s
+        = law.initialState(floater(0.0), BodyKinematics(), 0.0);
     const double h = 0.1;
     for (int k = 0; k < 30; ++k) {
         const double t = k * h;
@@ -96,8 +106,10 @@ TEST(MooringLineFmu, OutputsEqualTheLaw)
         // relative to the tension is ample.
         const double T = want.fairleadTension;
         for (int i = 0; i < 3; ++i) {
-            EXPECT_NEAR(got[std::size_t(i)], want.loads.A.f_W[i], 1e-5 * T) << k;
-            EXPECT_NEAR(got[std::size_t(6 + i)], want.loads.B.f_W[i], 1e-5 * T) << k;
+            EXPECT_NEAR(got[std::size_t(i)], want.loads.A.f_W[i], 1e-5 * T)
+                << k;
+            EXPECT_NEAR(got[std::size_t(6 + i)], want.loads.B.f_W[i], 1e-5 * T)
+                << k;
         }
         EXPECT_NEAR(got[17], T, 1e-5 * T);
         EXPECT_NEAR(got[19], want.groundedLength, 1e-9);
@@ -120,12 +132,14 @@ TEST(MooringLineFmu, RepeatedStepsEqualTheUninterruptedRun)
         for (int corrector = 0; corrector < 2; ++corrector) {
             BodyKinematics guess = floater(t + h);
             guess.p_WBo_W[0] += 0.2 * (corrector + 1);
-            guess.v_WBo_W[2] -= 0.5 * (corrector + 1); // the end velocity is state too
+            guess.v_WBo_W[2]
+                -= 0.5 * (corrector + 1); // the end velocity is state too
             ASSERT_EQ(repeated.set(inputs(guess, BodyKinematics())), fmi2OK);
             ASSERT_EQ(fmu.api.DoStep(repeated.c, t, h, fmi2True), fmi2OK);
             ASSERT_EQ(fmu.api.SetFMUstate(repeated.c, saved), fmi2OK);
         }
-        EXPECT_EQ(step(fmu, repeated, t, h), reference) << "step " << k; // bit for bit
+        EXPECT_EQ(step(fmu, repeated, t, h), reference)
+            << "step " << k; // bit for bit
     }
     EXPECT_EQ(fmu.api.FreeFMUstate(repeated.c, &saved), fmi2OK);
 }
@@ -145,58 +159,72 @@ TEST(MooringLineFmu, SerializedStateContinuesInAnotherInstance)
     ASSERT_EQ(fmu.api.SerializedFMUstateSize(in.c, saved, &size), fmi2OK);
     // header + value array + count + 13 + 6 (N - 1) internal values
     std::vector<fmi2Byte> bytes(size);
-    ASSERT_EQ(fmu.api.SerializeFMUstate(in.c, saved, bytes.data(), size), fmi2OK);
+    ASSERT_EQ(fmu.api.SerializeFMUstate(in.c, saved, bytes.data(), size),
+              fmi2OK);
 
     Instance other(fmu); // a restart: a new instance, no parameters set
     fmi2FMUstate restored = nullptr;
-    ASSERT_EQ(fmu.api.DeSerializeFMUstate(other.c, bytes.data(), size, &restored), fmi2OK)
+    ASSERT_EQ(
+        fmu.api.DeSerializeFMUstate(other.c, bytes.data(), size, &restored),
+        fmi2OK)
         << other.lastMessage();
-    ASSERT_EQ(fmu.api.SetFMUstate(other.c, restored), fmi2OK) << other.lastMessage();
+    ASSERT_EQ(fmu.api.SetFMUstate(other.c, restored), fmi2OK)
+        << other.lastMessage();
     for (int k = 10; k < 20; ++k) {
         EXPECT_EQ(step(fmu, other, k * h, h), step(fmu, in, k * h, h)) << k;
     }
     // a state of another line size does not fit
     std::vector<fmi2Byte> cut(bytes.begin(), bytes.end() - 6 * sizeof(double));
     fmi2FMUstate bad = nullptr;
-    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
-    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
-                                       + std::to_string(cut.size()) + " bytes, expected "
-                                       + std::to_string(bytes.size()));
+    EXPECT_EQ(
+        fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad),
+        fmi2Error);
+    EXPECT_EQ(other.lastMessage(),
+              "fmi2DeSerializeFMUstate: serialized state has "
+                  + std::to_string(cut.size()) + " bytes, expected "
+                  + std::to_string(bytes.size()));
     // cut within the count of the internal state, and within the values:
     // the message says where, not a size the line's state never has
-    const std::size_t internalBytes = sizeof(std::uint64_t) + (13 + 6 * 9) * sizeof(double); // N = 10
+    const std::size_t internalBytes
+        = sizeof(std::uint64_t) + (13 + 6 * 9) * sizeof(double); // N = 10
     const std::size_t values = bytes.size() - internalBytes;
     cut.assign(bytes.begin(), bytes.begin() + values + 4);
-    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
-    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
-                                       + std::to_string(cut.size())
-                                       + " bytes, expected " + std::to_string(values)
-                                       + " without internal state, or at least "
-                                       + std::to_string(values + 8) + " with one");
+    EXPECT_EQ(
+        fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad),
+        fmi2Error);
+    EXPECT_EQ(other.lastMessage(),
+              "fmi2DeSerializeFMUstate: serialized state has "
+                  + std::to_string(cut.size()) + " bytes, expected "
+                  + std::to_string(values)
+                  + " without internal state, or at least "
+                  + std::to_string(values + 8) + " with one");
     cut.assign(bytes.begin(), bytes.begin() + values - 8);
-    EXPECT_EQ(fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad), fmi2Error);
-    EXPECT_EQ(other.lastMessage(), "fmi2DeSerializeFMUstate: serialized state has "
-                                       + std::to_string(cut.size())
-                                       + " bytes, shorter than its value array ("
-                                       + std::to_string(values) + " bytes)");
+    EXPECT_EQ(
+        fmu.api.DeSerializeFMUstate(other.c, cut.data(), cut.size(), &bad),
+        fmi2Error);
+    EXPECT_EQ(other.lastMessage(),
+              "fmi2DeSerializeFMUstate: serialized state has "
+                  + std::to_string(cut.size())
+                  + " bytes, shorter than its value array ("
+                  + std::to_string(values) + " bytes)");
 }
 
 TEST(MooringLineFmu, ParameterErrorsAreNamed)
 {
     LoadedFmu fmu("mooringLine");
-    for (const auto& [name, value, message] :
-         {std::tuple<std::string, double, std::string>{
-              "relativeTolerance", 0.0,
-              "mooringLine: parameter relativeTolerance = 0 is out of range (allowed: finite and > 0)"},
-          {
-              "segments", 2.5,
-              "mooringLine: parameter segments = 2.5 is out of range (allowed: an "
-              "integer from 2 to 1000)"},
-          {"massPerLength", 0.0,
-           "mooringLine: parameter massPerLength = 0 kg/m is out of range (allowed: "
-           "finite and > 0)"},
-          {"seabedContact", 2.0,
-           "mooringLine: parameter seabedContact = 2 is out of range (allowed: 0 or 1)"}}) {
+    for (
+        const auto& [name, value, message] :
+        {std::tuple<std::string, double, std::string> {
+             "relativeTolerance", 0.0,
+             "mooringLine: parameter relativeTolerance = 0 is out of range (allowed: finite and > 0)"},
+         {"segments", 2.5,
+          "mooringLine: parameter segments = 2.5 is out of range (allowed: an "
+          "integer from 2 to 1000)"},
+         {"massPerLength", 0.0,
+          "mooringLine: parameter massPerLength = 0 kg/m is out of range (allowed: "
+          "finite and > 0)"},
+         {"seabedContact", 2.0,
+          "mooringLine: parameter seabedContact = 2 is out of range (allowed: 0 or 1)"}}) {
         Instance in(fmu);
         std::map<std::string, double> p = chainParameters;
         p[name] = value;
@@ -212,9 +240,11 @@ TEST(MooringLineFmu, BinaryCarriesSundials)
     // SUNDIALS is not installed
     const LoadedFmu fmu("mooringLine");
     auto onBinary = [&fmu](const std::string& tool) {
-        const std::string command =
-            tool + " '" + (fmu.directory / "binaries/linux64/mooringLine.so").string() + "'";
-        std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+        const std::string command = tool + " '"
+            + (fmu.directory / "binaries/linux64/mooringLine.so").string()
+            + "'";
+        std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"),
+                                                   pclose);
         std::string text;
         char buffer[512];
         while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {

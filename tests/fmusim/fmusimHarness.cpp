@@ -29,29 +29,28 @@ std::vector<std::string> fields(const std::string& line)
     std::vector<std::string> out;
     std::string field;
     bool quoted = false;
-    for (const char c : line)
-    {
+    for (const char c : line) {
         if (c == '"')
             quoted = !quoted;
-        else if (c == ',' && !quoted)
-        {
+        else if (c == ',' && !quoted) {
             out.push_back(field);
             field.clear();
-        }
-        else
+        } else
             field += c;
     }
     out.push_back(field);
     return out;
 }
 
-}  // namespace
+} // namespace
 
 std::string scratch(const std::string& name)
 {
-    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "fmusimTests" /
-                                      (std::string(info->test_suite_name()) + "." + info->name());
+    const ::testing::TestInfo* info
+        = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path()
+        / "fmusimTests"
+        / (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::create_directories(dir);
     return (dir / name).string();
 }
@@ -60,12 +59,16 @@ Result fmusim(const std::string& arguments, double limitSeconds)
 {
     const std::string out = scratch("stdout.txt"), err = scratch("stderr.txt");
     // exec: fmusim replaces the shell, so its exit status is the shell's.
-    const std::string command = "ulimit -c 0; exec timeout -s KILL " + std::to_string(limitSeconds) + " " +
-                                std::string(FMUSIM) + " " + arguments + " > " + out + " 2> " + err;
+    const std::string command = "ulimit -c 0; exec timeout -s KILL "
+        + std::to_string(limitSeconds) + " " + std::string(FMUSIM) + " "
+        + arguments + " > " + out + " 2> " + err;
     const auto start = std::chrono::steady_clock::now();
     const int status = std::system(command.c_str());
-    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Result r {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out),
+              slurp(err)};
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                              - start)
+                    .count();
     // timeout(1) reports a child killed by signal N as killed by N itself,
     // and a shell as exit status 128 + N.
     if (WIFSIGNALED(status))
@@ -75,14 +78,21 @@ Result fmusim(const std::string& arguments, double limitSeconds)
     return r;
 }
 
-std::string fixture(const std::string& name) { return std::string(FIXTURE_FMU_DIR) + "/" + name + ".fmu"; }
+std::string fixture(const std::string& name)
+{
+    return std::string(FIXTURE_FMU_DIR) + "/" + name + ".fmu";
+}
 
-void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+void writeFile(const std::string& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+}
 
 std::size_t Table::column(const std::string& name) const
 {
     for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return i;
+        if (names[i] == name)
+            return i;
     throw std::runtime_error("no column " + name);
 }
 
@@ -90,7 +100,8 @@ std::vector<double> Table::values(const std::string& name) const
 {
     const std::size_t c = column(name);
     std::vector<double> v;
-    for (const std::vector<double>& row : rows) v.push_back(row.at(c));
+    for (const std::vector<double>& row : rows)
+        v.push_back(row.at(c));
     return v;
 }
 
@@ -99,26 +110,29 @@ Table parseTable(const std::string& text)
     Table t;
     std::istringstream in(text);
     std::string line;
-    while (std::getline(in, line))
-    {
-        if (line.empty()) continue;
-        if (t.names.empty())
-        {
+    while (std::getline(in, line)) {
+        if (line.empty())
+            continue;
+        if (t.names.empty()) {
             t.names = fields(line);
             continue;
         }
         std::vector<double> row;
-        for (const std::string& f : fields(line))
-        {
+        for (const std::string& f : fields(line)) {
             char* end = nullptr;
             const double value = std::strtod(f.c_str(), &end);
-            row.push_back(end != f.c_str() && *end == '\0' ? value : std::numeric_limits<double>::quiet_NaN());
+            row.push_back(end != f.c_str() && *end == '\0'
+                              ? value
+                              : std::numeric_limits<double>::quiet_NaN());
         }
         t.rows.push_back(row);
     }
     return t;
 }
 
-Table readTable(const std::string& path) { return parseTable(slurp(path)); }
+Table readTable(const std::string& path)
+{
+    return parseTable(slurp(path));
+}
 
-}  // namespace harness
+} // namespace harness

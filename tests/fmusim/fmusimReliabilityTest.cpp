@@ -15,17 +15,20 @@ using harness::fixture;
 using harness::fmusim;
 using harness::scratch;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
 
 // The rows of a CSV with communication points k h, k = 0..last.
 void expectRowsUpTo(const std::string& csv, double h, int last)
 {
     const harness::Table t = harness::readTable(csv);
     ASSERT_EQ(t.rows.size(), static_cast<std::size_t>(last + 1)) << csv;
-    for (int k = 0; k <= last; ++k)
-    {
+    for (int k = 0; k <= last; ++k) {
         EXPECT_EQ(t.rows[k][0], k * h) << csv << " row " << k;
-        for (const double value : t.rows[k]) EXPECT_TRUE(std::isfinite(value)) << csv << " row " << k;
+        for (const double value : t.rows[k])
+            EXPECT_TRUE(std::isfinite(value)) << csv << " row " << k;
     }
 }
 
@@ -34,12 +37,15 @@ void expectRowsUpTo(const std::string& csv, double h, int last)
 TEST(FmusimReliability, RunStopsAtANonFiniteOutput)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("run " + fixture("faultySpring") +
-                                     " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --output-file " + out);
+    const harness::Result r = fmusim(
+        "run " + fixture("faultySpring")
+        + " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --output-file "
+        + out);
     EXPECT_EQ(r.exitCode, 5) << r.err;
-    EXPECT_TRUE(contains(r.err, "FMU '" + fixture("faultySpring") +
-                                    "', instance 'faultySpring': output 'A.F[1]' is "
-                                    "nan at t = 0.75, expected a finite number"))
+    EXPECT_TRUE(contains(r.err,
+                         "FMU '" + fixture("faultySpring")
+                             + "', instance 'faultySpring': output 'A.F[1]' is "
+                               "nan at t = 0.75, expected a finite number"))
         << r.err;
     expectRowsUpTo(out, 0.25, 2);
 }
@@ -48,15 +54,16 @@ TEST(FmusimReliability, TwoBodyStopsAtANonFiniteOutput)
 {
     // Both bodies fixed: the NaN load moves nothing, only the check stops it.
     const std::string out = scratch("out.csv");
-    const harness::Result r =
-        fmusim("twobody " + fixture("faultySpring") +
-               " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --B.position 1,0,0 --A.motion fixed --B.motion fixed"
-               " --output-file " +
-               out);
+    const harness::Result r = fmusim(
+        "twobody " + fixture("faultySpring")
+        + " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --B.position 1,0,0 --A.motion fixed --B.motion fixed"
+          " --output-file "
+        + out);
     EXPECT_EQ(r.exitCode, 5) << r.err;
-    EXPECT_TRUE(
-        contains(r.err, "FMU '" + fixture("faultySpring") +
-                            "', instance 'twobody': output 'A.F[1]' is nan at t = 0.75, expected a finite number"))
+    EXPECT_TRUE(contains(
+        r.err,
+        "FMU '" + fixture("faultySpring")
+            + "', instance 'twobody': output 'A.F[1]' is nan at t = 0.75, expected a finite number"))
         << r.err;
     expectRowsUpTo(out, 0.25, 2);
 }
@@ -67,12 +74,15 @@ TEST(FmusimReliability, TwoBodyStopsAtANonFiniteOutput)
 TEST(FmusimReliability, RowsSurviveACrashInTheFmu)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("run " + fixture("faultySpring") +
-                                     " --set crashTime=0.75 --step-size 0.0009765625 --output-file " + out);
+    const harness::Result r = fmusim(
+        "run " + fixture("faultySpring")
+        + " --set crashTime=0.75 --step-size 0.0009765625 --output-file "
+        + out);
     EXPECT_EQ(r.signal, SIGSEGV) << "exit code " << r.exitCode << "\n" << r.err;
-    EXPECT_TRUE(
-        contains(r.err, "fmusim: the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t = 0.75 in FMU '" +
-                            fixture("faultySpring") + "', instance 'faultySpring'"))
+    EXPECT_TRUE(contains(
+        r.err,
+        "fmusim: the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t = 0.75 in FMU '"
+            + fixture("faultySpring") + "', instance 'faultySpring'"))
         << r.err;
     expectRowsUpTo(out, 0.0009765625, 768);
 }
@@ -82,9 +92,10 @@ TEST(FmusimReliability, RowsSurviveACrashInTheFmu)
 TEST(FmusimReliability, RowsSurviveACrashInTwoBody)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r =
-        fmusim("twobody " + fixture("faultySpring") +
-               " --set crashTime=0.75 --B.position 1.1,0,0 --step-size 0.00390625 --stop-time 1 --output-file " + out);
+    const harness::Result r = fmusim(
+        "twobody " + fixture("faultySpring")
+        + " --set crashTime=0.75 --B.position 1.1,0,0 --step-size 0.00390625 --stop-time 1 --output-file "
+        + out);
     EXPECT_EQ(r.signal, SIGSEGV) << "exit code " << r.exitCode << "\n" << r.err;
     expectRowsUpTo(out, 0.00390625, 192);
 }
@@ -95,13 +106,18 @@ TEST(FmusimReliability, RowsSurviveACrashInTwoBody)
 TEST(FmusimReliability, RunTimesOutInAnEndlessStep)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("run " + fixture("faultySpring") +
-                                         " --set hangTime=0.75 --step-size 0.00390625 --timeout 1 --output-file " + out,
-                                     60);
+    const harness::Result r = fmusim(
+        "run " + fixture("faultySpring")
+            + " --set hangTime=0.75 --step-size 0.00390625 --timeout 1 --output-file "
+            + out,
+        60);
     EXPECT_EQ(r.exitCode, 6) << r.err;
     EXPECT_LT(r.seconds, 10);
-    EXPECT_TRUE(contains(r.err, "fmusim: time-out: fmi2DoStep at t = 0.75 in FMU '" + fixture("faultySpring") +
-                                    "', instance 'faultySpring' did not return within 1 s (--timeout)"))
+    EXPECT_TRUE(contains(
+        r.err,
+        "fmusim: time-out: fmi2DoStep at t = 0.75 in FMU '"
+            + fixture("faultySpring")
+            + "', instance 'faultySpring' did not return within 1 s (--timeout)"))
         << r.err;
     expectRowsUpTo(out, 0.00390625, 192);
 }
@@ -110,49 +126,67 @@ TEST(FmusimReliability, TwoBodyTimesOutInAnEndlessStep)
 {
     const std::string out = scratch("out.csv");
     const harness::Result r = fmusim(
-        "twobody " + fixture("faultySpring") +
-            " --set hangTime=0.3 --B.position 1,0,0 --step-size 0.25 --stop-time 2 --timeout 0.5 --output-file " + out,
+        "twobody " + fixture("faultySpring")
+            + " --set hangTime=0.3 --B.position 1,0,0 --step-size 0.25 --stop-time 2 --timeout 0.5 --output-file "
+            + out,
         60);
     EXPECT_EQ(r.exitCode, 6) << r.err;
     EXPECT_LT(r.seconds, 10);
-    EXPECT_TRUE(contains(r.err, "fmi2DoStep at t = 0.5 in FMU '" + fixture("faultySpring") +
-                                    "', instance 'twobody' did not return within 0.5 s"))
+    EXPECT_TRUE(
+        contains(r.err,
+                 "fmi2DoStep at t = 0.5 in FMU '" + fixture("faultySpring")
+                     + "', instance 'twobody' did not return within 0.5 s"))
         << r.err;
     expectRowsUpTo(out, 0.25, 2);
 }
 
 TEST(FmusimReliability, CheckTimesOutInAnEndlessStep)
 {
-    const harness::Result r = fmusim("check " + fixture("hangingSpring") + " --timeout 1", 60);
+    const harness::Result r
+        = fmusim("check " + fixture("hangingSpring") + " --timeout 1", 60);
     EXPECT_EQ(r.exitCode, 6) << r.out << r.err;
     EXPECT_LT(r.seconds, 10);
-    EXPECT_TRUE(contains(r.out, "PASS initialization\n")) << r.out;  // the checks before it are reported
-    EXPECT_TRUE(contains(r.err, "fmi2DoStep at t = 0 in FMU '" + fixture("hangingSpring") +
-                                    "', instance 'random' did not return within 1 s"))
+    EXPECT_TRUE(contains(r.out, "PASS initialization\n"))
+        << r.out; // the checks before it are reported
+    EXPECT_TRUE(
+        contains(r.err,
+                 "fmi2DoStep at t = 0 in FMU '" + fixture("hangingSpring")
+                     + "', instance 'random' did not return within 1 s"))
         << r.err;
 }
 
 TEST(FmusimReliability, TimeOutIsANonNegativeNumber)
 {
-    for (const char* command : {"run", "check", "twobody"})
-    {
-        const harness::Result negative = fmusim(std::string(command) + " " + fixture("testSpring") + " --timeout -1");
+    for (const char* command : {"run", "check", "twobody"}) {
+        const harness::Result negative
+            = fmusim(std::string(command) + " " + fixture("testSpring")
+                     + " --timeout -1");
         EXPECT_EQ(negative.exitCode, 2) << command;
-        EXPECT_TRUE(contains(negative.err, "timeout must be a non-negative number of seconds")) << negative.err;
-        EXPECT_EQ(fmusim(std::string(command) + " " + fixture("testSpring") + " --timeout soon").exitCode, 2)
+        EXPECT_TRUE(contains(
+            negative.err, "timeout must be a non-negative number of seconds"))
+            << negative.err;
+        EXPECT_EQ(fmusim(std::string(command) + " " + fixture("testSpring")
+                         + " --timeout soon")
+                      .exitCode,
+                  2)
             << command;
     }
     // 0, the default: no time-out.
-    EXPECT_EQ(fmusim("run " + fixture("faultySpring") + " --timeout 0 --stop-time 0.1").exitCode, 0);
+    EXPECT_EQ(fmusim("run " + fixture("faultySpring")
+                     + " --timeout 0 --stop-time 0.1")
+                  .exitCode,
+              0);
 }
 
 TEST(FmusimReliability, HelpDocumentsTheTimeOut)
 {
     const harness::Result r = fmusim("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* part : {"--timeout SECONDS       end the run (exit code 6)", "[--timeout SECONDS]",
-                             "timeout (0, no limit) [s]", "6  time-out: a call into the FMU did not return"})
+    for (const char* part :
+         {"--timeout SECONDS       end the run (exit code 6)",
+          "[--timeout SECONDS]", "timeout (0, no limit) [s]",
+          "6  time-out: a call into the FMU did not return"})
         EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
 }
 
-}  // namespace
+} // namespace

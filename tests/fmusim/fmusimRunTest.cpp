@@ -13,34 +13,40 @@ using harness::fixture;
 using harness::fmusim;
 using harness::scratch;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
 
 TEST(FmusimRun, StepResponseMatchesTheAnalyticSolution)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r =
-        fmusim("run " + fixture("firstOrderLag") +
-               " --set timeConstant=0.5 --set u=1 --stop-time 2 --step-size 0.01 --output-file " + out);
+    const harness::Result r = fmusim(
+        "run " + fixture("firstOrderLag")
+        + " --set timeConstant=0.5 --set u=1 --stop-time 2 --step-size 0.01 --output-file "
+        + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
-    ASSERT_EQ(t.names, (std::vector<std::string>{"time", "y", "stepCount"}));
+    ASSERT_EQ(t.names, (std::vector<std::string> {"time", "y", "stepCount"}));
     ASSERT_EQ(t.rows.size(), 201u);
-    for (std::size_t i = 0; i < t.rows.size(); ++i)
-    {
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
         const double time = t.rows[i][0];
-        EXPECT_NEAR(time, 0.01 * i, 1e-14);  // t0 + k h, not a running sum
+        EXPECT_NEAR(time, 0.01 * i, 1e-14); // t0 + k h, not a running sum
         // Exact steps, 17 significant digits in the CSV: round-off only.
-        EXPECT_NEAR(t.rows[i][1], 1 - std::exp(-time / 0.5), 1e-13) << "t = " << time;
+        EXPECT_NEAR(t.rows[i][1], 1 - std::exp(-time / 0.5), 1e-13)
+            << "t = " << time;
         EXPECT_EQ(t.rows[i][2], static_cast<double>(i));
     }
 }
 
 TEST(FmusimRun, DefaultExperimentAndStandardOutput)
 {
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --output-variables y");
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --output-variables y");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::parseTable(r.out);
-    ASSERT_EQ(t.rows.size(), 301u);  // DefaultExperiment: 0 to 3 s in steps of 0.01 s
+    ASSERT_EQ(t.rows.size(),
+              301u); // DefaultExperiment: 0 to 3 s in steps of 0.01 s
     EXPECT_DOUBLE_EQ(t.rows.back()[0], 3.0);
 }
 
@@ -53,20 +59,23 @@ TEST(FmusimRun, InputTableIsInterpolatedLinearly)
     // y = 2 + (y(1) - 2) e^(-(t - 1)).
     const std::string in = scratch("in.csv"), out = scratch("out.csv");
     harness::writeFile(in, "# ramp then hold\ntime, u\n0, 0\n1, 2\n\n3, 2\n");
-    const harness::Result r =
-        fmusim("run " + fixture("firstOrderLag") + " --input-file " + in + " --step-size 0.1 --stop-time 2.5" +
-               " --output-file " + out + " --output-variables u,y");
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in
+                 + " --step-size 0.1 --stop-time 2.5" + " --output-file " + out
+                 + " --output-variables u,y");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     ASSERT_EQ(t.rows.size(), 26u);
     const double y1 = 2 * std::exp(-1.0);
-    for (const std::vector<double>& row : t.rows)
-    {
+    for (const std::vector<double>& row : t.rows) {
         const double time = row[0];
         const double u = time <= 1 ? 2 * time : 2.0;
-        const double y = time <= 1 ? 2 * (time - 1 + std::exp(-time)) : 2 + (y1 - 2) * std::exp(-(time - 1));
-        EXPECT_NEAR(row[1], u, 1e-14) << "t = " << time;  // interpolated input echoed by the FMU
-        EXPECT_NEAR(row[2], y, 1e-13) << "t = " << time;  // exact steps: round-off only
+        const double y = time <= 1 ? 2 * (time - 1 + std::exp(-time))
+                                   : 2 + (y1 - 2) * std::exp(-(time - 1));
+        EXPECT_NEAR(row[1], u, 1e-14)
+            << "t = " << time; // interpolated input echoed by the FMU
+        EXPECT_NEAR(row[2], y, 1e-13)
+            << "t = " << time; // exact steps: round-off only
     }
 }
 
@@ -75,79 +84,109 @@ TEST(FmusimRun, BooleanInputTakesThePreviousRow)
     // hold switches on at t = 0.5: y must stay at y(0.5) from then on.
     const std::string in = scratch("in.csv"), out = scratch("out.csv");
     harness::writeFile(in, "time,u,hold\n0,1,0\n0.5,1,1\n");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in +
-                                     " --step-size 0.1 --stop-time 1 --output-file " + out);
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in
+                 + " --step-size 0.1 --stop-time 1 --output-file " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::vector<double> y = harness::readTable(out).values("y");
     ASSERT_EQ(y.size(), 11u);
     // The step ending at 0.5 is the first one made with hold = true.
     EXPECT_NEAR(y[4], 1 - std::exp(-0.4), 1e-14);
-    for (std::size_t i = 5; i < y.size(); ++i) EXPECT_EQ(y[i], y[4]);
+    for (std::size_t i = 5; i < y.size(); ++i)
+        EXPECT_EQ(y[i], y[4]);
 }
 
 TEST(FmusimRun, ParameterFileAndSetOverride)
 {
     const std::string params = scratch("params.txt"), out = scratch("out.csv");
-    harness::writeFile(params, "# lag parameters\ntimeConstant = 0.25   # s\n\ninitialValue = 3\nlabel = from file\n");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --parameters " + params +
-                                     " --set initialValue=2 --stop-time 1 --step-size 0.5 --output-file " + out +
-                                     " --output-variables y,label --logging");
+    harness::writeFile(
+        params,
+        "# lag parameters\ntimeConstant = 0.25   # s\n\ninitialValue = 3\nlabel = from file\n");
+    const harness::Result r = fmusim(
+        "run " + fixture("firstOrderLag") + " --parameters " + params
+        + " --set initialValue=2 --stop-time 1 --step-size 0.5 --output-file "
+        + out + " --output-variables y,label --logging");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
-    EXPECT_NEAR(t.rows[2][1], 2 * std::exp(-1 / 0.25), 1e-15);  // u = 0: pure decay from 2
-    EXPECT_TRUE(contains(r.err, "from file: timeConstant = 0.25 s, initialValue = 2")) << r.err;
+    EXPECT_NEAR(t.rows[2][1], 2 * std::exp(-1 / 0.25),
+                1e-15); // u = 0: pure decay from 2
+    EXPECT_TRUE(
+        contains(r.err, "from file: timeConstant = 0.25 s, initialValue = 2"))
+        << r.err;
 }
 
 TEST(FmusimRunErrors, BadRowInTheInputTable)
 {
     const std::string in = scratch("in.csv");
     harness::writeFile(in, "time,u\n0,0\n1,2,3\n");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(r.exitCode, 4);
-    EXPECT_TRUE(contains(r.err, in + ":3: expected 2 values, found 3")) << r.err;
+    EXPECT_TRUE(contains(r.err, in + ":3: expected 2 values, found 3"))
+        << r.err;
     EXPECT_TRUE(r.out.empty()) << "no output for a run that never started";
 
     harness::writeFile(in, "time,u\n0,0\n1,abc\n");
-    const harness::Result notNumber = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result notNumber
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(notNumber.exitCode, 4);
-    EXPECT_TRUE(contains(notNumber.err, in + ":3: 'abc' in column 2 is not a finite number")) << notNumber.err;
+    EXPECT_TRUE(contains(notNumber.err,
+                         in + ":3: 'abc' in column 2 is not a finite number"))
+        << notNumber.err;
 
     harness::writeFile(in, "time,u\n1,0\n0,2\n");
-    const harness::Result backwards = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result backwards
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(backwards.exitCode, 4);
-    EXPECT_TRUE(contains(backwards.err, in + ":3: time 0 is before the time of the previous row")) << backwards.err;
+    EXPECT_TRUE(
+        contains(backwards.err,
+                 in + ":3: time 0 is before the time of the previous row"))
+        << backwards.err;
 }
 
 TEST(FmusimRunErrors, MissingVariableInTheInputTable)
 {
     const std::string in = scratch("in.csv");
     harness::writeFile(in, "time,u,windSpeed\n0,0,1\n");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(r.exitCode, 4);
-    EXPECT_TRUE(contains(
-        r.err, in + ":1: column 'windSpeed': FMU '" + fixture("firstOrderLag") + "' has no variable 'windSpeed'"))
+    EXPECT_TRUE(contains(r.err,
+                         in + ":1: column 'windSpeed': FMU '"
+                             + fixture("firstOrderLag")
+                             + "' has no variable 'windSpeed'"))
         << r.err;
 
     harness::writeFile(in, "time,y\n0,0\n");
-    const harness::Result output = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result output
+        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
     EXPECT_EQ(output.exitCode, 4);
-    EXPECT_TRUE(contains(output.err, "column 'y': the variable is not an input")) << output.err;
+    EXPECT_TRUE(
+        contains(output.err, "column 'y': the variable is not an input"))
+        << output.err;
 }
 
 TEST(FmusimRunErrors, UnknownParameterInAFile)
 {
     const std::string params = scratch("params.txt");
     harness::writeFile(params, "timeConstant = 1\ngain = 2\n");
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --parameters " + params);
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --parameters " + params);
     EXPECT_EQ(r.exitCode, 4);
-    EXPECT_TRUE(contains(r.err, params + ":2: FMU '" + fixture("firstOrderLag") + "' has no variable 'gain'")) << r.err;
+    EXPECT_TRUE(contains(r.err,
+                         params + ":2: FMU '" + fixture("firstOrderLag")
+                             + "' has no variable 'gain'"))
+        << r.err;
 }
 
 TEST(FmusimRunErrors, MalformedFmu)
 {
     const harness::Result r = fmusim("run " + fixture("notAZip"));
     EXPECT_EQ(r.exitCode, 3);
-    EXPECT_TRUE(contains(r.err, "FMU '" + fixture("notAZip") + "' cannot be opened as a zip archive")) << r.err;
+    EXPECT_TRUE(contains(r.err,
+                         "FMU '" + fixture("notAZip")
+                             + "' cannot be opened as a zip archive"))
+        << r.err;
 
     const harness::Result guid = fmusim("run " + fixture("guidMismatch"));
     EXPECT_EQ(guid.exitCode, 3);
@@ -158,31 +197,43 @@ TEST(FmusimRunErrors, UsageErrors)
 {
     EXPECT_EQ(fmusim("").exitCode, 2);
     EXPECT_EQ(fmusim("simulate x.fmu").exitCode, 2);
-    const harness::Result option = fmusim("run " + fixture("firstOrderLag") + " --stop 3");
+    const harness::Result option
+        = fmusim("run " + fixture("firstOrderLag") + " --stop 3");
     EXPECT_EQ(option.exitCode, 2);
     EXPECT_TRUE(contains(option.err, "unknown option --stop")) << option.err;
-    const harness::Result value = fmusim("run " + fixture("firstOrderLag") + " --step-size fast");
+    const harness::Result value
+        = fmusim("run " + fixture("firstOrderLag") + " --step-size fast");
     EXPECT_EQ(value.exitCode, 2);
-    EXPECT_TRUE(contains(value.err, "--step-size: 'fast' is not a finite number")) << value.err;
-    const harness::Result set = fmusim("run " + fixture("firstOrderLag") + " --set y=1");
+    EXPECT_TRUE(
+        contains(value.err, "--step-size: 'fast' is not a finite number"))
+        << value.err;
+    const harness::Result set
+        = fmusim("run " + fixture("firstOrderLag") + " --set y=1");
     EXPECT_EQ(set.exitCode, 2);
-    EXPECT_TRUE(contains(set.err, "--set: variable 'y' cannot be set before initialization: it is neither a parameter nor an input and has no start value")) << set.err;
+    EXPECT_TRUE(contains(
+        set.err,
+        "--set: variable 'y' cannot be set before initialization: it is neither a parameter nor an input and has no start value"))
+        << set.err;
 }
 
 TEST(FmusimRunErrors, FailingFmuCallIsASimulationError)
 {
-    const harness::Result r = fmusim("run " + fixture("firstOrderLag") + " --set timeConstant=-1");
+    const harness::Result r
+        = fmusim("run " + fixture("firstOrderLag") + " --set timeConstant=-1");
     EXPECT_EQ(r.exitCode, 5);
     EXPECT_TRUE(contains(r.err, "fmi2ExitInitializationMode failed")) << r.err;
-    EXPECT_TRUE(contains(r.err, "timeConstant = -1 s must be positive and finite")) << r.err;
+    EXPECT_TRUE(
+        contains(r.err, "timeConstant = -1 s must be positive and finite"))
+        << r.err;
 }
 
 TEST(FmusimHelp, ListsSubcommandsAndExitCodes)
 {
     const harness::Result r = fmusim("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* part : {"fmusim run", "fmusim check", "fmusim twobody", "Exit codes", "5  simulation error"})
+    for (const char* part : {"fmusim run", "fmusim check", "fmusim twobody",
+                             "Exit codes", "5  simulation error"})
         EXPECT_TRUE(contains(r.out, part)) << part;
 }
 
-}  // namespace
+} // namespace

@@ -14,62 +14,80 @@ using harness::fixture;
 using harness::fmusim;
 using harness::scratch;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
 
 // Angular frequency from the upward zero crossings of s(t), each located by
 // linear interpolation between samples.
-double measuredFrequency(const std::vector<double>& t, const std::vector<double>& s)
+double measuredFrequency(const std::vector<double>& t,
+                         const std::vector<double>& s)
 {
     std::vector<double> crossings;
     for (std::size_t i = 1; i < s.size(); ++i)
-        if (s[i - 1] < 0 && s[i] >= 0) crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * s[i - 1] / (s[i - 1] - s[i]));
-    if (crossings.size() < 2) return 0;
-    return 2 * M_PI * (crossings.size() - 1) / (crossings.back() - crossings.front());
+        if (s[i - 1] < 0 && s[i] >= 0)
+            crossings.push_back(
+                t[i - 1] + (t[i] - t[i - 1]) * s[i - 1] / (s[i - 1] - s[i]));
+    if (crossings.size() < 2)
+        return 0;
+    return 2 * M_PI * (crossings.size() - 1)
+        / (crossings.back() - crossings.front());
 }
 
-struct Oscillation
-{
-    double frequencyError;  // relative
-    double momentumDrift;   // largest |total momentum| over the largest |momentum of A|
-    double energyDrift;     // largest relative change of kinetic + potential energy
+struct Oscillation {
+    double frequencyError; // relative
+    double
+        momentumDrift; // largest |total momentum| over the largest |momentum of A|
+    double energyDrift; // largest relative change of kinetic + potential energy
 };
 
 // A (1 kg) at the origin and B (3 kg) at x = 1.1 m, joined by a spring of
 // 100 N/m and rest length 1 m: the stretch oscillates at
 // sqrt(k (1/mA + 1/mB)) = 11.547 rad/s.
-Oscillation oscillate(const std::string& fmu, const std::string& scheme, const std::string& parameters)
+Oscillation oscillate(const std::string& fmu, const std::string& scheme,
+                      const std::string& parameters)
 {
-    const std::string config = scratch(scheme + ".cfg"), out = scratch(scheme + ".csv");
-    harness::writeFile(config, "# two bodies, one spring\nstop-time = 5\nstep-size = 0.001\nscheme = " + scheme +
-                                   "\nA.mass = 1\nA.inertia = 1 1 1\nB.mass = 3\nB.inertia = 2 2 2\n"
-                                   "B.position = 1.1, 0, 0\n");
-    const harness::Result r =
-        fmusim("twobody " + fmu + " --config " + config + " " + parameters + " --output-file " + out);
+    const std::string config = scratch(scheme + ".cfg"),
+                      out = scratch(scheme + ".csv");
+    harness::writeFile(
+        config,
+        "# two bodies, one spring\nstop-time = 5\nstep-size = 0.001\nscheme = "
+            + scheme
+            + "\nA.mass = 1\nA.inertia = 1 1 1\nB.mass = 3\nB.inertia = 2 2 2\n"
+              "B.position = 1.1, 0, 0\n");
+    const harness::Result r
+        = fmusim("twobody " + fmu + " --config " + config + " " + parameters
+                 + " --output-file " + out);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     const harness::Table table = harness::readTable(out);
-    const std::vector<double> t = table.values("time"), xA = table.values("A.x"), xB = table.values("B.x"),
-                              vA = table.values("A.vx"), vB = table.values("B.vx"),
-                              kA = table.values("A.kineticEnergy"), kB = table.values("B.kineticEnergy"),
-                              pe = table.values("potentialEnergy");
+    const std::vector<double> t
+        = table.values("time"),
+        xA = table.values("A.x"), xB = table.values("B.x"),
+        vA = table.values("A.vx"), vB = table.values("B.vx"),
+        kA = table.values("A.kineticEnergy"),
+        kB = table.values("B.kineticEnergy"),
+        pe = table.values("potentialEnergy");
     std::vector<double> stretch;
     double pMax = 0, pA = 0, eMax = 0;
     const double e0 = kA[0] + kB[0] + pe[0];
-    for (std::size_t i = 0; i < t.size(); ++i)
-    {
+    for (std::size_t i = 0; i < t.size(); ++i) {
         stretch.push_back(xB[i] - xA[i] - 1.0);
         pMax = std::max(pMax, std::fabs(1 * vA[i] + 3 * vB[i]));
         pA = std::max(pA, std::fabs(vA[i]));
         eMax = std::max(eMax, std::fabs(kA[i] + kB[i] + pe[i] - e0) / e0);
     }
     const double omega = std::sqrt(100 * (1 + 1.0 / 3));
-    return {std::fabs(measuredFrequency(t, stretch) - omega) / omega, pMax / pA, eMax};
+    return {std::fabs(measuredFrequency(t, stretch) - omega) / omega, pMax / pA,
+            eMax};
 }
 
 const char* const springParameters = "--set stiffness=100 --set restLength=1";
 
 TEST(FmusimTwoBody, ExplicitSpringOscillatesAtTheAnalyticFrequency)
 {
-    const Oscillation o = oscillate(fixture("testSpring"), "explicit", springParameters);
+    const Oscillation o
+        = oscillate(fixture("testSpring"), "explicit", springParameters);
     // Symplectic Euler: frequency error (omega h)^2/24 = 5.6e-6 at h = 1 ms.
     EXPECT_LT(o.frequencyError, 2e-5);
     // Equal and opposite forces change the momenta by exactly opposite
@@ -82,7 +100,8 @@ TEST(FmusimTwoBody, ExplicitSpringOscillatesAtTheAnalyticFrequency)
 
 TEST(FmusimTwoBody, ImplicitSpringOscillatesAtTheAnalyticFrequency)
 {
-    const Oscillation o = oscillate(fixture("testSpring"), "implicit", springParameters);
+    const Oscillation o
+        = oscillate(fixture("testSpring"), "implicit", springParameters);
     // Trapezoidal rule: frequency error (omega h)^2/12 = 1.1e-5 at h = 1 ms.
     EXPECT_LT(o.frequencyError, 3e-5);
     EXPECT_LT(o.momentumDrift, 1e-12);
@@ -96,30 +115,34 @@ TEST(FmusimTwoBody, BodyFixedToTheWorld)
 {
     // B fixed: A alone oscillates at sqrt(k/mA) = 10 rad/s.
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("twobody " + fixture("testSpring") + " " + springParameters +
-                                     " --B.motion fixed --B.position 1,0,0 --A.position=-0.2,0,0"
-                                     " --stop-time 4 --output-file " +
-                                     out);
+    const harness::Result r
+        = fmusim("twobody " + fixture("testSpring") + " " + springParameters
+                 + " --B.motion fixed --B.position 1,0,0 --A.position=-0.2,0,0"
+                   " --stop-time 4 --output-file "
+                 + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
     // The rest position of A is x = 0; symplectic Euler: (omega h)^2/24 = 4e-6.
-    EXPECT_NEAR(measuredFrequency(t.values("time"), t.values("A.x")), 10.0, 10.0 * 2e-5);
-    for (const double x : t.values("B.x")) EXPECT_EQ(x, 1.0);
+    EXPECT_NEAR(measuredFrequency(t.values("time"), t.values("A.x")), 10.0,
+                10.0 * 2e-5);
+    for (const double x : t.values("B.x"))
+        EXPECT_EQ(x, 1.0);
 }
 
 TEST(FmusimTwoBody, SinusoidalMotionFollowsItsFormula)
 {
     const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim("twobody " + fixture("testSpring") +
-                                     " --B.motion sinusoidal --B.position 1,0,0 --B.amplitude 0,0.1,0"
-                                     " --B.frequency 0.5 --B.phase 0.3 --stop-time 1 --step-size 0.01"
-                                     " --output-file " +
-                                     out);
+    const harness::Result r = fmusim(
+        "twobody " + fixture("testSpring")
+        + " --B.motion sinusoidal --B.position 1,0,0 --B.amplitude 0,0.1,0"
+          " --B.frequency 0.5 --B.phase 0.3 --stop-time 1 --step-size 0.01"
+          " --output-file "
+        + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
-    const std::vector<double> time = t.values("time"), y = t.values("B.y"), vy = t.values("B.vy");
-    for (std::size_t i = 0; i < time.size(); ++i)
-    {
+    const std::vector<double> time = t.values("time"), y = t.values("B.y"),
+                              vy = t.values("B.vy");
+    for (std::size_t i = 0; i < time.size(); ++i) {
         // The formula itself, evaluated the same way: round-off only.
         EXPECT_NEAR(y[i], 0.1 * std::sin(M_PI * time[i] + 0.3), 1e-15);
         EXPECT_NEAR(vy[i], 0.1 * M_PI * std::cos(M_PI * time[i] + 0.3), 1e-15);
@@ -131,22 +154,23 @@ TEST(FmusimTwoBody, SpinAboutAPrincipalAxis)
     // No load (stiffness 0), spin of 2 rad/s about the body z axis, a
     // principal axis: q(t) = (cos t, 0, 0, sin t). The gyroscopic term
     // vanishes, so each step applies the same exact rotation.
-    for (const char* scheme : {"explicit", "implicit"})
-    {
+    for (const char* scheme : {"explicit", "implicit"}) {
         const std::string out = scratch(std::string(scheme) + ".csv");
-        const harness::Result r =
-            fmusim("twobody " + fixture("testSpring") +
-                   " --set stiffness=0 --B.position 1,0,0 --A.inertia 1,2,3 --A.angular-velocity 0,0,2"
-                   " --stop-time 3 --step-size 0.01 --scheme " +
-                   scheme + " --output-file " + out);
+        const harness::Result r = fmusim(
+            "twobody " + fixture("testSpring")
+            + " --set stiffness=0 --B.position 1,0,0 --A.inertia 1,2,3 --A.angular-velocity 0,0,2"
+              " --stop-time 3 --step-size 0.01 --scheme "
+            + scheme + " --output-file " + out);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const harness::Table t = harness::readTable(out);
-        const std::vector<double> time = t.values("time"), qw = t.values("A.qw"), qz = t.values("A.qz"),
+        const std::vector<double> time = t.values("time"),
+                                  qw = t.values("A.qw"), qz = t.values("A.qz"),
                                   energy = t.values("A.kineticEnergy");
-        for (std::size_t i = 0; i < time.size(); ++i)
-        {
-            EXPECT_NEAR(qw[i], std::cos(time[i]), 1e-12) << scheme << " t = " << time[i];  // 300 rounded products
-            EXPECT_NEAR(qz[i], std::sin(time[i]), 1e-12) << scheme << " t = " << time[i];
+        for (std::size_t i = 0; i < time.size(); ++i) {
+            EXPECT_NEAR(qw[i], std::cos(time[i]), 1e-12)
+                << scheme << " t = " << time[i]; // 300 rounded products
+            EXPECT_NEAR(qz[i], std::sin(time[i]), 1e-12)
+                << scheme << " t = " << time[i];
             EXPECT_NEAR(energy[i], 0.5 * 3 * 4, 1e-12) << scheme;
         }
     }
@@ -157,16 +181,16 @@ TEST(FmusimTwoBody, FreeFallUnderGravity)
     // stiffness 0: both bodies fall freely. The trapezoidal rule is exact for
     // constant acceleration: z = -g t^2/2, vz = -g t.
     const std::string out = scratch("out.csv");
-    const harness::Result r =
-        fmusim("twobody " + fixture("testSpring") +
-               " --set stiffness=0 --B.position 1,0,0 --gravity 0,0,-9.81 --scheme implicit --stop-time 2"
-               " --step-size 0.01 --output-file " +
-               out);
+    const harness::Result r = fmusim(
+        "twobody " + fixture("testSpring")
+        + " --set stiffness=0 --B.position 1,0,0 --gravity 0,0,-9.81 --scheme implicit --stop-time 2"
+          " --step-size 0.01 --output-file "
+        + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
-    const std::vector<double> time = t.values("time"), z = t.values("B.z"), vz = t.values("A.vz");
-    for (std::size_t i = 0; i < time.size(); ++i)
-    {
+    const std::vector<double> time = t.values("time"), z = t.values("B.z"),
+                              vz = t.values("A.vz");
+    for (std::size_t i = 0; i < time.size(); ++i) {
         EXPECT_NEAR(z[i], -0.5 * 9.81 * time[i] * time[i], 1e-12) << time[i];
         EXPECT_NEAR(vz[i], -9.81 * time[i], 1e-12) << time[i];
     }
@@ -176,25 +200,37 @@ TEST(FmusimTwoBodyErrors, BadConfigurations)
 {
     const std::string config = scratch("bad.cfg");
     harness::writeFile(config, "stop-time = 1\nA.mas = 2\n");
-    const harness::Result unknown = fmusim("twobody " + fixture("testSpring") + " --config " + config);
+    const harness::Result unknown
+        = fmusim("twobody " + fixture("testSpring") + " --config " + config);
     EXPECT_EQ(unknown.exitCode, 4);
-    EXPECT_TRUE(contains(unknown.err, config + ":2: unknown key 'A.mas'")) << unknown.err;
+    EXPECT_TRUE(contains(unknown.err, config + ":2: unknown key 'A.mas'"))
+        << unknown.err;
 
     harness::writeFile(config, "A.inertia = 1 2\n");
-    const harness::Result inertia = fmusim("twobody " + fixture("testSpring") + " --config " + config);
+    const harness::Result inertia
+        = fmusim("twobody " + fixture("testSpring") + " --config " + config);
     EXPECT_EQ(inertia.exitCode, 4);
-    EXPECT_TRUE(contains(inertia.err, config + ":1: A.inertia: expected 3 (Jxx Jyy Jzz), 6")) << inertia.err;
+    EXPECT_TRUE(contains(inertia.err,
+                         config + ":1: A.inertia: expected 3 (Jxx Jyy Jzz), 6"))
+        << inertia.err;
 
-    const harness::Result mass = fmusim("twobody " + fixture("testSpring") + " --A.mass -1");
+    const harness::Result mass
+        = fmusim("twobody " + fixture("testSpring") + " --A.mass -1");
     EXPECT_EQ(mass.exitCode, 2);
-    EXPECT_TRUE(contains(mass.err, "--A.mass: A.mass: the mass must be positive")) << mass.err;
+    EXPECT_TRUE(
+        contains(mass.err, "--A.mass: A.mass: the mass must be positive"))
+        << mass.err;
 
-    const harness::Result scheme = fmusim("twobody " + fixture("testSpring") + " --scheme rk4");
+    const harness::Result scheme
+        = fmusim("twobody " + fixture("testSpring") + " --scheme rk4");
     EXPECT_EQ(scheme.exitCode, 2);
 
-    const harness::Result notConnector = fmusim("twobody " + fixture("firstOrderLag"));
+    const harness::Result notConnector
+        = fmusim("twobody " + fixture("firstOrderLag"));
     EXPECT_EQ(notConnector.exitCode, 3);
-    EXPECT_TRUE(contains(notConnector.err, "is not a connector: it does not declare A.r, A.R, A.F, A.M"))
+    EXPECT_TRUE(
+        contains(notConnector.err,
+                 "is not a connector: it does not declare A.r, A.R, A.F, A.M"))
         << notConnector.err;
 }
 
@@ -202,7 +238,8 @@ TEST(FmusimTwoBodyErrors, FailingConnectorIsASimulationError)
 {
     // Both bodies at the same point with restLength 1: the spring direction
     // is undefined and the FMU returns fmi2Error.
-    const harness::Result r = fmusim("twobody " + fixture("testSpring") + " --B.position 0,0,0");
+    const harness::Result r
+        = fmusim("twobody " + fixture("testSpring") + " --B.position 0,0,0");
     EXPECT_EQ(r.exitCode, 5);
     EXPECT_TRUE(contains(r.err, "the spring direction is undefined")) << r.err;
 }
@@ -210,13 +247,13 @@ TEST(FmusimTwoBodyErrors, FailingConnectorIsASimulationError)
 #ifdef CONNECTOR_FMU_DIR
 TEST(FmusimTwoBodyConnectors, LinearSpringOscillatesAtTheAnalyticFrequency)
 {
-    for (const char* scheme : {"explicit", "implicit"})
-    {
-        const Oscillation o = oscillate(CONNECTOR_FMU_DIR "/linearSpring.fmu", scheme, springParameters);
-        EXPECT_LT(o.frequencyError, 3e-5) << scheme;  // as for testSpring above
+    for (const char* scheme : {"explicit", "implicit"}) {
+        const Oscillation o = oscillate(CONNECTOR_FMU_DIR "/linearSpring.fmu",
+                                        scheme, springParameters);
+        EXPECT_LT(o.frequencyError, 3e-5) << scheme; // as for testSpring above
         EXPECT_LT(o.momentumDrift, 1e-12) << scheme;
     }
 }
 #endif
 
-}  // namespace
+} // namespace

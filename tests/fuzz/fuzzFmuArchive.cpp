@@ -20,34 +20,38 @@ namespace {
 
 std::string archivePath;
 
-extern "C" void removeArchive() { unlink(archivePath.c_str()); }
+extern "C" void removeArchive()
+{
+    unlink(archivePath.c_str());
+}
 
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
     // Keeps a hostile archive that passes every check from writing much.
     setenv("FMUIMPORT_MAX_UNPACK_BYTES", "4194304", 1);
     const char* tmp = std::getenv("TMPDIR");
-    archivePath = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzzFmuArchive-" + std::to_string(getpid()) + ".fmu";
+    archivePath = std::string(tmp && *tmp ? tmp : "/tmp") + "/fuzzFmuArchive-"
+        + std::to_string(getpid()) + ".fmu";
     std::atexit(removeArchive);
     return 0;
 }
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
+                                      std::size_t size)
 {
     {
         std::ofstream out(archivePath, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+        out.write(reinterpret_cast<const char*>(data),
+                  static_cast<std::streamsize>(size));
     }
-    try
-    {
+    try {
         const fmuImport::Fmu fmu(archivePath);
-        for (const fmuImport::Variable& v : fmu.modelDescription().variables) (void)fmu.variable(v.name);
+        for (const fmuImport::Variable& v : fmu.modelDescription().variables)
+            (void)fmu.variable(v.name);
         (void)fmu.resourceLocation();
-    }
-    catch (const fmuImport::Error&)
-    {
+    } catch (const fmuImport::Error&) {
     }
     return 0;
 }

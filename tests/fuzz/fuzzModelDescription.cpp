@@ -6,16 +6,14 @@
 #include <cstdint>
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
+                                      std::size_t size)
 {
-    try
-    {
-        const fmuImport::ModelDescription md =
-            fmuImport::readModelDescription(std::string(reinterpret_cast<const char*>(data), size), "fuzz.fmu");
+    try {
+        const fmuImport::ModelDescription md = fmuImport::readModelDescription(
+            std::string(reinterpret_cast<const char*>(data), size), "fuzz.fmu");
         (void)md;
-    }
-    catch (const fmuImport::Error&)
-    {
+    } catch (const fmuImport::Error&) {
     }
     return 0;
 }

@@ -45,7 +45,8 @@ struct sigaction replaced[NSIG];
 void writeMarker(const char* text)
 {
     const int fd = open(markerFile, O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd < 0) return;
+    if (fd < 0)
+        return;
     const ssize_t written = write(fd, text, std::strlen(text));
     (void)written;
     close(fd);
@@ -58,7 +59,10 @@ extern "C" void resetAndRaise(int sig)
     raise(sig);
 }
 
-extern "C" void onlyMark(int) { writeMarker("handler ran\n"); }
+extern "C" void onlyMark(int)
+{
+    writeMarker("handler ran\n");
+}
 
 void install(int sig, void (*handler)(int), int flags = 0)
 {
@@ -70,7 +74,8 @@ void install(int sig, void (*handler)(int), int flags = 0)
     sigaction(sig, &action, &replaced[sig]);
 }
 
-volatile bool deeper = true;  // always true; keeps the compiler from calling the recursion infinite
+volatile bool deeper
+    = true; // always true; keeps the compiler from calling the recursion infinite
 
 // Does not return: each frame keeps 4 KiB of stack until the stack is gone.
 int recurse(int depth)
@@ -82,12 +87,11 @@ int recurse(int depth)
 
 char alternateStack[64 * 1024];
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc != 4)
-    {
+    if (argc != 4) {
         std::cerr << "usage: " << argv[0] << " <fmu> <how> <marker file>\n";
         return 2;
     }
@@ -96,10 +100,10 @@ int main(int argc, char** argv)
     const rlimit noCore = {0, 0};
     setrlimit(RLIMIT_CORE, &noCore);
 
-    if (how == "term-before") install(SIGTERM, resetAndRaise);
-    if (how == "stack-overflow")
-    {
-        stack_t stack{};
+    if (how == "term-before")
+        install(SIGTERM, resetAndRaise);
+    if (how == "stack-overflow") {
+        stack_t stack {};
         stack.ss_sp = alternateStack;
         stack.ss_size = sizeof alternateStack;
         sigaltstack(&stack, nullptr);
@@ -108,30 +112,39 @@ int main(int argc, char** argv)
     fmuImport::Fmu fmu(argv[1]);
     fmuImport::Instance instance(fmu, "cleanup");
     const std::filesystem::path unpacked = fmu.unpackDirectory();
-    if (how == "term-after") install(SIGTERM, resetAndRaise);
-    if (how == "segv-after") install(SIGSEGV, resetAndRaise);
-    if (how == "term-graceful") install(SIGTERM, onlyMark);
+    if (how == "term-after")
+        install(SIGTERM, resetAndRaise);
+    if (how == "segv-after")
+        install(SIGSEGV, resetAndRaise);
+    if (how == "term-graceful")
+        install(SIGTERM, onlyMark);
 
-    if (how == "exit") std::exit(1);
-    if (how == "term" || how == "term-before" || how == "term-after" || how == "term-graceful") raise(SIGTERM);
-    if (how == "int") raise(SIGINT);
-    if (how == "segv" || how == "segv-after")
-    {
+    if (how == "exit")
+        std::exit(1);
+    if (how == "term" || how == "term-before" || how == "term-after"
+        || how == "term-graceful")
+        raise(SIGTERM);
+    if (how == "int")
+        raise(SIGINT);
+    if (how == "segv" || how == "segv-after") {
         // A real fault, without undefined behaviour for UBSan to catch
         // first: a store to a page without access.
-        void* page = mmap(nullptr, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        void* page = mmap(nullptr, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS,
+                          -1, 0);
         *static_cast<volatile int*>(page) = 1;
     }
-    if (how == "abort") std::abort();
-    if (how == "stack-overflow") return recurse(0);
-    if (how == "ill") __builtin_trap();
+    if (how == "abort")
+        std::abort();
+    if (how == "stack-overflow")
+        return recurse(0);
+    if (how == "ill")
+        __builtin_trap();
 
-    if (how == "term-graceful")
-    {
+    if (how == "term-graceful") {
         // Still running: the FMU's files must still be there.
-        if (!std::filesystem::exists(unpacked / "modelDescription.xml"))
-        {
-            std::cerr << "the unpack directory was removed while the process went on\n";
+        if (!std::filesystem::exists(unpacked / "modelDescription.xml")) {
+            std::cerr
+                << "the unpack directory was removed while the process went on\n";
             return 3;
         }
         return 0;

@@ -21,26 +21,30 @@ extern char** environ;
 
 namespace {
 
-struct Outcome
-{
+struct Outcome {
     bool signalled = false;
-    int code = 0;        // exit status, or the signal that ended the child
-    std::string marker;  // what the child's handler wrote
+    int code = 0; // exit status, or the signal that ended the child
+    std::string marker; // what the child's handler wrote
     std::vector<std::string> leftovers;
 };
 
 Outcome runHelper(const std::string& how)
 {
-    fixtures::PrivateTmpDir tmp;  // sets TMPDIR, which the child inherits
-    const std::string marker = (tmp.path().parent_path() / (tmp.path().filename().string() + ".marker")).string();
+    fixtures::PrivateTmpDir tmp; // sets TMPDIR, which the child inherits
+    const std::string marker = (tmp.path().parent_path()
+                                / (tmp.path().filename().string() + ".marker"))
+                                   .string();
     const std::string fmu = fixtures::fmuPath("firstOrderLag");
     std::vector<std::string> args = {CLEANUP_HELPER, fmu, how, marker};
     std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
+    for (std::string& a : args)
+        argv.push_back(a.data());
     argv.push_back(nullptr);
 
     pid_t pid = 0;
-    if (posix_spawn(&pid, CLEANUP_HELPER, nullptr, nullptr, argv.data(), environ) != 0)
+    if (posix_spawn(&pid, CLEANUP_HELPER, nullptr, nullptr, argv.data(),
+                    environ)
+        != 0)
         throw std::runtime_error(std::string("cannot start ") + CLEANUP_HELPER);
     int status = 0;
     waitpid(pid, &status, 0);
@@ -59,9 +63,11 @@ Outcome runHelper(const std::string& how)
 
 std::string describe(const Outcome& o)
 {
-    std::string s = o.signalled ? "killed by signal " + std::to_string(o.code) + " (" + strsignal(o.code) + ")"
+    std::string s = o.signalled ? "killed by signal " + std::to_string(o.code)
+            + " (" + strsignal(o.code) + ")"
                                 : "exit status " + std::to_string(o.code);
-    for (const std::string& name : o.leftovers) s += ", left " + name;
+    for (const std::string& name : o.leftovers)
+        s += ", left " + name;
     return s;
 }
 
@@ -78,15 +84,30 @@ TEST(UnpackCleanup, ExitRemovesTheUnpackDirectory)
     EXPECT_TRUE(o.leftovers.empty()) << describe(o);
 }
 
-TEST(UnpackCleanup, SigtermRemovesTheUnpackDirectory) { expectSignalled(runHelper("term"), SIGTERM); }
+TEST(UnpackCleanup, SigtermRemovesTheUnpackDirectory)
+{
+    expectSignalled(runHelper("term"), SIGTERM);
+}
 
-TEST(UnpackCleanup, SigintRemovesTheUnpackDirectory) { expectSignalled(runHelper("int"), SIGINT); }
+TEST(UnpackCleanup, SigintRemovesTheUnpackDirectory)
+{
+    expectSignalled(runHelper("int"), SIGINT);
+}
 
-TEST(UnpackCleanup, SegmentationFaultRemovesTheUnpackDirectory) { expectSignalled(runHelper("segv"), SIGSEGV); }
+TEST(UnpackCleanup, SegmentationFaultRemovesTheUnpackDirectory)
+{
+    expectSignalled(runHelper("segv"), SIGSEGV);
+}
 
-TEST(UnpackCleanup, AbortRemovesTheUnpackDirectory) { expectSignalled(runHelper("abort"), SIGABRT); }
+TEST(UnpackCleanup, AbortRemovesTheUnpackDirectory)
+{
+    expectSignalled(runHelper("abort"), SIGABRT);
+}
 
-TEST(UnpackCleanup, IllegalInstructionRemovesTheUnpackDirectory) { expectSignalled(runHelper("ill"), SIGILL); }
+TEST(UnpackCleanup, IllegalInstructionRemovesTheUnpackDirectory)
+{
+    expectSignalled(runHelper("ill"), SIGILL);
+}
 
 // The host handles SIGSEGV on an alternate stack (fmusim does, to report a
 // stack overflow in an FMU): the importer's handler must run there too.
@@ -126,4 +147,4 @@ TEST(UnpackCleanup, HostHandlerThatGoesOnKeepsTheFilesUntilTheEnd)
     EXPECT_TRUE(o.leftovers.empty()) << describe(o);
 }
 
-}  // namespace
+} // namespace

@@ -13,11 +13,11 @@ namespace {
 
 using fixtures::fmuPath;
 
-const int foamTraps = FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW;  // what FOAM_SIGFPE enables
+const int foamTraps
+    = FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW; // what FOAM_SIGFPE enables
 
 // Enables the traps for the lifetime of the object, as OpenFOAM does.
-class TrapsEnabled
-{
+class TrapsEnabled {
 public:
     TrapsEnabled()
     {
@@ -37,23 +37,24 @@ TEST(FpTraps, OverflowInTheFmuIsItsErrorNotSigfpe)
 {
     const fmuImport::Fmu fmu(fmuPath("overflowStep"));
     const TrapsEnabled traps;
-    fmuImport::Instance instance(fmu, "overflow",
-                                 [](const std::string&, int, const std::string&, const std::string&) {});
+    fmuImport::Instance instance(
+        fmu, "overflow",
+        [](const std::string&, int, const std::string&, const std::string&) {});
     instance.setupExperiment(0.0);
     instance.enterInitializationMode();
     instance.exitInitializationMode();
-    try
-    {
+    try {
         instance.doStep(0.0, 0.1);
         ADD_FAILURE() << "the overflowing step did not throw";
-    }
-    catch (const fmuImport::Error& e)
-    {
-        EXPECT_NE(std::string(e.what()).find("y = gain * DBL_MAX overflowed (gain = 10)"), std::string::npos)
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "y = gain * DBL_MAX overflowed (gain = 10)"),
+                  std::string::npos)
             << e.what();
     }
     EXPECT_EQ(fegetexcept(), foamTraps) << "the caller's trap mask changed";
-    EXPECT_EQ(std::fetestexcept(FE_OVERFLOW), 0) << "the FMU's overflow flag leaked to the caller";
+    EXPECT_EQ(std::fetestexcept(FE_OVERFLOW), 0)
+        << "the FMU's overflow flag leaked to the caller";
 }
 
 TEST(FpTraps, CallersTrapsAndFlagsSurviveEveryCall)
@@ -68,7 +69,8 @@ TEST(FpTraps, CallersTrapsAndFlagsSurviveEveryCall)
         lag.doStep(0.0, 0.1);
         EXPECT_EQ(fegetexcept(), foamTraps);
     }
-    EXPECT_EQ(fegetexcept(), foamTraps) << "freeing the instance or closing the FMU changed the trap mask";
+    EXPECT_EQ(fegetexcept(), foamTraps)
+        << "freeing the instance or closing the FMU changed the trap mask";
 }
 
-}  // namespace
+} // namespace

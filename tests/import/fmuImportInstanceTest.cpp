@@ -14,28 +14,29 @@ namespace {
 
 using fixtures::fmuPath;
 
-struct LogEntry
-{
+struct LogEntry {
     std::string instance;
     int status;
     std::string category;
     std::string message;
 };
 
-class LagInstance : public ::testing::Test
-{
+class LagInstance : public ::testing::Test {
 protected:
-    fmuImport::Fmu fmu{fmuPath("firstOrderLag")};
+    fmuImport::Fmu fmu {fmuPath("firstOrderLag")};
     std::vector<LogEntry> log;
 
-    unsigned int vr(const std::string& name) const { return fmu.variable(name).valueReference; }
+    unsigned int vr(const std::string& name) const
+    {
+        return fmu.variable(name).valueReference;
+    }
 
     fmuImport::Logger recorder()
     {
-        return
-            [this](const std::string& instance, int status, const std::string& category, const std::string& message) {
-                log.push_back({instance, status, category, message});
-            };
+        return [this](const std::string& instance, int status,
+                      const std::string& category, const std::string& message) {
+            log.push_back({instance, status, category, message});
+        };
     }
 
     // An initialised instance with the given time constant and a constant
@@ -57,8 +58,7 @@ TEST_F(LagInstance, StepResponseMatchesTheAnalyticSolution)
 {
     const double T = 0.5, h = 0.01;
     fmuImport::Instance lag = started(T, 1.0);
-    for (int n = 0; n < 200; ++n)
-    {
+    for (int n = 0; n < 200; ++n) {
         lag.doStep(n * h, h);
         const double t = (n + 1) * h;
         // Each step is exact; only round-off of about 1e-16 per step adds up.
@@ -78,9 +78,9 @@ TEST_F(LagInstance, BooleanAndStringValues)
     lag.setReal({vr("u")}, {2.0});
     lag.exitInitializationMode();
     lag.setBoolean({vr("hold")}, {true});
-    EXPECT_EQ(lag.getBoolean({vr("hold")}), std::vector<bool>{true});
+    EXPECT_EQ(lag.getBoolean({vr("hold")}), std::vector<bool> {true});
     lag.doStep(0.0, 0.1);
-    EXPECT_EQ(y(lag), 0.0);  // held: y is not touched at all
+    EXPECT_EQ(y(lag), 0.0); // held: y is not touched at all
     lag.setBoolean({vr("hold")}, {false});
     lag.doStep(0.1, 0.1);
     EXPECT_GT(y(lag), 0.0);
@@ -102,12 +102,12 @@ TEST_F(LagInstance, StateRoundTripRestoresValuesAndTime)
     EXPECT_NE(yAfter, ySaved);
 
     lag.setState(saved);
-    EXPECT_EQ(y(lag), ySaved);  // a copy of the values: bit for bit
+    EXPECT_EQ(y(lag), ySaved); // a copy of the values: bit for bit
     EXPECT_DOUBLE_EQ(lag.time(), 0.1);
     EXPECT_EQ(lag.getInteger({vr("stepCount")})[0], 1);
     lag.setReal({vr("u")}, {-4.0});
     lag.doStep(0.1, 0.1);
-    EXPECT_EQ(y(lag), yAfter);  // the same step from the same state: identical
+    EXPECT_EQ(y(lag), yAfter); // the same step from the same state: identical
 
     const std::vector<char> bytes = lag.serializeState(saved);
     EXPECT_FALSE(bytes.empty());
@@ -137,7 +137,8 @@ TEST_F(LagInstance, StateOfAnotherInstanceIsRefused)
     fmuImport::Instance second = started(0.3, 1.0);
     const fmuImport::Instance::State s = first.getState();
     EXPECT_THROW(second.setState(s), fmuImport::Error);
-    EXPECT_THROW(second.setState(fmuImport::Instance::State()), fmuImport::Error);
+    EXPECT_THROW(second.setState(fmuImport::Instance::State()),
+                 fmuImport::Error);
 }
 
 TEST_F(LagInstance, LoggerReceivesFormattedMessages)
@@ -156,16 +157,16 @@ TEST_F(LagInstance, FailedCallNamesFunctionFmuInstanceAndTheFmuMessage)
     lag.setupExperiment(0.0);
     lag.enterInitializationMode();
     lag.setReal({vr("timeConstant")}, {-1.0});
-    try
-    {
+    try {
         lag.exitInitializationMode();
         FAIL() << "a negative time constant was accepted";
-    }
-    catch (const fmuImport::Error& e)
-    {
-        EXPECT_EQ(std::string(e.what()), "fmi2ExitInitializationMode failed in FMU '" + fmuPath("firstOrderLag") +
-                                             "', instance 'lag1' (fmi2Error): timeConstant = -1 s must be positive "
-                                             "and finite");
+    } catch (const fmuImport::Error& e) {
+        EXPECT_EQ(
+            std::string(e.what()),
+            "fmi2ExitInitializationMode failed in FMU '"
+                + fmuPath("firstOrderLag")
+                + "', instance 'lag1' (fmi2Error): timeConstant = -1 s must be positive "
+                  "and finite");
     }
     ASSERT_FALSE(log.empty());
     EXPECT_EQ(log.back().status, 3);
@@ -176,35 +177,35 @@ TEST_F(LagInstance, DoStepFailureNamesTheTime)
 {
     fmuImport::Instance lag = started(0.5, 1.0);
     lag.doStep(0.0, 0.1);
-    try
-    {
+    try {
         lag.doStep(0.1, -0.1);
         FAIL() << "a negative step was accepted";
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         const std::string message = e.what();
-        EXPECT_EQ(message.rfind("fmi2DoStep failed at t = 0.10000000000000001 in FMU '" + fmuPath("firstOrderLag") +
-                                    "', instance 'lag1'",
-                                0),
+        EXPECT_EQ(message.rfind(
+                      "fmi2DoStep failed at t = 0.10000000000000001 in FMU '"
+                          + fmuPath("firstOrderLag") + "', instance 'lag1'",
+                      0),
                   0u)
             << message;
-        EXPECT_NE(message.find("invalid step from t = 0.1 with h = -0.1"), std::string::npos) << message;
+        EXPECT_NE(message.find("invalid step from t = 0.1 with h = -0.1"),
+                  std::string::npos)
+            << message;
     }
 }
 
 TEST_F(LagInstance, NonFiniteInputIsAnError)
 {
     fmuImport::Instance lag = started(0.5, 1.0);
-    try
-    {
+    try {
         lag.setReal({vr("u")}, {std::nan("")});
         FAIL() << "NaN input was accepted";
-    }
-    catch (const fmuImport::Error& e)
-    {
-        EXPECT_NE(std::string(e.what()).find("fmi2SetReal failed at t = 0"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("u (value reference 2) set to the non-finite value nan"),
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("fmi2SetReal failed at t = 0"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find(
+                      "u (value reference 2) set to the non-finite value nan"),
                   std::string::npos)
             << e.what();
     }
@@ -213,7 +214,8 @@ TEST_F(LagInstance, NonFiniteInputIsAnError)
 TEST_F(LagInstance, MismatchedSizesAreRefusedBeforeTheCall)
 {
     fmuImport::Instance lag = started(0.5, 1.0);
-    EXPECT_THROW(lag.setReal({vr("u"), vr("timeConstant")}, {1.0}), fmuImport::Error);
+    EXPECT_THROW(lag.setReal({vr("u"), vr("timeConstant")}, {1.0}),
+                 fmuImport::Error);
 }
 
 TEST_F(LagInstance, InstancesAreIndependent)
@@ -230,18 +232,22 @@ TEST_F(LagInstance, InstancesAreIndependent)
 TEST(InstanceLifetime, GuidMismatchFailsInstantiate)
 {
     const fmuImport::Fmu fmu(fmuPath("guidMismatch"));
-    try
-    {
-        fmuImport::Instance lag(fmu, "lag1", [](const std::string&, int, const std::string&, const std::string&) {});
+    try {
+        fmuImport::Instance lag(fmu, "lag1",
+                                [](const std::string&, int, const std::string&,
+                                   const std::string&) {});
         FAIL() << "instantiated with a wrong GUID";
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("fmi2Instantiate failed in FMU '" + fmuPath("guidMismatch") + "', instance 'lag1'"),
+        EXPECT_NE(message.find("fmi2Instantiate failed in FMU '"
+                               + fmuPath("guidMismatch")
+                               + "', instance 'lag1'"),
                   std::string::npos)
             << message;
-        EXPECT_NE(message.find("GUID '{00000000-0000-0000-0000-000000000000}' does not match"), std::string::npos)
+        EXPECT_NE(
+            message.find(
+                "GUID '{00000000-0000-0000-0000-000000000000}' does not match"),
+            std::string::npos)
             << message;
     }
 }
@@ -267,4 +273,4 @@ TEST(InstanceLifetime, InstanceKeepsTheFmuLoadedAndCleansUpLast)
     EXPECT_TRUE(tmp.contents().empty());
 }
 
-}  // namespace
+} // namespace

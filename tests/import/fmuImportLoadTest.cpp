@@ -14,20 +14,19 @@ using fixtures::fmuPath;
 
 // Loads path expecting Error; the message must name the file and contain
 // every fragment; no unpacked files may stay behind.
-void expectLoadError(const std::string& path, const std::vector<std::string>& fragments)
+void expectLoadError(const std::string& path,
+                     const std::vector<std::string>& fragments)
 {
     fixtures::PrivateTmpDir tmp;
-    try
-    {
+    try {
         fmuImport::Fmu fmu(path);
         ADD_FAILURE() << "loading " << path << " did not throw";
-    }
-    catch (const fmuImport::Error& e)
-    {
+    } catch (const fmuImport::Error& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("'" + path + "'"), std::string::npos) << message;
         for (const std::string& fragment : fragments)
-            EXPECT_NE(message.find(fragment), std::string::npos) << "missing '" << fragment << "' in: " << message;
+            EXPECT_NE(message.find(fragment), std::string::npos)
+                << "missing '" << fragment << "' in: " << message;
     }
     EXPECT_TRUE(tmp.contents().empty()) << "the importer left files in TMPDIR";
 }
@@ -81,21 +80,21 @@ TEST(FmuLoad, LooksUpVariablesByName)
 
     EXPECT_TRUE(fmu.hasVariable("u"));
     EXPECT_FALSE(fmu.hasVariable("A.F[1]"));
-    try
-    {
+    try {
         fmu.variable("A.F[1]");
         ADD_FAILURE() << "no Error for an unknown variable";
-    }
-    catch (const fmuImport::Error& e)
-    {
-        EXPECT_EQ(std::string(e.what()), "FMU '" + fmuPath("firstOrderLag") + "' has no variable 'A.F[1]'");
+    } catch (const fmuImport::Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "FMU '" + fmuPath("firstOrderLag")
+                      + "' has no variable 'A.F[1]'");
     }
 }
 
 TEST(FmuLoad, ResourceLocationIsAFileUriInTheUnpackDirectory)
 {
     const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
-    EXPECT_EQ(fmu.resourceLocation(), "file://" + fmu.unpackDirectory() + "/resources");
+    EXPECT_EQ(fmu.resourceLocation(),
+              "file://" + fmu.unpackDirectory() + "/resources");
 }
 
 TEST(FmuLoad, RemovesItsDirectoryWhenDestroyed)
@@ -105,7 +104,8 @@ TEST(FmuLoad, RemovesItsDirectoryWhenDestroyed)
     {
         const fmuImport::Fmu fmu(fmuPath("firstOrderLag"));
         directory = fmu.unpackDirectory();
-        EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(directory) / "modelDescription.xml"));
+        EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(directory)
+                                            / "modelDescription.xml"));
         EXPECT_EQ(std::filesystem::path(directory).parent_path(), tmp.path());
     }
     EXPECT_FALSE(std::filesystem::exists(directory));
@@ -121,53 +121,77 @@ TEST(FmuLoad, MovedFmuKeepsItsFiles)
     EXPECT_EQ(second.modelDescription().modelIdentifier, "firstOrderLag");
 }
 
-TEST(FmuLoadError, MissingFile) { expectLoadError(fmuPath("doesNotExist"), {"does not exist"}); }
+TEST(FmuLoadError, MissingFile)
+{
+    expectLoadError(fmuPath("doesNotExist"), {"does not exist"});
+}
 
-TEST(FmuLoadError, NotAZip) { expectLoadError(fmuPath("notAZip"), {"cannot be opened as a zip archive"}); }
+TEST(FmuLoadError, NotAZip)
+{
+    expectLoadError(fmuPath("notAZip"), {"cannot be opened as a zip archive"});
+}
 
 TEST(FmuLoadError, NoModelDescription)
 {
-    expectLoadError(fmuPath("noModelDescription"), {"has no modelDescription.xml"});
+    expectLoadError(fmuPath("noModelDescription"),
+                    {"has no modelDescription.xml"});
 }
 
-TEST(FmuLoadError, NotWellFormedXml) { expectLoadError(fmuPath("badXml"), {"not well-formed XML"}); }
+TEST(FmuLoadError, NotWellFormedXml)
+{
+    expectLoadError(fmuPath("badXml"), {"not well-formed XML"});
+}
 
 TEST(FmuLoadError, WrongFmiVersion)
 {
-    expectLoadError(fmuPath("wrongFmiVersion"), {"fmiVersion is '1.0'", "only FMI 2.0"});
+    expectLoadError(fmuPath("wrongFmiVersion"),
+                    {"fmiVersion is '1.0'", "only FMI 2.0"});
 }
 
-TEST(FmuLoadError, ModelExchangeOnly) { expectLoadError(fmuPath("modelExchangeOnly"), {"no <CoSimulation> element"}); }
+TEST(FmuLoadError, ModelExchangeOnly)
+{
+    expectLoadError(fmuPath("modelExchangeOnly"),
+                    {"no <CoSimulation> element"});
+}
 
 TEST(FmuLoadError, BinaryMissing)
 {
-    expectLoadError(fmuPath("binaryMissing"), {"has no binary binaries/linux64/firstOrderLag.so"});
+    expectLoadError(fmuPath("binaryMissing"),
+                    {"has no binary binaries/linux64/firstOrderLag.so"});
 }
 
 TEST(FmuLoadError, MissingFmi2Function)
 {
-    expectLoadError(fmuPath("missingSymbol"), {"does not export fmi2GetStringStatus"});
+    expectLoadError(fmuPath("missingSymbol"),
+                    {"does not export fmi2GetStringStatus"});
 }
 
 TEST(FmuLoadError, EntryWithParentComponent)
 {
     const std::string path = fmuPath("hostileParent");
-    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"resources/../../escaped.txt", "x", false}});
-    expectLoadError(path, {"archive entry 'resources/../../escaped.txt' has a '..' component"});
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path,
+                              {{"resources/../../escaped.txt", "x", false}});
+    expectLoadError(
+        path,
+        {"archive entry 'resources/../../escaped.txt' has a '..' component"});
 }
 
 TEST(FmuLoadError, EntryWithAbsolutePath)
 {
     const std::string path = fmuPath("hostileAbsolute");
-    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"/tmp/escaped.txt", "x", false}});
-    expectLoadError(path, {"archive entry '/tmp/escaped.txt' has an absolute path"});
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path,
+                              {{"/tmp/escaped.txt", "x", false}});
+    expectLoadError(path,
+                    {"archive entry '/tmp/escaped.txt' has an absolute path"});
 }
 
 TEST(FmuLoadError, SymbolicLinkEntry)
 {
     const std::string path = fmuPath("hostileSymlink");
-    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"resources/passwd", "/etc/passwd", true}});
-    expectLoadError(path, {"archive entry 'resources/passwd' is a symbolic link"});
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path,
+                              {{"resources/passwd", "/etc/passwd", true}});
+    expectLoadError(path,
+                    {"archive entry 'resources/passwd' is a symbolic link"});
 }
 
-}  // namespace
+} // namespace

@@ -20,12 +20,15 @@ TEST(FmuSharing, OneFileSharesOneUnpackDirectory)
     const std::string path = fmuPath("firstOrderLag");
     {
         const fmuImport::Fmu first(path);
-        const std::string otherSpelling = std::string(FIXTURE_FMU_DIR) + "/./firstOrderLag.fmu";
+        const std::string otherSpelling
+            = std::string(FIXTURE_FMU_DIR) + "/./firstOrderLag.fmu";
         const fmuImport::Fmu second(otherSpelling);
         EXPECT_EQ(first.unpackDirectory(), second.unpackDirectory());
         EXPECT_EQ(tmp.contents().size(), 1u);
-        EXPECT_EQ(second.path(), otherSpelling);  // each Fmu keeps the name it was given
-        EXPECT_EQ(second.modelDescription().guid, first.modelDescription().guid);
+        EXPECT_EQ(second.path(),
+                  otherSpelling); // each Fmu keeps the name it was given
+        EXPECT_EQ(second.modelDescription().guid,
+                  first.modelDescription().guid);
     }
     EXPECT_TRUE(tmp.contents().empty());
 }
@@ -49,13 +52,17 @@ TEST(FmuSharing, InstancesKeepTheSharedCopyAlive)
 TEST(FmuSharing, RewrittenFileIsLoadedAnew)
 {
     fixtures::PrivateTmpDir tmp;
-    const std::string path = (tmp.path().parent_path() / (tmp.path().filename().string() + ".fmu")).string();
+    const std::string path
+        = (tmp.path().parent_path() / (tmp.path().filename().string() + ".fmu"))
+              .string();
     fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {});
     const fmuImport::Fmu before(path);
-    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path, {{"resources/new.txt", "new", false}});
+    fixtures::copyWithEntries(fmuPath("firstOrderLag"), path,
+                              {{"resources/new.txt", "new", false}});
     const fmuImport::Fmu after(path);
     EXPECT_NE(before.unpackDirectory(), after.unpackDirectory());
-    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(after.unpackDirectory()) / "resources/new.txt"));
+    EXPECT_TRUE(std::filesystem::exists(
+        std::filesystem::path(after.unpackDirectory()) / "resources/new.txt"));
     std::filesystem::remove(path);
 }
 
@@ -63,25 +70,24 @@ TEST(FmuSharing, OnceOnlyFmuRefusesASecondLiveInstance)
 {
     const fmuImport::Fmu fmu(fmuPath("onceOnly"));
     EXPECT_TRUE(fmu.modelDescription().canBeInstantiatedOnlyOncePerProcess);
-    std::unique_ptr<fmuImport::Instance> first(new fmuImport::Instance(fmu, "first"));
-    const fmuImport::Fmu sameFile(fmuPath("onceOnly"));  // shares the binary, so the same rule
-    for (const fmuImport::Fmu* f : {&fmu, &sameFile})
-    {
-        try
-        {
+    std::unique_ptr<fmuImport::Instance> first(
+        new fmuImport::Instance(fmu, "first"));
+    const fmuImport::Fmu sameFile(
+        fmuPath("onceOnly")); // shares the binary, so the same rule
+    for (const fmuImport::Fmu* f : {&fmu, &sameFile}) {
+        try {
             fmuImport::Instance second(*f, "second");
             ADD_FAILURE() << "a second instance was made";
-        }
-        catch (const fmuImport::Error& e)
-        {
-            EXPECT_EQ(std::string(e.what()),
-                      "FMU '" + fmuPath("onceOnly") +
-                          "' declares canBeInstantiatedOnlyOncePerProcess=\"true\" and an instance of it exists "
-                          "already: cannot instantiate 'second' (free the other instance first)");
+        } catch (const fmuImport::Error& e) {
+            EXPECT_EQ(
+                std::string(e.what()),
+                "FMU '" + fmuPath("onceOnly")
+                    + "' declares canBeInstantiatedOnlyOncePerProcess=\"true\" and an instance of it exists "
+                      "already: cannot instantiate 'second' (free the other instance first)");
         }
     }
     first.reset();
-    fmuImport::Instance third(fmu, "third");  // the first one is gone
+    fmuImport::Instance third(fmu, "third"); // the first one is gone
     third.setupExperiment(0.0);
 }
 
@@ -94,4 +100,4 @@ TEST(FmuSharing, OrdinaryFmuHasManyInstances)
     b.setupExperiment(0.0);
 }
 
-}  // namespace
+} // namespace

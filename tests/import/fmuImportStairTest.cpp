@@ -14,19 +14,25 @@ namespace {
 using fixtures::fmuPath;
 using Result = fmuImport::Instance::StepResult;
 
-struct Stair : ::testing::Test
-{
-    fmuImport::Fmu fmu{fmuPath("stair")};  // loads: only common and CS functions needed
-    fmuImport::Instance instance{fmu, "stair", [](const std::string&, int, const std::string&, const std::string&) {}};
+struct Stair : ::testing::Test {
+    fmuImport::Fmu fmu {
+        fmuPath("stair")}; // loads: only common and CS functions needed
+    fmuImport::Instance instance {
+        fmu, "stair",
+        [](const std::string&, int, const std::string&, const std::string&) {}};
 
     void start(double discardTime = 1e300)
     {
         instance.setupExperiment(0.0);
-        instance.setReal({fmu.variable("discardTime").valueReference}, {discardTime});
+        instance.setReal({fmu.variable("discardTime").valueReference},
+                         {discardTime});
         instance.enterInitializationMode();
         instance.exitInitializationMode();
     }
-    int counter() { return instance.getInteger({fmu.variable("counter").valueReference})[0]; }
+    int counter()
+    {
+        return instance.getInteger({fmu.variable("counter").valueReference})[0];
+    }
 };
 
 TEST_F(Stair, CoSimulationOnlyBinaryLoads)
@@ -42,13 +48,15 @@ TEST_F(Stair, AskingToTerminateIsNotAnError)
     const double h = 0.5;
     double t = 0.0;
     Result result = Result::completed;
-    while ((result = instance.tryDoStep(t, h)) == Result::completed) t += h;
+    while ((result = instance.tryDoStep(t, h)) == Result::completed)
+        t += h;
     EXPECT_EQ(result, Result::terminated);
-    EXPECT_EQ(instance.lastMessage(), "fmi2DoStep at t = 10: the stair ends at t = 10");
-    EXPECT_EQ(t, 10.0);  // the step from 10 would pass endTime
+    EXPECT_EQ(instance.lastMessage(),
+              "fmi2DoStep at t = 10: the stair ends at t = 10");
+    EXPECT_EQ(t, 10.0); // the step from 10 would pass endTime
     EXPECT_EQ(instance.time(), 10.0);
     EXPECT_EQ(instance.lastSuccessfulTime(), 10.0);
-    EXPECT_EQ(counter(), 11);  // outputs of the last successful time
+    EXPECT_EQ(counter(), 11); // outputs of the last successful time
 }
 
 TEST_F(Stair, DiscardWithoutTerminating)
@@ -58,19 +66,21 @@ TEST_F(Stair, DiscardWithoutTerminating)
     EXPECT_EQ(instance.tryDoStep(0.5, 0.5), Result::completed);
     EXPECT_EQ(instance.tryDoStep(1.0, 0.5), Result::discarded);
     EXPECT_EQ(instance.lastSuccessfulTime(), 1.0);
-    EXPECT_NE(instance.lastMessage().find("no step from t >= discardTime = 0.75"), std::string::npos)
+    EXPECT_NE(
+        instance.lastMessage().find("no step from t >= discardTime = 0.75"),
+        std::string::npos)
         << instance.lastMessage();
     // doStep keeps treating a discarded step as an error
-    try
-    {
+    try {
         instance.doStep(1.0, 0.5);
         ADD_FAILURE() << "doStep did not throw on fmi2Discard";
-    }
-    catch (const fmuImport::Error& e)
-    {
-        EXPECT_NE(std::string(e.what()).find("fmi2DoStep failed at t = 1"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("fmi2Discard"), std::string::npos) << e.what();
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("fmi2DoStep failed at t = 1"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("fmi2Discard"), std::string::npos)
+            << e.what();
     }
 }
 
-}  // namespace
+} // namespace

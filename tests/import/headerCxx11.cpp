@@ -16,6 +16,9 @@ fmuImport::Variable exampleVariable()
     return v;
 }
 
-}  // namespace
+} // namespace
 
-bool fmuImportHeaderIsCxx11() { return exampleVariable().causality == fmuImport::Causality::output; }
+bool fmuImportHeaderIsCxx11()
+{
+    return exampleVariable().causality == fmuImport::Causality::output;
+}

@@ -14,30 +14,32 @@ namespace fixtures {
 // <build>/tests/fixture-fmus/<name>.fmu
 std::string fmuPath(const std::string& name);
 
-struct ZipEntry
-{
+struct ZipEntry {
     std::string name;
-    std::string content;  // the link target for a symbolic link
+    std::string content; // the link target for a symbolic link
     bool symlink = false;
 };
 
 // Copies the archive source to target and adds entries to the copy.
-void copyWithEntries(const std::string& source, const std::string& target, const std::vector<ZipEntry>& entries);
+void copyWithEntries(const std::string& source, const std::string& target,
+                     const std::vector<ZipEntry>& entries);
 
 // Writes a new archive holding entries.
-void writeArchive(const std::string& target, const std::vector<ZipEntry>& entries);
+void writeArchive(const std::string& target,
+                  const std::vector<ZipEntry>& entries);
 
 // Adds an entry of size zero bytes, streamed (deflated, so a 300 MiB entry
 // takes about 300 KiB in the archive), to the archive at path.
-void addZeroEntry(const std::string& path, const std::string& name, std::uint64_t size);
+void addZeroEntry(const std::string& path, const std::string& name,
+                  std::uint64_t size);
 
 // Rewrites the uncompressed size of the entry name in the archive's local
 // header and central directory: a zip directory that lies.
-void patchDeclaredSize(const std::string& path, const std::string& name, std::uint32_t size);
+void patchDeclaredSize(const std::string& path, const std::string& name,
+                       std::uint32_t size);
 
 // Sets an environment variable for the lifetime of the object.
-class ScopedEnv
-{
+class ScopedEnv {
 public:
     ScopedEnv(const std::string& name, const std::string& value);
     ~ScopedEnv();
@@ -52,8 +54,7 @@ private:
 // Limits the size of any file this process writes (RLIMIT_FSIZE) for the
 // lifetime of the object, SIGXFSZ ignored: a larger write fails with EFBIG.
 // Shows that nothing large was written.
-class FileSizeLimit
-{
+class FileSizeLimit {
 public:
     explicit FileSizeLimit(std::uint64_t bytes);
     ~FileSizeLimit();
@@ -67,8 +68,7 @@ private:
 
 // Points TMPDIR at a fresh empty directory for the lifetime of the object
 // and restores it afterwards.
-class PrivateTmpDir
-{
+class PrivateTmpDir {
 public:
     PrivateTmpDir();
     ~PrivateTmpDir();
@@ -76,7 +76,8 @@ public:
     PrivateTmpDir& operator=(const PrivateTmpDir&) = delete;
 
     const std::filesystem::path& path() const { return path_; }
-    std::vector<std::string> contents() const;  // names of the entries in the directory
+    std::vector<std::string>
+    contents() const; // names of the entries in the directory
 
 private:
     std::filesystem::path path_;
@@ -84,6 +85,6 @@ private:
     bool hadPrevious_ = false;
 };
 
-}  // namespace fixtures
+} // namespace fixtures
 
 #endif

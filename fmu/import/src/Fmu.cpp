@@ -19,14 +19,11 @@ std::string fileUri(const std::filesystem::path& path)
 {
     static const char* const hex = "0123456789ABCDEF";
     std::string uri = "file://";
-    for (const unsigned char c : path.string())
-    {
-        if (std::isalnum(c) || c == '/' || c == '-' || c == '_' || c == '.' || c == '~')
-        {
+    for (const unsigned char c : path.string()) {
+        if (std::isalnum(c) || c == '/' || c == '-' || c == '_' || c == '.'
+            || c == '~') {
             uri += static_cast<char>(c);
-        }
-        else
-        {
+        } else {
             uri += '%';
             uri += hex[c >> 4];
             uri += hex[c & 15];
@@ -37,8 +34,7 @@ std::string fileUri(const std::filesystem::path& path)
 
 // Identifies a file's current content well enough to share its unpacked
 // copy: a rewritten .fmu gets a new size or modification time.
-struct FileKey
-{
+struct FileKey {
     std::string canonicalPath;
     dev_t device;
     ino_t inode;
@@ -47,8 +43,8 @@ struct FileKey
 
     bool operator<(const FileKey& o) const
     {
-        return std::tie(canonicalPath, device, inode, size, mtimeNs) <
-               std::tie(o.canonicalPath, o.device, o.inode, o.size, o.mtimeNs);
+        return std::tie(canonicalPath, device, inode, size, mtimeNs)
+            < std::tie(o.canonicalPath, o.device, o.inode, o.size, o.mtimeNs);
     }
 };
 
@@ -57,24 +53,27 @@ struct FileKey
 std::mutex cacheMutex;
 std::map<FileKey, std::weak_ptr<Fmu::Impl>> cache;
 
-}  // namespace
+} // namespace
 
 std::shared_ptr<Fmu::Impl> Fmu::Impl::load(const std::string& fmuPath)
 {
     struct stat st;
     std::error_code ec;
-    const std::filesystem::path canonical = std::filesystem::canonical(fmuPath, ec);
+    const std::filesystem::path canonical
+        = std::filesystem::canonical(fmuPath, ec);
     if (ec || stat(canonical.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
         throw Error("FMU '" + fmuPath + "' does not exist or is not a file");
-    const FileKey key{canonical.string(), st.st_dev, st.st_ino, st.st_size,
-                      std::int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec};
+    const FileKey key {canonical.string(), st.st_dev, st.st_ino, st.st_size,
+                       std::int64_t(st.st_mtim.tv_sec) * 1000000000
+                           + st.st_mtim.tv_nsec};
 
     // Held while loading, so that two threads loading one file share it.
     const std::lock_guard<std::mutex> lock(cacheMutex);
-    for (auto it = cache.begin(); it != cache.end();) it = it->second.expired() ? cache.erase(it) : std::next(it);
-    if (const auto found = cache.find(key); found != cache.end())
-    {
-        if (std::shared_ptr<Impl> shared = found->second.lock()) return shared;
+    for (auto it = cache.begin(); it != cache.end();)
+        it = it->second.expired() ? cache.erase(it) : std::next(it);
+    if (const auto found = cache.find(key); found != cache.end()) {
+        if (std::shared_ptr<Impl> shared = found->second.lock())
+            return shared;
     }
     auto impl = std::make_shared<Impl>(fmuPath);
     cache[key] = impl;
@@ -87,40 +86,64 @@ Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
 
     // The description first, from memory: it names the binary to unpack.
     const std::string xmlName = "modelDescription.xml";
-    if (!archive.has(xmlName)) throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
+    if (!archive.has(xmlName))
+        throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
     const std::string xml = archive.read(xmlName);
     description = readModelDescription(xml, fmuPath);
-    for (std::size_t i = 0; i < description.variables.size(); ++i) index.emplace(description.variables[i].name, i);
-    const std::string binary = "binaries/linux64/" + description.modelIdentifier + ".so";
-    if (!archive.has(binary)) throw Error("FMU '" + fmuPath + "' has no binary " + binary);
+    for (std::size_t i = 0; i < description.variables.size(); ++i)
+        index.emplace(description.variables[i].name, i);
+    const std::string binary
+        = "binaries/linux64/" + description.modelIdentifier + ".so";
+    if (!archive.has(binary))
+        throw Error("FMU '" + fmuPath + "' has no binary " + binary);
 
     directory.emplace();
     archive.write(xmlName, xml, directory->path());
     archive.extract(binary, "resources/", directory->path());
-    library = std::make_unique<Library>((directory->path() / binary).string(), fmuPath);
+    library = std::make_unique<Library>((directory->path() / binary).string(),
+                                        fmuPath);
 }
 
-Fmu::Fmu(const std::string& fmuPath) : impl_(Impl::load(fmuPath)), path_(fmuPath) {}
+Fmu::Fmu(const std::string& fmuPath)
+    : impl_(Impl::load(fmuPath)), path_(fmuPath)
+{
+}
 
 Fmu::~Fmu() = default;
 Fmu::Fmu(Fmu&&) noexcept = default;
 Fmu& Fmu::operator=(Fmu&&) noexcept = default;
 
-const std::string& Fmu::path() const { return path_; }
+const std::string& Fmu::path() const
+{
+    return path_;
+}
 
-const ModelDescription& Fmu::modelDescription() const { return impl_->description; }
+const ModelDescription& Fmu::modelDescription() const
+{
+    return impl_->description;
+}
 
-bool Fmu::hasVariable(const std::string& name) const { return impl_->index.count(name) != 0; }
+bool Fmu::hasVariable(const std::string& name) const
+{
+    return impl_->index.count(name) != 0;
+}
 
 const Variable& Fmu::variable(const std::string& name) const
 {
     const auto found = impl_->index.find(name);
-    if (found == impl_->index.end()) throw Error("FMU '" + path_ + "' has no variable '" + name + "'");
+    if (found == impl_->index.end())
+        throw Error("FMU '" + path_ + "' has no variable '" + name + "'");
     return impl_->description.variables[found->second];
 }
 
-std::string Fmu::resourceLocation() const { return fileUri(impl_->directory->path() / "resources"); }
+std::string Fmu::resourceLocation() const
+{
+    return fileUri(impl_->directory->path() / "resources");
+}
 
-std::string Fmu::unpackDirectory() const { return impl_->directory->path().string(); }
+std::string Fmu::unpackDirectory() const
+{
+    return impl_->directory->path().string();
+}
 
-}  // namespace fmuImport
+} // namespace fmuImport

@@ -17,14 +17,14 @@
 
 namespace fmuImport {
 
-struct Fmu::Impl
-{
+struct Fmu::Impl {
     std::string path;
     std::optional<TempDir> directory;
     ModelDescription description;
-    std::map<std::string, std::size_t> index;  // variable name -> position in description.variables
+    std::map<std::string, std::size_t>
+        index; // variable name -> position in description.variables
     std::unique_ptr<Library> library;
-    std::atomic<int> liveInstances{0};  // of every Fmu sharing this Impl
+    std::atomic<int> liveInstances {0}; // of every Fmu sharing this Impl
 
     explicit Impl(const std::string& fmuPath);
 
@@ -35,6 +35,6 @@ struct Fmu::Impl
     static std::shared_ptr<Impl> load(const std::string& fmuPath);
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

@@ -9,13 +9,12 @@
 namespace fmuImport {
 
 // Calls the FMU function f with args, traps masked.
-template <class F, class... Args>
-auto callFmu(F* f, Args&&... args)
+template <class F, class... Args> auto callFmu(F* f, Args&&... args)
 {
     const MaskFpTraps masked;
     return f(static_cast<Args&&>(args)...);
 }
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

@@ -12,20 +12,20 @@
 
 namespace fmuImport {
 
-struct Instance::Impl
-{
+struct Instance::Impl {
     std::shared_ptr<Fmu::Impl> fmu;
-    std::string fmuPath;  // as the Fmu it was made from names it
+    std::string fmuPath; // as the Fmu it was made from names it
     std::string name;
     Logger logger;
-    fmi2CallbackFunctions callbacks;  // the FMU may keep a pointer to it
+    fmi2CallbackFunctions callbacks; // the FMU may keep a pointer to it
     fmi2Component component = nullptr;
     double time = 0;
-    std::string lastError;  // last error the FMU logged during the current call
-    std::string lastNotice;  // last message at fmi2Warning or above, the same
-    bool admitted = false;  // counted in fmu->liveInstances
+    std::string lastError; // last error the FMU logged during the current call
+    std::string lastNotice; // last message at fmi2Warning or above, the same
+    bool admitted = false; // counted in fmu->liveInstances
 
-    Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& fmuPath, const std::string& name, Logger logger);
+    Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& fmuPath,
+         const std::string& name, Logger logger);
     ~Impl();
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;
@@ -53,9 +53,10 @@ struct Instance::Impl
                double time = std::numeric_limits<double>::quiet_NaN());
 
     // Receives a formatted message from the FMU (or from check).
-    void receive(const std::string& instanceName, int status, const std::string& category, const std::string& message);
+    void receive(const std::string& instanceName, int status,
+                 const std::string& category, const std::string& message);
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

@@ -11,51 +11,70 @@ namespace fmuImport {
 
 namespace {
 
-std::string fmuName(const std::string& fmuPath) { return "FMU '" + fmuPath + "'"; }
+std::string fmuName(const std::string& fmuPath)
+{
+    return "FMU '" + fmuPath + "'";
+}
 
 bool isCIdentifier(const std::string& s)
 {
-    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-    for (const char c : s)
-    {
-        if (!(c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0])))
+        return false;
+    for (const char c : s) {
+        if (!(c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')
+              || (c >= '0' && c <= '9')))
+            return false;
     }
     return true;
 }
 
 Causality parseCausality(const std::string& s, const std::string& where)
 {
-    if (s.empty() || s == "local") return Causality::local;
-    if (s == "parameter") return Causality::parameter;
-    if (s == "calculatedParameter") return Causality::calculatedParameter;
-    if (s == "input") return Causality::input;
-    if (s == "output") return Causality::output;
-    if (s == "independent") return Causality::independent;
+    if (s.empty() || s == "local")
+        return Causality::local;
+    if (s == "parameter")
+        return Causality::parameter;
+    if (s == "calculatedParameter")
+        return Causality::calculatedParameter;
+    if (s == "input")
+        return Causality::input;
+    if (s == "output")
+        return Causality::output;
+    if (s == "independent")
+        return Causality::independent;
     throw Error(where + ": unknown causality '" + s + "'");
 }
 
 Variability parseVariability(const std::string& s, const std::string& where)
 {
-    if (s.empty() || s == "continuous") return Variability::continuous;
-    if (s == "constant") return Variability::constant;
-    if (s == "fixed") return Variability::fixed;
-    if (s == "tunable") return Variability::tunable;
-    if (s == "discrete") return Variability::discrete;
+    if (s.empty() || s == "continuous")
+        return Variability::continuous;
+    if (s == "constant")
+        return Variability::constant;
+    if (s == "fixed")
+        return Variability::fixed;
+    if (s == "tunable")
+        return Variability::tunable;
+    if (s == "discrete")
+        return Variability::discrete;
     throw Error(where + ": unknown variability '" + s + "'");
 }
 
 double parseNumber(const std::string& s, Type type, const std::string& where)
 {
-    if (type == Type::Boolean)
-    {
-        if (s == "true" || s == "1") return 1;
-        if (s == "false" || s == "0") return 0;
-        throw Error(where + ": Boolean start value '" + s + "' is neither true nor false");
+    if (type == Type::Boolean) {
+        if (s == "true" || s == "1")
+            return 1;
+        if (s == "false" || s == "0")
+            return 0;
+        throw Error(where + ": Boolean start value '" + s
+                    + "' is neither true nor false");
     }
     const char* begin = s.c_str();
     char* end = nullptr;
     const double value = std::strtod(begin, &end);
-    if (end == begin || *end != '\0') throw Error(where + ": start value '" + s + "' is not a number");
+    if (end == begin || *end != '\0')
+        throw Error(where + ": start value '" + s + "' is not a number");
     return value;
 }
 
@@ -64,11 +83,15 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
     Variable v;
     v.name = node.attribute("name").as_string();
     const std::string where = fmu + ": variable '" + v.name + "'";
-    if (v.name.empty()) throw Error(fmu + ": a ScalarVariable has no name");
-    if (!node.attribute("valueReference")) throw Error(where + " has no valueReference");
+    if (v.name.empty())
+        throw Error(fmu + ": a ScalarVariable has no name");
+    if (!node.attribute("valueReference"))
+        throw Error(where + " has no valueReference");
     v.valueReference = node.attribute("valueReference").as_uint();
-    v.causality = parseCausality(node.attribute("causality").as_string(), where);
-    v.variability = parseVariability(node.attribute("variability").as_string(), where);
+    v.causality
+        = parseCausality(node.attribute("causality").as_string(), where);
+    v.variability
+        = parseVariability(node.attribute("variability").as_string(), where);
     v.description = node.attribute("description").as_string();
 
     const pugi::xml_node typeNode = node.first_child();
@@ -84,35 +107,44 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
     else if (typeName == "Enumeration")
         v.type = Type::Enumeration;
     else
-        throw Error(where + " has no type element (Real, Integer, Boolean, String or Enumeration)");
+        throw Error(
+            where
+            + " has no type element (Real, Integer, Boolean, String or Enumeration)");
 
     v.unit = typeNode.attribute("unit").as_string();
-    if (const pugi::xml_attribute start = typeNode.attribute("start"))
-    {
+    if (const pugi::xml_attribute start = typeNode.attribute("start")) {
         v.hasStart = true;
         v.startString = start.as_string();
-        if (v.type != Type::String) v.start = parseNumber(v.startString, v.type, where);
+        if (v.type != Type::String)
+            v.start = parseNumber(v.startString, v.type, where);
     }
     return v;
 }
 
-}  // namespace
+} // namespace
 
-ModelDescription readModelDescription(const std::string& xml, const std::string& fmuPath)
+ModelDescription readModelDescription(const std::string& xml,
+                                      const std::string& fmuPath)
 {
     const std::string fmu = fmuName(fmuPath);
     pugi::xml_document doc;
-    const pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size());
+    const pugi::xml_parse_result parsed
+        = doc.load_buffer(xml.data(), xml.size());
     if (!parsed)
-        throw Error(fmu + ": modelDescription.xml is not well-formed XML (" + parsed.description() + " at byte " +
-                    std::to_string(parsed.offset) + ")");
+        throw Error(fmu + ": modelDescription.xml is not well-formed XML ("
+                    + parsed.description() + " at byte "
+                    + std::to_string(parsed.offset) + ")");
     const pugi::xml_node root = doc.child("fmiModelDescription");
-    if (!root) throw Error(fmu + ": modelDescription.xml has no <fmiModelDescription> element");
+    if (!root)
+        throw Error(
+            fmu
+            + ": modelDescription.xml has no <fmiModelDescription> element");
 
     ModelDescription md;
     md.fmiVersion = root.attribute("fmiVersion").as_string();
     if (md.fmiVersion != "2.0")
-        throw Error(fmu + ": fmiVersion is '" + md.fmiVersion + "', only FMI 2.0 (\"2.0\") is supported");
+        throw Error(fmu + ": fmiVersion is '" + md.fmiVersion
+                    + "', only FMI 2.0 (\"2.0\") is supported");
     md.modelName = root.attribute("modelName").as_string();
     md.guid = root.attribute("guid").as_string();
     md.description = root.attribute("description").as_string();
@@ -120,22 +152,28 @@ ModelDescription readModelDescription(const std::string& xml, const std::string&
 
     const pugi::xml_node cs = root.child("CoSimulation");
     if (!cs)
-        throw Error(fmu + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
+        throw Error(
+            fmu
+            + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
     md.modelIdentifier = cs.attribute("modelIdentifier").as_string();
-    if (md.modelIdentifier.empty()) throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
+    if (md.modelIdentifier.empty())
+        throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
     // It names the binary, binaries/linux64/<modelIdentifier>.so: a C
     // identifier, as FMI 2.0 requires, cannot reach outside that folder.
     if (!isCIdentifier(md.modelIdentifier))
-        throw Error(fmu + ": modelIdentifier '" + md.modelIdentifier +
-                    "' is not a C identifier (letters, digits and '_', not starting with a digit)");
-    md.canHandleVariableCommunicationStepSize = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
+        throw Error(
+            fmu + ": modelIdentifier '" + md.modelIdentifier
+            + "' is not a C identifier (letters, digits and '_', not starting with a digit)");
+    md.canHandleVariableCommunicationStepSize
+        = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
     md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
     md.canSerializeFMUstate = cs.attribute("canSerializeFMUstate").as_bool();
-    md.providesDirectionalDerivative = cs.attribute("providesDirectionalDerivative").as_bool();
-    md.canBeInstantiatedOnlyOncePerProcess = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
+    md.providesDirectionalDerivative
+        = cs.attribute("providesDirectionalDerivative").as_bool();
+    md.canBeInstantiatedOnlyOncePerProcess
+        = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
 
-    if (const pugi::xml_node de = root.child("DefaultExperiment"))
-    {
+    if (const pugi::xml_node de = root.child("DefaultExperiment")) {
         md.hasDefaultExperiment = true;
         md.startTime = de.attribute("startTime").as_double(0);
         md.stopTime = de.attribute("stopTime").as_double(0);
@@ -143,13 +181,14 @@ ModelDescription readModelDescription(const std::string& xml, const std::string&
     }
 
     std::set<std::string> names;
-    for (const pugi::xml_node node : root.child("ModelVariables").children("ScalarVariable"))
-    {
+    for (const pugi::xml_node node :
+         root.child("ModelVariables").children("ScalarVariable")) {
         Variable v = readVariable(node, fmu);
-        if (!names.insert(v.name).second) throw Error(fmu + ": variable '" + v.name + "' is declared twice");
+        if (!names.insert(v.name).second)
+            throw Error(fmu + ": variable '" + v.name + "' is declared twice");
         md.variables.push_back(std::move(v));
     }
     return md;
 }
 
-}  // namespace fmuImport
+} // namespace fmuImport

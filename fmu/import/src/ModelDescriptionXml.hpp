@@ -11,8 +11,9 @@ namespace fmuImport {
 // Parses xml, the bytes of modelDescription.xml of the FMU fmuPath (named
 // in errors). Requires fmiVersion "2.0" and a <CoSimulation> element; the
 // model identifier is the one of <CoSimulation>, a C identifier.
-ModelDescription readModelDescription(const std::string& xml, const std::string& fmuPath);
+ModelDescription readModelDescription(const std::string& xml,
+                                      const std::string& fmuPath);
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

@@ -11,6 +11,6 @@ namespace fmuImport {
 // and on trees deeper than 32 levels.
 void removeTreeSignalSafe(const char* path) noexcept;
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

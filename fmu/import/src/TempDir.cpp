@@ -17,12 +17,16 @@ TempDir::TempDir()
 {
     std::error_code ec;
     std::filesystem::path base = std::filesystem::temp_directory_path(ec);
-    if (ec) base = "/tmp";
+    if (ec)
+        base = "/tmp";
     // The process id in the name lets a check tell a directory left behind
     // by a dead process from one in use (tests/import's leftover check).
-    std::string pattern = (base / ("fmuImport-" + std::to_string(getpid()) + "-XXXXXX")).string();
+    std::string pattern
+        = (base / ("fmuImport-" + std::to_string(getpid()) + "-XXXXXX"))
+              .string();
     if (!mkdtemp(pattern.data()))
-        throw Error("cannot create a temporary directory from '" + pattern + "': " + std::strerror(errno));
+        throw Error("cannot create a temporary directory from '" + pattern
+                    + "': " + std::strerror(errno));
     path_ = pattern;
     slot_ = UnpackRegistry::add(path_.string());
 }
@@ -34,4 +38,4 @@ TempDir::~TempDir()
     UnpackRegistry::remove(slot_);
 }
 
-}  // namespace fmuImport
+} // namespace fmuImport

@@ -10,10 +10,9 @@
 
 namespace fmuImport {
 
-class TempDir
-{
+class TempDir {
 public:
-    TempDir();  // throws Error
+    TempDir(); // throws Error
     ~TempDir();
     TempDir(const TempDir&) = delete;
     TempDir& operator=(const TempDir&) = delete;
@@ -25,6 +24,6 @@ private:
     UnpackRegistry::Slot* slot_ = nullptr;
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

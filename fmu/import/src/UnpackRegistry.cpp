@@ -17,16 +17,9 @@ namespace fmuImport {
 // in chunks that are never freed, so a signal handler walking them never
 // meets freed memory; the path is written before the slot is published as
 // live (release) and read only after seeing it live (acquire).
-struct UnpackRegistry::Slot
-{
-    enum State
-    {
-        free,
-        filling,
-        live,
-        removing
-    };
-    std::atomic<int> state{free};
+struct UnpackRegistry::Slot {
+    enum State { free, filling, live, removing };
+    std::atomic<int> state {free};
     pid_t owner = 0;
     char path[PATH_MAX] = "";
 };
@@ -35,19 +28,24 @@ namespace {
 
 constexpr int slotsPerChunk = 16;
 
-struct Chunk
-{
+struct Chunk {
     UnpackRegistry::Slot slots[slotsPerChunk];
     Chunk* next = nullptr;
 };
 
-std::atomic<Chunk*> chunks{nullptr};
-std::mutex addMutex;  // serialises add(); removeAll() needs no lock
+std::atomic<Chunk*> chunks {nullptr};
+std::mutex addMutex; // serialises add(); removeAll() needs no lock
 
-const int handledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV, SIGFPE, SIGABRT, SIGBUS, SIGILL};
-struct sigaction previousActions[NSIG];  // written once, before our handlers are installed
+const int handledSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE,
+                              SIGSEGV, SIGFPE,  SIGABRT, SIGBUS,  SIGILL};
+struct sigaction
+    previousActions[NSIG]; // written once, before our handlers are installed
 
-bool isFault(int sig) { return sig == SIGSEGV || sig == SIGFPE || sig == SIGABRT || sig == SIGBUS || sig == SIGILL; }
+bool isFault(int sig)
+{
+    return sig == SIGSEGV || sig == SIGFPE || sig == SIGABRT || sig == SIGBUS
+        || sig == SIGILL;
+}
 
 bool isDefault(const struct sigaction& action)
 {
@@ -73,34 +71,38 @@ extern "C" void onFatalSignal(int sig, siginfo_t* info, void* context)
 {
     const int savedErrno = errno;
     const struct sigaction& previous = previousActions[sig];
-    if (isFault(sig) || isDefault(previous)) UnpackRegistry::removeAll();
-    if (isDefault(previous))
-    {
+    if (isFault(sig) || isDefault(previous))
+        UnpackRegistry::removeAll();
+    if (isDefault(previous)) {
         sigaction(sig, &previous, nullptr);
         raise(sig);
-    }
-    else
-    {
+    } else {
         if (previous.sa_flags & SA_SIGINFO)
             previous.sa_sigaction(sig, info, context);
         else if (previous.sa_handler != SIG_IGN)
             previous.sa_handler(sig);
         struct sigaction now;
-        if (!isFault(sig) && sigaction(sig, nullptr, &now) == 0 && isDefault(now)) UnpackRegistry::removeAll();
+        if (!isFault(sig) && sigaction(sig, nullptr, &now) == 0
+            && isDefault(now))
+            UnpackRegistry::removeAll();
     }
     errno = savedErrno;
 }
 
-extern "C" void removeAllAtExit() { UnpackRegistry::removeAll(); }
+extern "C" void removeAllAtExit()
+{
+    UnpackRegistry::removeAll();
+}
 
 void installHandlers()
 {
     std::atexit(removeAllAtExit);
-    for (const int sig : handledSignals)
-    {
+    for (const int sig : handledSignals) {
         struct sigaction previous;
-        if (sigaction(sig, nullptr, &previous) != 0) continue;
-        if (!(previous.sa_flags & SA_SIGINFO) && previous.sa_handler == SIG_IGN) continue;  // nohup, background jobs
+        if (sigaction(sig, nullptr, &previous) != 0)
+            continue;
+        if (!(previous.sa_flags & SA_SIGINFO) && previous.sa_handler == SIG_IGN)
+            continue; // nohup, background jobs
         previousActions[sig] = previous;
         struct sigaction action;
         std::memset(&action, 0, sizeof action);
@@ -108,37 +110,36 @@ void installHandlers()
         // SA_ONSTACK: on the alternate stack when the thread has one (fmusim
         // sets one up to report stack overflows in an FMU); removal needs
         // about 1.5 KiB of stack.
-        action.sa_flags = SA_SIGINFO | SA_ONSTACK | (previous.sa_flags & SA_RESTART);
+        action.sa_flags
+            = SA_SIGINFO | SA_ONSTACK | (previous.sa_flags & SA_RESTART);
         sigemptyset(&action.sa_mask);
         sigaction(sig, &action, nullptr);
     }
 }
 
-}  // namespace
+} // namespace
 
 UnpackRegistry::Slot* UnpackRegistry::add(const std::string& directory)
 {
-    if (directory.size() >= PATH_MAX) return nullptr;
+    if (directory.size() >= PATH_MAX)
+        return nullptr;
     static std::once_flag installed;
     std::call_once(installed, installHandlers);
 
     const std::lock_guard<std::mutex> lock(addMutex);
     Slot* slot = nullptr;
-    for (Chunk* c = chunks.load(std::memory_order_acquire); c && !slot; c = c->next)
-    {
-        for (Slot& s : c->slots)
-        {
+    for (Chunk* c = chunks.load(std::memory_order_acquire); c && !slot;
+         c = c->next) {
+        for (Slot& s : c->slots) {
             int expected = Slot::free;
-            if (s.state.compare_exchange_strong(expected, Slot::filling))
-            {
+            if (s.state.compare_exchange_strong(expected, Slot::filling)) {
                 slot = &s;
                 break;
             }
         }
     }
-    if (!slot)
-    {
-        Chunk* c = new Chunk;  // never freed: see Slot
+    if (!slot) {
+        Chunk* c = new Chunk; // never freed: see Slot
         c->next = chunks.load(std::memory_order_relaxed);
         slot = &c->slots[0];
         slot->state.store(Slot::filling, std::memory_order_relaxed);
@@ -152,23 +153,26 @@ UnpackRegistry::Slot* UnpackRegistry::add(const std::string& directory)
 
 void UnpackRegistry::remove(Slot* slot) noexcept
 {
-    if (!slot) return;
+    if (!slot)
+        return;
     int expected = Slot::live;
-    slot->state.compare_exchange_strong(expected, Slot::free);  // fails only if removeAll has claimed it
+    slot->state.compare_exchange_strong(
+        expected, Slot::free); // fails only if removeAll has claimed it
 }
 
 void UnpackRegistry::removeAll() noexcept
 {
     const pid_t self = getpid();
-    for (Chunk* c = chunks.load(std::memory_order_acquire); c; c = c->next)
-    {
-        for (Slot& s : c->slots)
-        {
-            if (s.state.load(std::memory_order_acquire) != Slot::live || s.owner != self) continue;
+    for (Chunk* c = chunks.load(std::memory_order_acquire); c; c = c->next) {
+        for (Slot& s : c->slots) {
+            if (s.state.load(std::memory_order_acquire) != Slot::live
+                || s.owner != self)
+                continue;
             int expected = Slot::live;
-            if (s.state.compare_exchange_strong(expected, Slot::removing)) removeTreeSignalSafe(s.path);
+            if (s.state.compare_exchange_strong(expected, Slot::removing))
+                removeTreeSignalSafe(s.path);
         }
     }
 }
 
-}  // namespace fmuImport
+} // namespace fmuImport

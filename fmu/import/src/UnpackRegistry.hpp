@@ -8,8 +8,7 @@
 
 namespace fmuImport {
 
-class UnpackRegistry
-{
+class UnpackRegistry {
 public:
     struct Slot;
 
@@ -29,6 +28,6 @@ public:
     static void removeAll() noexcept;
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

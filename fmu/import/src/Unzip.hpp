@@ -27,19 +27,17 @@ constexpr std::uint64_t maxEntryBytes = std::uint64_t(256) << 20;
 constexpr std::uint64_t defaultMaxUnpackBytes = std::uint64_t(1) << 30;
 constexpr const char* maxUnpackBytesVariable = "FMUIMPORT_MAX_UNPACK_BYTES";
 
-struct UnpackLimits
-{
+struct UnpackLimits {
     std::uint64_t perEntry = maxEntryBytes;
     std::uint64_t total = defaultMaxUnpackBytes;
 
     // The defaults, with total from FMUIMPORT_MAX_UNPACK_BYTES when set;
     // an Error naming the variable when it is not a positive integer.
     static UnpackLimits fromEnvironment();
-    std::string describe() const;  // for error messages
+    std::string describe() const; // for error messages
 };
 
-class FmuArchive
-{
+class FmuArchive {
 public:
     // Opens the archive and checks every entry name: absolute names, '..'
     // components, backslashes and symbolic links are refused with an Error
@@ -60,31 +58,34 @@ public:
     // entry under the folder prefix (such as "resources/") into directory.
     // The limits are checked on the declared sizes before anything is
     // written.
-    void extract(const std::string& file, const std::string& prefix, const std::filesystem::path& directory);
+    void extract(const std::string& file, const std::string& prefix,
+                 const std::filesystem::path& directory);
 
     // Writes bytes as directory/name (bytes read with read()).
-    void write(const std::string& name, const std::string& bytes, const std::filesystem::path& directory) const;
+    void write(const std::string& name, const std::string& bytes,
+               const std::filesystem::path& directory) const;
 
 private:
-    struct Entry
-    {
+    struct Entry {
         std::uint64_t index;
-        std::uint64_t size;  // as the zip directory declares it
+        std::uint64_t size; // as the zip directory declares it
         bool isDirectory;
     };
 
     std::string where(const std::string& name) const;
-    std::uint64_t charge(const std::string& name, std::uint64_t size) const;  // checks one entry's declared size
+    std::uint64_t
+    charge(const std::string& name,
+           std::uint64_t size) const; // checks one entry's declared size
     template <class Sink>
     void copy(const std::string& name, const Entry& entry, Sink sink);
 
     std::string archive_;
     UnpackLimits limits_;
     std::unique_ptr<zip, void (*)(zip*)> zip_;
-    std::map<std::string, Entry> entries_;  // normalised name -> entry
-    std::uint64_t unpacked_ = 0;            // bytes read or written so far
+    std::map<std::string, Entry> entries_; // normalised name -> entry
+    std::uint64_t unpacked_ = 0; // bytes read or written so far
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif

@@ -26,14 +26,14 @@ namespace fmuImport {
 // nanoseconds; a caller that makes several calls in a row (a connector's
 // evaluation) masks once around them all, and the calls inside then find no
 // trap to switch.
-class MaskFpTraps
-{
+class MaskFpTraps {
 public:
     // fegetexcept (glibc) only reads the control word, so a caller without
     // traps, the usual case, pays almost nothing.
     MaskFpTraps() : traps_(fegetexcept())
     {
-        if (traps_ == 0) return;
+        if (traps_ == 0)
+            return;
         fegetexceptflag(&flags_, FE_ALL_EXCEPT);
         fedisableexcept(traps_);
     }
@@ -44,7 +44,8 @@ public:
     // caller's next x87 instruction.
     ~MaskFpTraps()
     {
-        if (traps_ == 0) return;
+        if (traps_ == 0)
+            return;
         fesetexceptflag(&flags_, FE_ALL_EXCEPT);
         feenableexcept(traps_);
     }
@@ -54,17 +55,15 @@ public:
 
 private:
     int traps_;
-    fexcept_t flags_{};
+    fexcept_t flags_ {};
 };
 
-class Error : public std::runtime_error
-{
+class Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-enum class Causality
-{
+enum class Causality {
     parameter,
     calculatedParameter,
     input,
@@ -72,54 +71,43 @@ enum class Causality
     local,
     independent
 };
-enum class Variability
-{
-    constant,
-    fixed,
-    tunable,
-    discrete,
-    continuous
-};
-enum class Type
-{
-    Real,
-    Integer,
-    Boolean,
-    String,
-    Enumeration
-};
+enum class Variability { constant, fixed, tunable, discrete, continuous };
+enum class Type { Real, Integer, Boolean, String, Enumeration };
 
 // One <ScalarVariable> of modelDescription.xml.
-struct Variable
-{
+struct Variable {
     std::string name;
     unsigned int valueReference = 0;
     Type type = Type::Real;
     Causality causality = Causality::local;
     Variability variability = Variability::continuous;
-    std::string unit;  // Real only; empty when not declared
+    std::string unit; // Real only; empty when not declared
     std::string description;
     bool hasStart = false;
-    double start = 0;         // numeric start (Real, Integer, Enumeration, Boolean as 0/1)
-    std::string startString;  // start exactly as written in the XML
+    double start
+        = 0; // numeric start (Real, Integer, Enumeration, Boolean as 0/1)
+    std::string startString; // start exactly as written in the XML
 };
 
-struct ModelDescription
-{
-    std::string fmiVersion, modelName, guid, modelIdentifier, description, generationTool;
+struct ModelDescription {
+    std::string fmiVersion, modelName, guid, modelIdentifier, description,
+        generationTool;
     bool canHandleVariableCommunicationStepSize = false;
     bool canGetAndSetFMUstate = false;
     bool canSerializeFMUstate = false;
     bool providesDirectionalDerivative = false;
-    bool canBeInstantiatedOnlyOncePerProcess = false;  // then Instance refuses a second live instance
+    bool canBeInstantiatedOnlyOncePerProcess
+        = false; // then Instance refuses a second live instance
     bool hasDefaultExperiment = false;
-    double startTime = 0, stopTime = 0, stepSize = 0;  // <DefaultExperiment>, 0 when not given
-    std::vector<Variable> variables;                   // in the order of the XML
+    double startTime = 0, stopTime = 0,
+           stepSize = 0; // <DefaultExperiment>, 0 when not given
+    std::vector<Variable> variables; // in the order of the XML
 };
 
 // Receives the FMU's log messages, formatted; status is an fmi2Status value
 // (0 OK, 1 Warning, 2 Discard, 3 Error, 4 Fatal, 5 Pending).
-using Logger = std::function<void(const std::string& instanceName, int status, const std::string& category,
+using Logger = std::function<void(const std::string& instanceName, int status,
+                                  const std::string& category,
                                   const std::string& message)>;
 
 // An unpacked and loaded .fmu. Reads and checks modelDescription.xml from
@@ -147,8 +135,7 @@ using Logger = std::function<void(const std::string& instanceName, int status, c
 // they chain to the handlers installed before or after them). Host floating-point traps are masked
 // during every call into the FMU. A moved-from Fmu or Instance may only be
 // destroyed or assigned to.
-class Fmu
-{
+class Fmu {
 public:
     explicit Fmu(const std::string& fmuPath);
     ~Fmu();
@@ -157,12 +144,14 @@ public:
     Fmu(const Fmu&) = delete;
     Fmu& operator=(const Fmu&) = delete;
 
-    const std::string& path() const;  // as given to the constructor
+    const std::string& path() const; // as given to the constructor
     const ModelDescription& modelDescription() const;
     bool hasVariable(const std::string& name) const;
     const Variable& variable(const std::string& name) const;
-    std::string resourceLocation() const;  // file:// URI of the unpacked resources folder
-    std::string unpackDirectory() const;   // the temporary directory the FMU is unpacked in
+    std::string
+    resourceLocation() const; // file:// URI of the unpacked resources folder
+    std::string
+    unpackDirectory() const; // the temporary directory the FMU is unpacked in
 
     struct Impl;
 
@@ -176,13 +165,13 @@ private:
 // fmi2Fatal, fmi2Discard or fmi2Pending throw Error naming the FMU, the
 // instance and the function, with the last error the FMU logged appended;
 // fmi2Warning is reported to the logger and the call goes on.
-class Instance
-{
+class Instance {
 public:
     // The FMU's log messages go to logger, or to stderr when it is empty.
     // Throws Error if the FMU declares canBeInstantiatedOnlyOncePerProcess
     // and another instance of its binary is alive.
-    Instance(const Fmu& fmu, const std::string& instanceName, Logger logger = Logger(), bool loggingOn = false);
+    Instance(const Fmu& fmu, const std::string& instanceName,
+             Logger logger = Logger(), bool loggingOn = false);
     ~Instance();
     Instance(Instance&&) noexcept;
     Instance& operator=(Instance&&) noexcept;
@@ -191,40 +180,42 @@ public:
 
     const std::string& name() const;
 
-    void setupExperiment(double startTime, bool stopTimeDefined = false, double stopTime = 0);
+    void setupExperiment(double startTime, bool stopTimeDefined = false,
+                         double stopTime = 0);
     void enterInitializationMode();
     void exitInitializationMode();
     void terminate();
     void reset();
 
-    void setReal(const std::vector<unsigned int>& vrs, const std::vector<double>& values);
+    void setReal(const std::vector<unsigned int>& vrs,
+                 const std::vector<double>& values);
     std::vector<double> getReal(const std::vector<unsigned int>& vrs);
-    void setInteger(const std::vector<unsigned int>& vrs, const std::vector<int>& values);
+    void setInteger(const std::vector<unsigned int>& vrs,
+                    const std::vector<int>& values);
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs);
-    void setBoolean(const std::vector<unsigned int>& vrs, const std::vector<bool>& values);
+    void setBoolean(const std::vector<unsigned int>& vrs,
+                    const std::vector<bool>& values);
     std::vector<bool> getBoolean(const std::vector<unsigned int>& vrs);
-    void setString(const std::vector<unsigned int>& vrs, const std::vector<std::string>& values);
+    void setString(const std::vector<unsigned int>& vrs,
+                   const std::vector<std::string>& values);
     std::vector<std::string> getString(const std::vector<unsigned int>& vrs);
 
     // Advances from currentTime to currentTime + stepSize; fmi2Discard throws.
-    void doStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint = false);
+    void doStep(double currentTime, double stepSize,
+                bool noSetFMUStatePriorToCurrentPoint = false);
 
     // What a step that the FMU may refuse came to (FMI 2.0, 4.2.3):
     // completed; discarded, the FMU computed only part of the step
     // (lastSuccessfulTime() says how far); or terminated, the FMU asks to
     // end the simulation (fmi2Discard with fmi2Terminated true: its outputs
     // are those of lastSuccessfulTime()).
-    enum class StepResult
-    {
-        completed,
-        discarded,
-        terminated
-    };
+    enum class StepResult { completed, discarded, terminated };
 
     // doStep that returns fmi2Discard as discarded or terminated instead of
     // throwing; fmi2Error, fmi2Fatal and fmi2Pending throw. time() stays at
     // currentTime after a discarded or terminated step.
-    StepResult tryDoStep(double currentTime, double stepSize, bool noSetFMUStatePriorToCurrentPoint = false);
+    StepResult tryDoStep(double currentTime, double stepSize,
+                         bool noSetFMUStatePriorToCurrentPoint = false);
 
     // fmi2GetRealStatus(fmi2LastSuccessfulTime): after a discarded step, the
     // time up to which the FMU computed
@@ -238,8 +229,7 @@ public:
 
     // A saved FMU state, freed with fmi2FreeFMUstate when destroyed; it keeps
     // its instance's fmi2Component alive.
-    class State
-    {
+    class State {
     public:
         State();
         ~State();
@@ -253,11 +243,13 @@ public:
         friend class Instance;
         std::shared_ptr<Impl> owner_;
         void* state_;
-        double time_;  // communication point when saved; NaN after deserializeState
+        double
+            time_; // communication point when saved; NaN after deserializeState
     };
 
     State getState();
-    void setState(const State& state);  // restores time() too, when the state carries it
+    void setState(
+        const State& state); // restores time() too, when the state carries it
     std::vector<char> serializeState(const State& state);
     State deserializeState(const std::vector<char>& bytes);
 
@@ -269,6 +261,6 @@ private:
     std::shared_ptr<Impl> impl_;
 };
 
-}  // namespace fmuImport
+} // namespace fmuImport
 
 #endif
