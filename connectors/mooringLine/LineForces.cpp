@@ -19,6 +19,15 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const std::vector<Vector3>& r,
                       const std::vector<Vector3>& v, double zb)
 {
+    NodeForces f;
+    nodeForces(p, w, r, v, zb, f);
+    return f;
+}
+
+void nodeForces(const MooringLineParameters& p, double w,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f)
+{
     const int N = p.segments;
     const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
     const double area = 0.25 * pi * d * d;
@@ -29,32 +38,45 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
     const double restDepth = support > 0.0 && w > 0.0
         ? w / support
         : std::numeric_limits<double>::min();
-    NodeForces f;
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
+    f.stretched.resize(std::size_t(N));
+    f.tangent.assign(std::size_t(N + 1), Vector3::Zero());
     f.a.assign(std::size_t(N + 1), Vector3::Zero());
     f.F.assign(std::size_t(N + 1), Vector3::Zero());
+    f.strainEnergy = f.seabedEnergy = f.dissipatedPower = 0.0;
+    f.groundedSegments = 0;
+    // the ends count as grounded with seabedContact
+    const auto onSeabed = [&](int i) {
+        return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
+    };
+    const double inverseL = 1.0 / l;
+    const double cn = 0.5 * rho * d * l * p.normalDrag;
+    const double ct = 0.5 * rho * pi * d * l * p.tangentialDrag;
+    const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
+    const double mt
+        = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
+    const double inverseMn = 1.0 / mn, inverseMt = 1.0 / mt;
     for (int j = 0; j < N; ++j) {
         const Vector3 dr = r[j + 1] - r[j];
         const double stretched = dr.norm();
+        f.stretched[j] = stretched;
         if (stretched < 1e-12 * l) {
             f.q[j].setZero();
             f.T[j] = 0.0;
             continue;
         }
-        f.q[j] = dr / stretched;
-        const double strain = stretched / l - 1.0;
-        const double strainRate = f.q[j].dot(v[j + 1] - v[j]) / l;
+        f.q[j] = dr * (1.0 / stretched);
+        const double strain = stretched * inverseL - 1.0;
+        const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
         f.T[j] = p.EA * std::max(strain, 0.0) + p.axialDamping * strainRate;
         f.strainEnergy
             += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
         f.dissipatedPower += p.axialDamping * strainRate * strainRate * l;
     }
-    std::vector<bool> onSeabed(std::size_t(N + 1), p.seabedContact);
     for (int i = 1; i < N; ++i) {
         Vector3 F = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] - w * l * zHat;
-        onSeabed[i] = p.seabedContact && r[i][2] <= zb;
-        if (onSeabed[i]) {
+        if (onSeabed(i)) {
             const double depth = zb - r[i][2];
             // The damping engages over the depth at which the stiffness
             // carries the line's weight, so that the force grows from zero
@@ -71,25 +93,20 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
         }
         Vector3 t = r[i + 1] - r[i - 1];
         const double tn = t.norm();
-        t = tn > 0.0 ? Vector3(t / tn) : Vector3::Zero();
+        t = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
+        f.tangent[i] = t;
         const Vector3 vRel = -v[i]; // still water
         const Vector3 vt = vRel.dot(t) * t, vn = vRel - vt;
-        const Vector3 drag = 0.5 * rho * d * l * p.normalDrag * vn.norm() * vn
-            + 0.5 * rho * pi * d * l * p.tangentialDrag * vt.norm() * vt;
+        const Vector3 drag = cn * vn.norm() * vn + ct * vt.norm() * vt;
         F += drag;
         f.F[i] = F;
         f.dissipatedPower += -drag.dot(v[i]);
-        const double mn
-            = p.massPerLength * l + p.normalAddedMass * rho * area * l;
-        const double mt
-            = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
-        const Vector3 Ft = F.dot(t) * t;
-        f.a[i] = (F - Ft) / mn + Ft / mt;
+        // (mn (I - t t') + mt t t')^-1 F
+        f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
     }
     for (int j = 0; j < N; ++j) {
-        f.groundedSegments += onSeabed[j] && onSeabed[j + 1];
+        f.groundedSegments += onSeabed(j) && onSeabed(j + 1);
     }
-    return f;
 }
 
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,

@@ -18,6 +18,10 @@ struct NodeForces {
     //- Segment tensions [N] and unit vectors from node j to j+1
     std::vector<double> T;
     std::vector<Vector3> q;
+    //- Segment lengths [m]; unit tangents of the free nodes,
+    //  unit(r_i+1 - r_i-1) (zero where the neighbours coincide)
+    std::vector<double> stretched;
+    std::vector<Vector3> tangent;
     //- Net forces [N] and accelerations of the free nodes (index 1..N-1;
     //  0 and N unused)
     std::vector<Vector3> F, a;
@@ -30,6 +34,10 @@ struct NodeForces {
 NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const std::vector<Vector3>& r,
                       const std::vector<Vector3>& v, double zb);
+//- The same into f, reusing its storage
+void nodeForces(const MooringLineParameters& p, double w,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f);
 
 //- Positions and velocities of the free nodes 1..N-1 from the state vector
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,

@@ -1,5 +1,6 @@
 // Static stiffness of the lumped-mass line and the block tridiagonal solve
-// used by MooringLine's damped Newton for the start equilibrium.
+// used by MooringLine's damped Newton for the start equilibrium, and the
+// Newton matrix of its implicit trapezoidal step.
 //
 // With F_i the static force on free node i (segment tensions, submerged
 // weight, seabed penalty; no velocities), S = -dF/dr is block tridiagonal
@@ -20,6 +21,7 @@
 namespace connectors {
 
 struct MooringLineParameters;
+struct NodeForces;
 
 //- Symmetric block tridiagonal matrix over the free nodes 1..N-1
 struct BlockTridiagonal {
@@ -29,11 +31,32 @@ struct BlockTridiagonal {
     //- Solves S x = b (block Thomas elimination; S symmetric positive
     //  definite here, so no pivoting between blocks is needed)
     std::vector<Vector3> solve(const std::vector<Vector3>& b) const;
+
+    //- Block LU factors: `diagonal` becomes the inverses of the pivots
+    //  D'_i = D_i - U'_i-1 D'^-1_i-1 U_i-1, `lower` the multipliers
+    //  U'_i-1 D'^-1_i-1; after it solveFactored solves S x = b in place
+    void factorize();
+    void solveFactored(std::vector<Vector3>& x) const;
+
+    std::vector<Matrix3> lower;
 };
 
 //- S = -dF/dr at node positions r (0..N) with the seabed at height zb
 BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
                                  const std::vector<Vector3>& r, double zb);
+
+//- Newton matrix of a trapezoidal step of h [s] in the positions at its
+//  end, M + h^2/4 S + h/2 D at node positions r and velocities v (0..N),
+//  with f = nodeForces there (its segment lengths and node tangents):
+//  M the nodes' mass with added mass, S = staticStiffness, D = -dF/dv of
+//  the axial damping (BA/l q q' per segment), the drag and the seabed
+//  damping. Symmetric positive definite; it omits the change of M, of the
+//  drag's direction and of the damping force's direction with the
+//  positions, so Newton converges linearly (fast: these are small).
+void trapezoidMatrix(const MooringLineParameters& p, double weight,
+                     const std::vector<Vector3>& r,
+                     const std::vector<Vector3>& v, const NodeForces& f,
+                     double zb, double h, BlockTridiagonal& J);
 
 } // namespace connectors
 

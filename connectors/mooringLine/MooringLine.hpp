@@ -43,6 +43,8 @@
 #include "catenary/CatenaryProfile.hpp"
 #include "common/Kinematics.hpp"
 #include "mooringLine/CvodeBdf.hpp"
+#include "mooringLine/LineForces.hpp"
+#include "mooringLine/LineStatics.hpp"
 
 namespace connectors {
 
@@ -63,6 +65,14 @@ struct MooringLineParameters {
     double seabedStiffness = 3e6, seabedDamping = 3e5;
     //- Number of segments N (2 to 1000)
     int segments = 20;
+    //- Time integration: the implicit trapezoidal rule, one Newton solve
+    //  on the block tridiagonal line per step (trapezoid), or CVODE's BDF
+    //  with error control (cvode)
+    enum class Integrator { trapezoid, cvode };
+    Integrator integrator = Integrator::trapezoid;
+    //- Longest trapezoidal step [s]: a coupling step is cut into equal
+    //  substeps no longer than this (0: one step per coupling step)
+    double maxStep = 0.0;
     //- CVODE tolerances (relative [-], absolute [m, m/s])
     double relativeTolerance = 1e-6, absoluteTolerance = 1e-6;
     //- The ends' path over a step: the cubic Hermite curve through the
@@ -138,6 +148,13 @@ private:
         double t0 = 0.0, h = 1.0;
     };
     int rhs(double t, const double* y, double* ydot) const;
+    //- Positions and velocities of Q and P on the ends' path at the
+    //  fraction s in [0, 1] of the step (exactly the given ones at 0, 1)
+    void endsAt(double s, Vector3& rQ, Vector3& vQ, Vector3& rP,
+                Vector3& vP) const;
+    //- One trapezoidal step of `nodes` from the fraction s0 of the
+    //  coupling step to s1; false when Newton did not converge
+    bool trapezoidStep(std::vector<double>& nodes, double s0, double s1);
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
     Vector3 attachmentVelocity(const BodyKinematics& body,
                                const Vector3& p) const;
@@ -145,7 +162,14 @@ private:
     MooringLineParameters parameters_;
     double weight_ = 0.0;
     Ends ends_;
-    std::unique_ptr<CvodeBdf> integrator_;
+    std::unique_ptr<CvodeBdf> integrator_; // with Integrator::cvode
+    CvodeBdf::Statistics trapezoidStatistics_;
+    //- Storage of trapezoidStep, overwritten by every step
+    struct Workspace {
+        std::vector<Vector3> r0, v0, r, v, a0, b;
+        NodeForces f;
+        BlockTridiagonal J;
+    } work_;
 };
 
 } // namespace connectors

@@ -1,6 +1,8 @@
 // The dynamic lumped-mass line: static limit against the quasi-static
-// catenary, transverse natural frequency of a taut line, exact repetition
-// of a step from a saved state, state serialization.
+// catenary, transverse natural frequency of a taut line (and the
+// trapezoidal rule's known period error), exact repetition of a step from
+// a saved state with either integrator, energy balance, state
+// serialization.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,8 +92,11 @@ TEST(MooringLine, HeldStillSettlesOnTheQuasiStaticCatenary)
     }
 }
 
-//- Transverse frequency of a taut weightless line between fixed ends
-double measuredFrequency(int N, double& expectedDiscrete, double& string)
+//- Transverse frequency of a taut weightless line between fixed ends,
+//  coupled at 0.05 s, by CVODE (tolerance 1e-9) or the trapezoidal rule
+//  with substeps of at most maxStep (0: none)
+double measuredFrequency(int N, bool cvode, double maxStep,
+                         double& expectedDiscrete, double& string)
 {
     MooringLineParameters p;
     p.length = 100.0;
@@ -99,6 +104,10 @@ double measuredFrequency(int N, double& expectedDiscrete, double& string)
     p.massPerLength = 50.0;
     p.gravity = 0.0;
     p.segments = N;
+    if (cvode) {
+        p.integrator = MooringLineParameters::Integrator::cvode;
+    }
+    p.maxStep = maxStep;
     p.relativeTolerance = 1e-9;
     p.absoluteTolerance = 1e-9;
     MooringLine line(p);
@@ -135,7 +144,7 @@ TEST(MooringLine, TautLineTransverseFrequency)
     double previousError = 1.0;
     for (const int N : {4, 8, 16}) {
         double discrete = 0.0, string = 0.0;
-        const double f = measuredFrequency(N, discrete, string);
+        const double f = measuredFrequency(N, true, 0.0, discrete, string);
         const double error = std::abs(f - string) / string;
         std::cout << "N = " << N << ": f1 = " << f << " Hz, string " << string
                   << " Hz (error " << error << "), chain of N masses "
@@ -150,40 +159,77 @@ TEST(MooringLine, TautLineTransverseFrequency)
     }
 }
 
+TEST(MooringLine, TrapezoidalRulePeriodError)
+{
+    // The trapezoidal rule turns a linear oscillation of omega into one of
+    // (2/h) atan(omega h/2): at h = 0.05 s a taut line's 0.22 Hz is 4e-4
+    // slow (N = 8). Substeps of maxStep = 0.005 s cut that to 4e-6, within
+    // the 1e-4 of the frequency that CVODE holds above.
+    const int N = 8;
+    double discrete = 0.0, string = 0.0;
+    const double h = 0.05;
+    const double coupled = measuredFrequency(N, false, 0.0, discrete, string);
+    const double trapezoid
+        = std::atan(pi * discrete * h) / (pi * h); // (2/h) atan(omega h/2)
+    const double substepped
+        = measuredFrequency(N, false, 0.005, discrete, string);
+    std::cout << "N = " << N << ": chain of N masses " << discrete
+              << " Hz; trapezoidal rule at 0.05 s " << coupled
+              << " Hz (expected " << trapezoid << " Hz), at 0.005 s "
+              << substepped << " Hz\n";
+    EXPECT_NEAR(coupled, trapezoid, 1e-4 * string);
+    EXPECT_GT(discrete - coupled, 3e-4 * discrete); // the error is there
+    EXPECT_NEAR(substepped, discrete, 1e-4 * string);
+}
+
 TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
 {
-    MooringLine line(chain(10));
-    MooringLineState s = line.initialState(fairlead, anchor, 0.0);
-    BodyKinematics moving = fairlead;
-    for (int step = 0; step < 5; ++step) {
-        moving.p_WBo_W[0] += 0.05;
-        line.advance(s, moving, anchor, 0.1);
+    for (const bool cvode : {false, true}) {
+        MooringLineParameters p = chain(10);
+        if (cvode) {
+            p.integrator = MooringLineParameters::Integrator::cvode;
+        }
+        MooringLine line(p);
+        MooringLineState s = line.initialState(fairlead, anchor, 0.0);
+        BodyKinematics moving = fairlead;
+        for (int step = 0; step < 5; ++step) {
+            moving.p_WBo_W[0] += 0.05;
+            line.advance(s, moving, anchor, 0.1);
+        }
+        // uninterrupted: two more steps
+        MooringLineState straight = s;
+        const MooringLineState saved = s;
+        BodyKinematics next = moving;
+        next.p_WBo_W[2] += 0.1;
+        line.advance(straight, next, anchor, 0.1);
+        const std::vector<double> afterOne = straight.serialize();
+        next.p_WBo_W[2] += 0.1;
+        line.advance(straight, next, anchor, 0.1);
+        // restored: an unrelated step in between, then the same two steps
+        MooringLineState other = saved;
+        line.advance(other, fairlead, anchor, 0.3);
+        MooringLineState restored = MooringLineState::deserialize(
+            saved.serialize(), line.parameters().segments);
+        next = moving;
+        next.p_WBo_W[2] += 0.1;
+        line.advance(restored, next, anchor, 0.1);
+        EXPECT_EQ(restored.serialize(), afterOne) << cvode; // bit for bit
+        next.p_WBo_W[2] += 0.1;
+        line.advance(restored, next, anchor, 0.1);
+        EXPECT_EQ(restored.serialize(), straight.serialize()) << cvode;
+        const auto a = line.evaluate(restored, next, anchor, 11);
+        const auto b = line.evaluate(straight, next, anchor, 11);
+        EXPECT_EQ(a.loads.A.f_W, b.loads.A.f_W);
+        EXPECT_EQ(a.shape, b.shape);
+        // a fresh line (no integrator history at all) gives the same bits
+        MooringLine fresh(p);
+        MooringLineState again = MooringLineState::deserialize(
+            saved.serialize(), line.parameters().segments);
+        next = moving;
+        next.p_WBo_W[2] += 0.1;
+        fresh.advance(again, next, anchor, 0.1);
+        EXPECT_EQ(again.serialize(), afterOne) << cvode;
     }
-    // uninterrupted: two more steps
-    MooringLineState straight = s;
-    const MooringLineState saved = s;
-    BodyKinematics next = moving;
-    next.p_WBo_W[2] += 0.1;
-    line.advance(straight, next, anchor, 0.1);
-    const std::vector<double> afterOne = straight.serialize();
-    next.p_WBo_W[2] += 0.1;
-    line.advance(straight, next, anchor, 0.1);
-    // restored: an unrelated step in between, then the same two steps
-    MooringLineState other = saved;
-    line.advance(other, fairlead, anchor, 0.3);
-    MooringLineState restored = MooringLineState::deserialize(
-        saved.serialize(), line.parameters().segments);
-    next = moving;
-    next.p_WBo_W[2] += 0.1;
-    line.advance(restored, next, anchor, 0.1);
-    EXPECT_EQ(restored.serialize(), afterOne); // bit for bit
-    next.p_WBo_W[2] += 0.1;
-    line.advance(restored, next, anchor, 0.1);
-    EXPECT_EQ(restored.serialize(), straight.serialize());
-    const auto a = line.evaluate(restored, next, anchor, 11);
-    const auto b = line.evaluate(straight, next, anchor, 11);
-    EXPECT_EQ(a.loads.A.f_W, b.loads.A.f_W);
-    EXPECT_EQ(a.shape, b.shape);
 }
 
 TEST(MooringLine, EnergyBalance)
