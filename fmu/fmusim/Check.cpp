@@ -30,22 +30,7 @@ const char* checkUsage()
 namespace {
 
 using fmuImport::Causality;
-using fmuImport::Variability;
-
-const char* causalityName(Causality c)
-{
-    static const char* const names[]
-        = {"parameter", "calculatedParameter", "input", "output",
-           "local",     "independent"};
-    return names[static_cast<int>(c)];
-}
-
-const char* variabilityName(Variability v)
-{
-    static const char* const names[]
-        = {"constant", "fixed", "tunable", "discrete", "continuous"};
-    return names[static_cast<int>(v)];
-}
+using fmuImport::connector::Problem;
 
 std::string joined(const std::vector<std::string>& problems)
 {
@@ -84,57 +69,15 @@ CheckResult verdict(const std::string& name,
         : CheckResult {name, CheckResult::fail, joined(problems)};
 }
 
-// Problems of one declared component against its vocabulary entry.
-void compare(const fmuImport::Variable& v, const VocabularyEntry& e,
-             std::vector<std::string>& problems)
-{
-    if (v.type != fmuImport::Type::Real)
-        problems.push_back(v.name + " is not Real");
-    if (v.causality != e.causality)
-        problems.push_back(v.name + " has causality "
-                           + causalityName(v.causality) + ", expected "
-                           + causalityName(e.causality));
-    if (v.variability != e.variability)
-        problems.push_back(v.name + " has variability "
-                           + variabilityName(v.variability) + ", expected "
-                           + variabilityName(e.variability));
-}
-
-bool required(const VocabularyEntry& e, bool twoBody)
-{
-    return e.requirement == Requirement::always
-        || (e.requirement == Requirement::twoBody && twoBody);
-}
-
 std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu,
-                                         const Connector& connector)
+                                         const ConnectorIo& connector)
 {
     std::vector<std::string> missing, optional, units;
-    for (const VocabularyEntry& e : connectorVocabulary()) {
-        const std::vector<std::string> names = componentNames(e.base, e.shape);
-        const bool isRequired = required(e, connector.twoBody());
-        const auto declared = std::count_if(
-            names.begin(), names.end(),
-            [&](const std::string& n) { return fmu.hasVariable(n); });
-        if (declared == 0 && !isRequired)
-            continue;
-        std::vector<std::string>& problems = isRequired ? missing : optional;
-        for (const std::string& name : names) {
-            if (!fmu.hasVariable(name)) {
-                problems.push_back(
-                    isRequired ? "missing " + name
-                               : name + " is missing while other components of "
-                            + e.base + " are declared");
-                continue;
-            }
-            const fmuImport::Variable& v = fmu.variable(name);
-            compare(v, e, problems);
-            if (std::find(e.units.begin(), e.units.end(), v.unit)
-                == e.units.end())
-                units.push_back(name + " has unit '" + v.unit + "', expected '"
-                                + e.units.front() + "'");
-        }
-    }
+    for (const Problem& p : connector.variables().problems())
+        (p.kind == Problem::Kind::unit ? units
+             : p.required              ? missing
+                                       : optional)
+            .push_back(p.text);
 
     std::vector<std::string> capabilities;
     if (!fmu.modelDescription().canHandleVariableCommunicationStepSize)
@@ -181,7 +124,7 @@ int checkCommand(const std::vector<std::string>& arguments)
     startWatchdog(timeoutOption(args));
 
     const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
-    const Connector connector(fmu);
+    const ConnectorIo connector(fmu);
 
     int passed = 0, failed = 0;
     auto report = [&](const CheckResult& r) {

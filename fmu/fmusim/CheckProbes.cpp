@@ -19,7 +19,7 @@ constexpr double balanceTolerance = 1e-9;
 
 class Prober {
 public:
-    Prober(const fmuImport::Fmu& fmu, const Connector& connector,
+    Prober(const fmuImport::Fmu& fmu, const ConnectorIo& connector,
            const ProbeOptions& options)
         : fmu_(fmu), connector_(connector), options_(options),
           rng_(options.seed)
@@ -114,7 +114,7 @@ public:
     }
 
     const fmuImport::Fmu& fmu_;
-    const Connector& connector_;
+    const ConnectorIo& connector_;
     const ProbeOptions& options_;
     std::mt19937 rng_;
     std::vector<const fmuImport::Variable*> outputs_;
@@ -394,7 +394,7 @@ void nonFiniteProbe(Prober& p,
 
 } // namespace
 
-void runProbes(const fmuImport::Fmu& fmu, const Connector& connector,
+void runProbes(const fmuImport::Fmu& fmu, const ConnectorIo& connector,
                const ProbeOptions& options,
                const std::function<void(const CheckResult&)>& report)
 {

@@ -4,7 +4,7 @@
 #define FMUSIM_CHECKPROBES_HPP
 
 #include "Check.hpp"
-#include "Connector.hpp"
+#include "ConnectorIo.hpp"
 
 #include <functional>
 #include <random>
@@ -19,7 +19,7 @@ struct ProbeOptions {
 };
 
 // Runs every probe, handing each result to report as soon as it is known.
-void runProbes(const fmuImport::Fmu& fmu, const Connector& connector,
+void runProbes(const fmuImport::Fmu& fmu, const ConnectorIo& connector,
                const ProbeOptions& options,
                const std::function<void(const CheckResult&)>& report);
 

@@ -4,7 +4,7 @@
 #ifndef FMUSIM_RIGIDBODY_HPP
 #define FMUSIM_RIGIDBODY_HPP
 
-#include "Connector.hpp"
+#include "ConnectorIo.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>

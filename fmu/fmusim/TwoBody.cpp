@@ -95,7 +95,8 @@ const std::vector<std::string>& loadNames()
     static const std::vector<std::string> names = [] {
         std::vector<std::string> all;
         for (const char* base : {"A.F", "A.M", "B.F", "B.M"})
-            for (const std::string& name : componentNames(base, Shape::vector))
+            for (const std::string& name : fmuImport::connector::componentNames(
+                     base, fmuImport::connector::Shape::vector))
                 all.push_back(name);
         return all;
     }();
@@ -111,7 +112,7 @@ bool finite(const BodyState& s)
 class Simulation {
 public:
     Simulation(const TwoBodyConfig& config, const fmuImport::Fmu& fmu,
-               const Connector& connector)
+               const ConnectorIo& connector)
         : c_(config), fmu_(fmu), connector_(connector),
           instance_(instantiate(fmu, "twobody", config.logging)),
           out_(config.outputFile)
@@ -287,7 +288,7 @@ private:
 
     const TwoBodyConfig& c_;
     const fmuImport::Fmu& fmu_;
-    const Connector& connector_;
+    const ConnectorIo& connector_;
     WatchedInstance instance_;
     CsvWriter out_;
     std::vector<const fmuImport::Variable*> outputs_;
@@ -307,7 +308,7 @@ int twoBodyCommand(const std::vector<std::string>& args)
     TwoBodyConfig config = parseTwoBodyConfig(args);
     startWatchdog(config.timeout);
     const fmuImport::Fmu fmu = loadFmu(config.fmuPath);
-    const Connector connector(fmu);
+    const ConnectorIo connector(fmu);
     const std::vector<std::string> missing = connector.missingRequired();
     if (!missing.empty()) {
         std::string list;

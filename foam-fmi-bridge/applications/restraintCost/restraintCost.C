@@ -36,6 +36,7 @@ Usage
 #include "rigidBodyMotion.H"
 #include "rigidBodyRestraint.H"
 #include "fmuConnector.H"
+#include "fmuConnectorOutput.H"
 #include "fmuImport/fmuImport.hpp"
 
 #include <chrono>
@@ -48,9 +49,11 @@ namespace
 {
 
 //- Seconds per evaluation of the restraint, for nEval evaluations: a new
-//  time step every evaluation, or one time step evaluated repeatedly
+//  time step (the time and its index advanced) every evaluation, or one
+//  time step evaluated repeatedly
 scalar timeEvaluations
 (
+    Time& runTime,
     const RBD::restraint& restraint,
     RBD::rigidBodyModelState& state,
     scalarField& tau,
@@ -65,6 +68,7 @@ scalar timeEvaluations
         if (newStepEach)
         {
             state.t() += state.deltaT();
+            runTime.setTime(state.t(), runTime.timeIndex() + 1);
         }
         restraint.restrain(tau, fx, state);
     }
@@ -92,12 +96,13 @@ scalar timeCalls(const label n, const Call& f)
 //- The parts of an fmuConnector's new-step evaluation, each on its own
 class fmuConnectorParts
 {
-    connectorFmu fmu_;
+    fmuConnectorCore fmu_;
     fmuConnectorOutput output_;
     fmuImport::Fmu rawFmu_;
     fmuImport::Instance rawInstance_;
     fmuImport::Instance::State state_;
     scalar t_;
+    label timeIndex_;
 
 public:
 
@@ -119,7 +124,8 @@ public:
         output_("cost." + name, runTime, fmu_, "restraintCost " + name),
         rawFmu_(fmu_.file()),
         rawInstance_(rawFmu_, name),
-        t_(0)
+        t_(0),
+        timeIndex_(0)
     {
         // Defaults of the raw instance: the state's size does not depend on
         // the parameters
@@ -132,12 +138,16 @@ public:
     //  output row (an FMU evaluation that saves its state, minus the save)
     scalar evaluation(const label n, const scalar deltaT)
     {
-        const connectorFmu::kinematics A{vector(0.1, 0, 0.2), tensor::I, Zero, Zero};
-        const connectorFmu::kinematics B(connectorFmu::kinematics::world());
+        const fmuConnectorCore::kinematics A{vector(0.1, 0, 0.2), tensor::I, Zero, Zero};
+        const fmuConnectorCore::kinematics B(fmuConnectorCore::kinematics::world());
         const scalar total = timeCalls
         (
             n,
-            [&](label) { t_ += deltaT; fmu_.evaluate(t_, deltaT, A, B); }
+            [&](label)
+            {
+                t_ += deltaT;
+                fmu_.evaluate(++timeIndex_, t_, deltaT, A, B);
+            }
         );
         return total - stateSave(n);
     }
@@ -156,7 +166,7 @@ public:
         return timeCalls
         (
             n,
-            [&](label i) { output_.record(t_ + i); }
+            [&](label i) { output_.record(timeIndex_ + 1 + i, t_ + i); }
         );
     }
 };
@@ -245,12 +255,12 @@ int main(int argc, char *argv[])
             newStep[i] = min
             (
                 newStep[i],
-                timeEvaluations(restraints[i], state, tau, fx, nEval, true)
+                timeEvaluations(runTime, restraints[i], state, tau, fx, nEval, true)
             );
             repeated[i] = min
             (
                 repeated[i],
-                timeEvaluations(restraints[i], state, tau, fx, nEval, false)
+                timeEvaluations(runTime, restraints[i], state, tau, fx, nEval, false)
             );
             if (parts.set(i))
             {

@@ -8,6 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnector.H"
+#include "fmuConnectorOutput.H"
 #include "rigidBodyModel.H"
 #include "jointBody.H"
 #include "Time.H"
@@ -33,17 +34,6 @@ namespace restraints
 }
 }
 }
-
-
-const Foam::Enum
-<
-    Foam::RBD::restraints::fmuConnector::restartMode
->
-Foam::RBD::restraints::fmuConnector::restartModeNames
-({
-    { restartMode::exact, "exact" },
-    { restartMode::fresh, "fresh" },
-});
 
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -107,18 +97,18 @@ const Foam::dictionary& checkBody
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::connectorFmu::kinematics
+Foam::fmuConnectorCore::kinematics
 Foam::RBD::restraints::fmuConnector::bodyKinematics(const label bodyID) const
 {
     // X0 maps global to body coordinates: x_body = E (x - r)
     const spatialTransform X0(model_.X0(bodyID));
     const spatialVector v(model_.v(bodyID, Zero));
 
-    return connectorFmu::kinematics{X0.r(), X0.E().T(), v.l(), v.w()};
+    return fmuConnectorCore::kinematics{X0.r(), X0.E().T(), v.l(), v.w()};
 }
 
 
-Foam::connectorFmu::massProperties
+Foam::fmuConnectorCore::massProperties
 Foam::RBD::restraints::fmuConnector::massProperties(const label bodyID) const
 {
     // A restraint names bodies that are not merged into others; bodies
@@ -129,34 +119,27 @@ Foam::RBD::restraints::fmuConnector::massProperties(const label bodyID) const
     const vector c(body.c());
     const tensor J(body.Ic());
 
-    return connectorFmu::massProperties{body.m(), c, J};
+    return fmuConnectorCore::massProperties{body.m(), c, J};
 }
 
 
 void Foam::RBD::restraints::fmuConnector::load()
 {
     const Time& runTime = model_.time();
-
-    fileName file(fmuFile_);
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = runTime.globalPath()/file;
-    }
+    const fileName file(fmuConnectorCore::caseFile(fmuFile_, runTime));
 
     fmu_.reset
     (
-        new connectorFmu(file, name_, coeffs_, parameters_, runTime.value())
+        new fmuConnectorCore
+        (
+            file,
+            name_,
+            coeffs_,
+            parameters_,
+            runTime.value()
+        )
     );
-
-    if (!fmu_->declaresBodyB() && !bodyBName_.empty())
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "restraint " << name_ << ": entry bodyB names "
-            << bodyBName_ << " but FMU " << file
-            << " connects one body to the fixed world (it declares no B.r)"
-            << exit(FatalIOError);
-    }
+    fmu_->checkBodyB(bodyBName_, coeffs_);
 
     // The mass inputs the FMU declares (A.m, A.c, A.J, B's when B is a
     // body); nothing is set for an FMU that declares none
@@ -174,29 +157,29 @@ void Foam::RBD::restraints::fmuConnector::load()
             name_,
             runTime,
             *fmu_,
-            restart_ == restartMode::fresh,
+            restart_ == fmuConnectorCore::restartMode::fresh,
             coeffs_
         )
     );
 
-    if (!fmu_->canSerialize() && restart_ != restartMode::fresh)
-    {
-        WarningInFunction
-            << "restraint " << name_ << ": FMU " << file << " cannot"
-            << " serialize its state, so none is written for restarts; a"
-            << " run restarted from a written time needs 'restart fresh;'"
-            << " in this restraint" << endl;
-    }
+    const word bodyB(bodyBName_.empty() ? word("world") : bodyBName_);
 
     OStringStream description;
     description
         << "Connector " << name_ << ": FMU " << file << ", body A "
-        << model_.name(bodyID_) << ", body B "
-        << (bodyBName_.empty() ? word("world") : bodyBName_);
+        << model_.name(bodyID_) << ", body B " << bodyB;
 
-    output_.reset
+    fmu_->record
     (
-        new fmuConnectorOutput(name_, runTime, *fmu_, description.str())
+        new fmuConnectorOutput
+        (
+            name_,
+            runTime,
+            *fmu_,
+            description.str(),
+            word::null,
+            report_ ? wordList({model_.name(bodyID_), bodyB}) : wordList()
+        )
     );
 }
 
@@ -213,7 +196,7 @@ Foam::RBD::restraints::fmuConnector::fmuConnector
     restraint(name, checkBody(name, dict, model, "body"), model),
     bodyBID_(-1),
     bodyBIndex_(-1),
-    restart_(restartMode::exact)
+    restart_(fmuConnectorCore::restartMode::exact)
 {
     read(dict);
 
@@ -244,48 +227,25 @@ void Foam::RBD::restraints::fmuConnector::restrain
         return;
     }
 
-    const connectorFmu::kinematics A(bodyKinematics(bodyID_));
-    const connectorFmu::kinematics B
+    const fmuConnectorCore::kinematics A(bodyKinematics(bodyID_));
+    const fmuConnectorCore::kinematics B
     (
         bodyBName_.empty()
-      ? connectorFmu::kinematics::world()
+      ? fmuConnectorCore::kinematics::world()
       : bodyKinematics(bodyBID_)
     );
 
-    fmu_->evaluate(state.t(), state.deltaT(), A, B);
-
-    if (state.deltaT() > 0)
-    {
-        output_->record(state.t());
-    }
+    fmu_->evaluate(model_.time().timeIndex(), state.t(), state.deltaT(), A, B);
 
     // OpenFOAM's spatial forces carry the moment about the global origin
-    const connectorFmu::loads loadsA(fmu_->loadsA());
+    const fmuConnectorCore::loads loadsA(fmu_->loadsA());
     fx[bodyIndex_] += spatialVector(loadsA.M + (A.r ^ loadsA.F), loadsA.F);
 
-    const connectorFmu::loads loadsB(fmu_->loadsB());
     if (!bodyBName_.empty())
     {
+        const fmuConnectorCore::loads loadsB(fmu_->loadsB());
         fx[bodyBIndex_] +=
             spatialVector(loadsB.M + (B.r ^ loadsB.F), loadsB.F);
-    }
-
-    if (report_)
-    {
-        Info<< "Restraint " << name_ << ": t = " << state.t();
-        for (const word diagnostic : {"length", "tension"})
-        {
-            if (fmu_->outputNames().found(diagnostic))
-            {
-                Info<< ' ' << diagnostic << ' '
-                    << fmu_->output(diagnostic, 0);
-            }
-        }
-        Info<< " force on " << model_.name(bodyID_) << ' ' << loadsA.F
-            << " moment " << loadsA.M
-            << " force on "
-            << (bodyBName_.empty() ? word("world") : bodyBName_) << ' '
-            << loadsB.F << " moment " << loadsB.M << endl;
     }
 }
 
@@ -297,36 +257,17 @@ bool Foam::RBD::restraints::fmuConnector::read
 {
     restraint::read(dict);
 
-    // A misspelt keyword would silently leave an FMU default in place or
-    // connect the body to the world instead of bodyB
-    static const wordList keywords
-    ({
-        "type", "body", "bodyB", "fmu", "parameters", "report", "restart"
-    });
-    for (const entry& e : coeffs_)
-    {
-        if (!keywords.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "restraint " << name_ << ": unknown entry '"
-                << e.keyword() << "'; the entries of an fmuConnector"
-                << " restraint are " << keywords << exit(FatalIOError);
-        }
-    }
+    fmuConnectorCore::checkEntries(name_, coeffs_, "type");
 
     coeffs_.readEntry("fmu", fmuFile_);
-
-    if (coeffs_.found("parameters") && !coeffs_.isDict("parameters"))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "restraint " << name_ << ": entry 'parameters' must be a"
-            << " dictionary of the FMU's parameters, e.g."
-            << " parameters { stiffness 100; }" << exit(FatalIOError);
-    }
     parameters_ = coeffs_.subOrEmptyDict("parameters");
     report_ = coeffs_.lookupOrDefault<Switch>("report", false);
-    restart_ =
-        restartModeNames.getOrDefault("restart", coeffs_, restartMode::exact);
+    restart_ = fmuConnectorCore::restartModeNames.getOrDefault
+    (
+        "restart",
+        coeffs_,
+        fmuConnectorCore::restartMode::exact
+    );
 
     bodyBName_ = coeffs_.lookupOrDefault<word>("bodyB", word::null);
     bodyBID_ = -1;
@@ -337,13 +278,6 @@ bool Foam::RBD::restraints::fmuConnector::read
         checkBody(name_, coeffs_, model_, "bodyB");
         bodyBID_ = model_.bodyID(bodyBName_);
         bodyBIndex_ = model_.master(bodyBID_);
-
-        if (bodyBID_ == bodyID_)
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "restraint " << name_ << ": body and bodyB are the same"
-                << " body " << bodyBName_ << exit(FatalIOError);
-        }
     }
 
     return true;
@@ -363,7 +297,7 @@ void Foam::RBD::restraints::fmuConnector::write
         os.writeEntry("bodyB", bodyBName_);
     }
     os.writeEntry("report", report_);
-    os.writeEntry("restart", restartModeNames[restart_]);
+    os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
     os.beginBlock("parameters");
     parameters_.write(os, false);
     os.endBlock();

@@ -100,9 +100,10 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
 (
     const word& name,
     const Time& runTime,
-    const connectorFmu& fmu,
+    const fmuConnectorCore& fmu,
     const string& description,
-    const word& startTimeName
+    const word& startTimeName,
+    const wordList& reportBodies
 )
 :
     regIOobject
@@ -118,7 +119,10 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     ),
     fmu_(fmu),
     pending_(false),
-    pendingTime_(0)
+    pendingIndex_(-1),
+    pendingTime_(0),
+    name_(name),
+    reportBodies_(reportBodies)
 {
     const fileName dir
     (
@@ -170,15 +174,28 @@ Foam::fmuConnectorOutput::~fmuConnectorOutput()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fmuConnectorOutput::record(const scalar t)
+void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 {
-    if (pending_ && t != pendingTime_)
+    if (pending_ && timeIndex != pendingIndex_)
     {
         commit();
     }
     pending_ = true;
+    pendingIndex_ = timeIndex;
     pendingTime_ = t;
     pendingValues_ = fmu_.outputs();
+
+    if (reportBodies_.size())
+    {
+        const fmuConnectorCore::loads A(fmu_.loadsA());
+        const fmuConnectorCore::loads B(fmu_.loadsB());
+        Info<< "Restraint " << name_ << ": t = " << t;
+        fmu_.writeDiagnostics(Info);
+        Info<< " force on " << reportBodies_[0] << ' ' << A.F
+            << " moment " << A.M
+            << " force on " << reportBodies_[1] << ' ' << B.F
+            << " moment " << B.M << endl;
+    }
 }
 
 

@@ -60,7 +60,7 @@ Foam::fmuConnectorState::fmuConnectorState
 (
     const word& name,
     const objectRegistry& time,
-    connectorFmu& fmu,
+    fmuConnectorCore& fmu,
     const bool fresh,
     const dictionary& restraintDict,
     const word& startTimeName
@@ -129,6 +129,15 @@ Foam::fmuConnectorState::fmuConnectorState
             << ". The connector would start from its initial state while"
             << " the bodies continue. Set 'restart fresh;' in the restraint"
             << " to accept that" << exit(FatalIOError);
+    }
+
+    if (!fmu_.canSerialize())
+    {
+        WarningInFunction
+            << "restraint " << name << ": FMU " << fmu_.file() << " cannot"
+            << " serialize its state, so none is written for restarts; a"
+            << " run restarted from a written time needs 'restart fresh;'"
+            << " in this restraint" << endl;
     }
 }
 

@@ -72,7 +72,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
 :
     sixDoFRigidBodyMotionRestraint(name, sDoFRBMRDict),
     report_(false),
-    restart_("exact"),
+    restart_(fmuConnectorCore::restartMode::exact),
     side_(0)
 {
     read(sDoFRBMRDict);
@@ -111,8 +111,8 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
 
     const dictionary& motion = motionDict(sDoFRBMRDict);
     const word motionBody = motionName(motion);
-    connectorFmu::kinematics start(connectorFmu::kinematics::world());
-    connectorFmu::massProperties mass{0, Zero, Zero};
+    fmuConnectorCore::kinematics start(fmuConnectorCore::kinematics::world());
+    fmuConnectorCore::massProperties mass{0, Zero, Zero};
 
     if (!bodyB_.empty())
     {
@@ -158,7 +158,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
         body_,
         bodyB_,
         report_,
-        restart_ == "fresh"
+        restart_ == fmuConnectorCore::restartMode::fresh
     );
     connector_->registerSide(side_, start, mass, sDoFRBMRCoeffs_);
 }
@@ -194,13 +194,13 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::restrain
             body_,
             bodyB_,
             report_,
-            restart_ == "fresh",
+            restart_ == fmuConnectorCore::restartMode::fresh,
             runTime.timeName(startTime),
             startTime
         );
     }
 
-    const connectorFmu::loads loads(connector_->restrain(side_, motion));
+    const fmuConnectorCore::loads loads(connector_->restrain(side_, motion));
 
     restraintPosition = motion.centreOfRotation();
     restraintForce = loads.F;
@@ -215,56 +215,24 @@ bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
 {
     sixDoFRigidBodyMotionRestraint::read(sDoFRBMRDict);
 
-    // A misspelt keyword would silently leave an FMU default in place or
-    // connect the body to the world instead of bodyB
-    static const wordList keywords
-    ({
-        "sixDoFRigidBodyMotionRestraint", "body", "bodyB", "fmu",
-        "parameters", "report", "restart"
-    });
-    for (const entry& e : sDoFRBMRCoeffs_)
-    {
-        if (!keywords.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(sDoFRBMRCoeffs_)
-                << "restraint " << name_ << ": unknown entry '"
-                << e.keyword() << "'; the entries of an fmuConnector"
-                << " restraint are " << keywords << exit(FatalIOError);
-        }
-    }
+    fmuConnectorCore::checkEntries
+    (
+        name_,
+        sDoFRBMRCoeffs_,
+        "sixDoFRigidBodyMotionRestraint"
+    );
 
     sDoFRBMRCoeffs_.readEntry("fmu", fmuFile_);
     sDoFRBMRCoeffs_.readEntry("body", body_);
     bodyB_ = sDoFRBMRCoeffs_.lookupOrDefault<word>("bodyB", word::null);
-
-    if (!bodyB_.empty() && bodyB_ == body_)
-    {
-        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
-            << "restraint " << name_ << ": body and bodyB are the same"
-            << " body " << bodyB_ << exit(FatalIOError);
-    }
-
-    if
-    (
-        sDoFRBMRCoeffs_.found("parameters")
-     && !sDoFRBMRCoeffs_.isDict("parameters")
-    )
-    {
-        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
-            << "restraint " << name_ << ": entry 'parameters' must be a"
-            << " dictionary of the FMU's parameters, e.g."
-            << " parameters { stiffness 100; }" << exit(FatalIOError);
-    }
     parameters_ = sDoFRBMRCoeffs_.subOrEmptyDict("parameters");
     report_ = sDoFRBMRCoeffs_.lookupOrDefault<Switch>("report", false);
-
-    restart_ = sDoFRBMRCoeffs_.lookupOrDefault<word>("restart", "exact");
-    if (restart_ != "exact" && restart_ != "fresh")
-    {
-        FatalIOErrorInFunction(sDoFRBMRCoeffs_)
-            << "restraint " << name_ << ": restart " << restart_
-            << " is neither exact nor fresh" << exit(FatalIOError);
-    }
+    restart_ = fmuConnectorCore::restartModeNames.getOrDefault
+    (
+        "restart",
+        sDoFRBMRCoeffs_,
+        fmuConnectorCore::restartMode::exact
+    );
 
     return true;
 }
@@ -282,7 +250,7 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::write
         os.writeEntry("bodyB", bodyB_);
     }
     os.writeEntry("report", report_);
-    os.writeEntry("restart", restart_);
+    os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
     os.beginBlock("parameters");
     parameters_.write(os, false);
     os.endBlock();

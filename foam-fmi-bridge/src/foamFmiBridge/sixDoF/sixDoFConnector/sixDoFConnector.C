@@ -8,6 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "sixDoFConnector.H"
+#include "fmuConnectorOutput.H"
 #include "Time.H"
 #include "OStringStream.H"
 
@@ -50,33 +51,18 @@ void Foam::sixDoFConnector::load
     const scalar startTime
 )
 {
-    fileName file(fmuFile);
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = runTime.globalPath()/file;
-    }
-
     fmu_.reset
     (
-        new connectorFmu
+        new fmuConnectorCore
         (
-            file,
+            fmuConnectorCore::caseFile(fmuFile, runTime),
             name_,
             dict_,
             dict_.subOrEmptyDict("parameters"),
             startTime
         )
     );
-
-    if (!fmu_->declaresBodyB() && !bodyB_.empty())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "restraint " << name_ << ": entry bodyB names "
-            << bodyB_ << " but FMU " << file
-            << " connects one body to the fixed world (it declares no B.r)"
-            << exit(FatalIOError);
-    }
+    fmu_->checkBodyB(bodyB_, dict_);
 }
 
 
@@ -113,11 +99,12 @@ Foam::sixDoFConnector::sixDoFConnector
     bodyB_(bodyB),
     report_(report),
     motion_{nullptr, nullptr},
-    start_{connectorFmu::kinematics::world(), connectorFmu::kinematics::world()},
+    start_{fmuConnectorCore::kinematics::world(), fmuConnectorCore::kinematics::world()},
     mass_{},
     massSet_(false),
     registered_{false, false},
     pending_(-1),
+    stepIndex_(runTime.startTimeIndex()),
     stepTime_(startTimeName.empty() ? runTime.value() : startTime),
     evaluated_{true, true}
 {
@@ -136,15 +123,6 @@ Foam::sixDoFConnector::sixDoFConnector
         )
     );
 
-    if (!fmu_->canSerialize() && !fresh)
-    {
-        WarningInFunction
-            << "restraint " << name_ << ": FMU " << fmu_->file() << " cannot"
-            << " serialize its state, so none is written for restarts; a"
-            << " run restarted from a written time needs 'restart fresh;'"
-            << " in this restraint" << endl;
-    }
-
     OStringStream description;
     description
         << "Connector " << name_ << ": FMU " << fmu_->file() << ", body A "
@@ -152,7 +130,7 @@ Foam::sixDoFConnector::sixDoFConnector
         << (bodyB_.empty() ? word("world") : bodyB_)
         << " (sixDoFRigidBodyMotion)";
 
-    output_.reset
+    fmu_->record
     (
         new fmuConnectorOutput
         (
@@ -214,7 +192,7 @@ Foam::sixDoFConnector::~sixDoFConnector()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::connectorFmu::kinematics Foam::sixDoFConnector::kinematics
+Foam::fmuConnectorCore::kinematics Foam::sixDoFConnector::kinematics
 (
     const sixDoFRigidBodyMotion& motion
 )
@@ -222,7 +200,7 @@ Foam::connectorFmu::kinematics Foam::sixDoFConnector::kinematics
     // The reference point is the centre of rotation, which v() is the
     // velocity of and about which sixDoFRigidBodyMotion takes the moments;
     // the body frame is that of orientation() (Q, body to global)
-    return connectorFmu::kinematics
+    return fmuConnectorCore::kinematics
     {
         motion.centreOfRotation(),
         motion.orientation(),
@@ -232,7 +210,7 @@ Foam::connectorFmu::kinematics Foam::sixDoFConnector::kinematics
 }
 
 
-Foam::connectorFmu::massProperties Foam::sixDoFConnector::massProperties
+Foam::fmuConnectorCore::massProperties Foam::sixDoFConnector::massProperties
 (
     const sixDoFRigidBodyMotion& motion
 )
@@ -247,15 +225,15 @@ Foam::connectorFmu::massProperties Foam::sixDoFConnector::massProperties
     (
         (motion.momentOfInertia() & tensor::I) - m*(magSqr(c)*tensor::I - sqr(c))
     );
-    return connectorFmu::massProperties{m, c, J};
+    return fmuConnectorCore::massProperties{m, c, J};
 }
 
 
 void Foam::sixDoFConnector::registerSide
 (
     const label side,
-    const connectorFmu::kinematics& start,
-    const connectorFmu::massProperties& mass,
+    const fmuConnectorCore::kinematics& start,
+    const fmuConnectorCore::massProperties& mass,
     const dictionary& dict
 )
 {
@@ -274,15 +252,15 @@ void Foam::sixDoFConnector::registerSide
 }
 
 
-Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
+Foam::fmuConnectorCore::loads Foam::sixDoFConnector::restrain
 (
     const label side,
     const sixDoFRigidBodyMotion& motion
 )
 {
-    if (!fmu_)
+    if (!fmu_.valid())
     {
-        return connectorFmu::loads{Zero, Zero};
+        return fmuConnectorCore::loads{Zero, Zero};
     }
 
     const Time& runTime = motion.time();
@@ -290,7 +268,7 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
     const bool twoBody = !bodyB_.empty();
     const label other = 1 - side;
 
-    if (t != stepTime_)
+    if (runTime.timeIndex() != stepIndex_)
     {
         // A new time step: in the previous one both bodies must have taken
         // their loads, or one of them has no restraint of this name
@@ -306,6 +284,7 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
                 << " body (" << bodyA_ << ", " << bodyB_ << ")"
                 << exit(FatalError);
         }
+        stepIndex_ = runTime.timeIndex();
         stepTime_ = t;
         evaluated_[0] = evaluated_[1] = false;
         pending_ = -1;
@@ -321,8 +300,8 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
     }
     else
     {
-        const connectorFmu::kinematics own(kinematics(motion));
-        connectorFmu::kinematics otherKin(connectorFmu::kinematics::world());
+        const fmuConnectorCore::kinematics own(kinematics(motion));
+        fmuConnectorCore::kinematics otherKin(fmuConnectorCore::kinematics::world());
         if (twoBody)
         {
             otherKin =
@@ -339,18 +318,23 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
 
         if (side == 0)
         {
-            fmu_->evaluate(t, runTime.deltaTValue(), own, otherKin);
+            fmu_->evaluate
+            (
+                runTime.timeIndex(), t, runTime.deltaTValue(), own, otherKin
+            );
         }
         else
         {
-            fmu_->evaluate(t, runTime.deltaTValue(), otherKin, own);
+            fmu_->evaluate
+            (
+                runTime.timeIndex(), t, runTime.deltaTValue(), otherKin, own
+            );
         }
-        output_->record(t);
 
         pending_ = twoBody ? other : -1;
     }
 
-    const connectorFmu::loads loads
+    const fmuConnectorCore::loads loads
     (
         side == 0 ? fmu_->loadsA() : fmu_->loadsB()
     );
@@ -365,14 +349,7 @@ Foam::connectorFmu::loads Foam::sixDoFConnector::restrain
             Info<< "Restraint " << name_ << ": ";
         }
         Info<< "t = " << t;
-        for (const word diagnostic : {"length", "tension"})
-        {
-            if (fmu_->outputNames().found(diagnostic))
-            {
-                Info<< ' ' << diagnostic << ' '
-                    << fmu_->output(diagnostic, 0);
-            }
-        }
+        fmu_->writeDiagnostics(Info);
         Info<< " force on " << bodyName(side) << ' ' << loads.F
             << " moment " << loads.M << endl;
     }

@@ -6,17 +6,19 @@ License
     Public License version 3 or later (see LICENSE at the project's top).
 
 Description
-    Parameters of connectorFmu: the dictionary's entries checked against
-    what the FMU declares and set, and compared with a restored state.
+    Parameters of fmuConnectorCore: the dictionary's entries checked against
+    what the FMU declares, checked by the FMU itself in a probe instance,
+    set, and compared with a restored state.
 
 \*---------------------------------------------------------------------------*/
 
-#include "connectorFmu.H"
+#include "fmuConnectorCore.H"
 #include "error.H"
 #include "OStringStream.H"
 #include "Switch.H"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -36,12 +38,38 @@ std::string tokensText(const Foam::ITstream& is)
     return os.str();
 }
 
+
+//- Whether message names the parameter name as "parameter <name>", name
+//  followed by no character a variable name goes on with
+bool namesParameter(const std::string& message, const std::string& name)
+{
+    const std::string phrase("parameter " + name);
+    for
+    (
+        std::string::size_type pos = message.find(phrase);
+        pos != std::string::npos;
+        pos = message.find(phrase, pos + 1)
+    )
+    {
+        const std::string::size_type end = pos + phrase.size();
+        if
+        (
+            end == message.size()
+         || !(std::isalnum(message[end]) || message[end] == '_' || message[end] == '.')
+        )
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-std::vector<unsigned int> Foam::connectorFmu::parameterRefs
+std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
 (
     const dictionary& parameters,
     const entry& e,
@@ -68,7 +96,7 @@ std::vector<unsigned int> Foam::connectorFmu::parameterRefs
             FatalIOErrorInFunction(parameters)
                 << where().c_str() << "entry '" << key.c_str()
                 << "' names a variable of causality "
-                << causalityName(var.causality)
+                << fmuImport::connector::causalityName(var.causality)
                 << "; only parameters can be set here"
                 << exit(FatalIOError);
         }
@@ -138,20 +166,46 @@ std::vector<unsigned int> Foam::connectorFmu::parameterRefs
             << names << exit(FatalIOError);
     }
 
-    label nDeclared = 9;
-    if (!isMatrix)
+    // The elements key[1..n], or key[1..3,1..3]: Real parameters
+    std::vector<std::string> elements;
+    if (isMatrix)
     {
-        nDeclared = 0;
-        while
+        elements = fmuImport::connector::componentNames
         (
-            fmu_->hasVariable(key + "[" + std::to_string(nDeclared + 1) + "]")
+            key,
+            fmuImport::connector::Shape::matrix
+        );
+    }
+    for (label i = 1; !isMatrix && fmu_->hasVariable(key + "[" + std::to_string(i) + "]"); ++i)
+    {
+        elements.push_back(key + "[" + std::to_string(i) + "]");
+    }
+
+    std::vector<unsigned int> refs;
+    for (const std::string& element : elements)
+    {
+        if (!fmu_->hasVariable(element))
+        {
+            FatalIOErrorInFunction(parameters)
+                << where().c_str() << "declares " << refs.size()
+                << " elements of " << key.c_str() << " but not "
+                << element.c_str() << exit(FatalIOError);
+        }
+        const fmuImport::Variable& var = fmu_->variable(element);
+        if
+        (
+            var.type != fmuImport::Type::Real
+         || var.causality != fmuImport::Causality::parameter
         )
         {
-            ++nDeclared;
+            FatalIOErrorInFunction(parameters)
+                << where().c_str() << "variable " << element.c_str()
+                << " must be a Real parameter, it is declared with causality "
+                << fmuImport::connector::causalityName(var.causality)
+                << exit(FatalIOError);
         }
+        refs.push_back(var.valueReference);
     }
-    const std::vector<unsigned int> refs =
-        vectorRefs(key, nDeclared, "parameter", "");
 
     const bool isList =
         is.size()
@@ -179,7 +233,11 @@ std::vector<unsigned int> Foam::connectorFmu::parameterRefs
 }
 
 
-void Foam::connectorFmu::setParameters(const dictionary& parameters)
+void Foam::fmuConnectorCore::setParameters
+(
+    fmuImport::Instance& instance,
+    const dictionary& parameters
+) const
 {
     // Each FMU variable is set by one entry only: 'A.p (...)' and
     // 'A.p[1] ...' together would leave the result to the entries' order
@@ -227,13 +285,13 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
         {
             case fmuImport::Type::Integer:
             case fmuImport::Type::Enumeration:
-                instance_->setInteger(refs, {static_cast<int>(values[0])});
+                instance.setInteger(refs, {static_cast<int>(values[0])});
                 break;
             case fmuImport::Type::Boolean:
-                instance_->setBoolean(refs, {values[0] != 0});
+                instance.setBoolean(refs, {values[0] != 0});
                 break;
             default:
-                instance_->setReal
+                instance.setReal
                 (
                     refs,
                     std::vector<double>(values.begin(), values.end())
@@ -243,7 +301,83 @@ void Foam::connectorFmu::setParameters(const dictionary& parameters)
 }
 
 
-void Foam::connectorFmu::checkRestoredParameters() const
+void Foam::fmuConnectorCore::checkParameters
+(
+    const dictionary& parameters,
+    const dictionary& restraintDict,
+    const scalar startTime
+) const
+{
+    // A probe instance, quiet, gone before the connector's own is made (an
+    // FMU may allow one instance per process)
+    std::string refusal;
+    {
+        fmuImport::Instance probe
+        (
+            *fmu_,
+            restraintName_,
+            [](const std::string&, int, const std::string&, const std::string&)
+            {}
+        );
+        probe.setupExperiment(startTime);
+        probe.enterInitializationMode();
+        setParameters(probe, parameters);
+        try
+        {
+            probe.exitInitializationMode();
+        }
+        catch (const fmuImport::Error& err)
+        {
+            refusal = err.what();
+        }
+    }
+    if (refusal.empty())
+    {
+        return;
+    }
+
+    // The parameter the refusal names, and the entry that sets it
+    for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
+    {
+        if
+        (
+            var.causality != fmuImport::Causality::parameter
+         || !namesParameter(refusal, var.name)
+        )
+        {
+            continue;
+        }
+
+        for (const entry& e : parameters)
+        {
+            const std::string key(e.keyword());
+            if
+            (
+                var.name == key
+             || var.name.compare(0, key.size() + 1, key + "[") == 0
+            )
+            {
+                FatalIOErrorInFunction(e.stream())
+                    << "restraint " << restraintName_ << ": the FMU refuses"
+                    << " parameter '" << e.keyword() << "' ("
+                    << file_ << "): " << refusal.c_str()
+                    << exit(FatalIOError);
+            }
+        }
+
+        // Not given here: its start value
+        FatalIOErrorInFunction
+        (
+            parameters.empty() ? restraintDict : parameters
+        )   << "restraint " << restraintName_ << ": the FMU refuses the"
+            << " start value of its parameter " << var.name.c_str()
+            << ", which the parameters do not set (" << file_ << "): "
+            << refusal.c_str() << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fmuConnectorCore::checkRestoredParameters() const
 {
     OStringStream changed;
 

@@ -7,13 +7,24 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "connectorFmu.H"
+#include "fmuConnectorCore.H"
+#include "fmuConnectorOutput.H"
+#include "Time.H"
 #include "error.H"
 #include "messageStream.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::fmuConnectorCore::restartMode>
+Foam::fmuConnectorCore::restartModeNames
+({
+    { restartMode::exact, "exact" },
+    { restartMode::fresh, "fresh" },
+});
+
 // * * * * * * * * * * * * * * * * * Kinematics  * * * * * * * * * * * * * * //
 
-Foam::connectorFmu::kinematics Foam::connectorFmu::kinematics::world()
+Foam::fmuConnectorCore::kinematics Foam::fmuConnectorCore::kinematics::world()
 {
     return kinematics{Zero, tensor::I, Zero, Zero};
 }
@@ -21,7 +32,7 @@ Foam::connectorFmu::kinematics Foam::connectorFmu::kinematics::world()
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-std::string Foam::connectorFmu::where() const
+std::string Foam::fmuConnectorCore::where() const
 {
     return
         "FMU " + std::string(file_) + " of restraint "
@@ -29,7 +40,7 @@ std::string Foam::connectorFmu::where() const
 }
 
 
-void Foam::connectorFmu::restorePending
+void Foam::fmuConnectorCore::restorePending
 (
     const kinematics& A,
     const kinematics& B
@@ -64,7 +75,7 @@ void Foam::connectorFmu::restorePending
 }
 
 
-void Foam::connectorFmu::doStep(const scalar t, const scalar deltaT)
+void Foam::fmuConnectorCore::doStep(const scalar t, const scalar deltaT)
 {
     typedef fmuImport::Instance::StepResult result;
 
@@ -94,9 +105,69 @@ void Foam::connectorFmu::doStep(const scalar t, const scalar deltaT)
 }
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::fmuConnectorCore::checkEntries
+(
+    const word& restraintName,
+    const dictionary& dict,
+    const word& typeKeyword
+)
+{
+    const wordList keywords
+    ({
+        typeKeyword, "body", "bodyB", "fmu", "parameters", "report",
+        "restart"
+    });
+    for (const entry& e : dict)
+    {
+        if (!keywords.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "restraint " << restraintName << ": unknown entry '"
+                << e.keyword() << "'; the entries of an fmuConnector"
+                << " restraint are " << flatOutput(keywords)
+                << exit(FatalIOError);
+        }
+    }
+
+    if (dict.found("parameters") && !dict.isDict("parameters"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << restraintName << ": entry 'parameters' must"
+            << " be a dictionary of the FMU's parameters, e.g."
+            << " parameters { stiffness 100; }" << exit(FatalIOError);
+    }
+
+    const word bodyB(dict.getOrDefault<word>("bodyB", word::null));
+    if (!bodyB.empty() && bodyB == dict.getOrDefault<word>("body", word::null))
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << restraintName << ": body and bodyB are the"
+            << " same body " << bodyB << exit(FatalIOError);
+    }
+}
+
+
+Foam::fileName Foam::fmuConnectorCore::caseFile
+(
+    const fileName& fmuFile,
+    const Time& runTime
+)
+{
+    fileName file(fmuFile);
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        file = runTime.globalPath()/file;
+    }
+    return file;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::connectorFmu::connectorFmu
+Foam::fmuConnectorCore::fmuConnectorCore
 (
     const fileName& file,
     const word& restraintName,
@@ -111,7 +182,7 @@ Foam::connectorFmu::connectorFmu
     initialised_(false),
     stepStartTime_(startTime),
     stepEndTime_(startTime - 1),
-    foamStepTime_(startTime),
+    stepIndex_(-1),
     warnedNoRollback_(false),
     parameters_(parameters),
     restoreTime_(startTime)
@@ -134,6 +205,8 @@ Foam::connectorFmu::connectorFmu
         }
 
         lookupVariables();
+
+        checkParameters(parameters, restraintDict, startTime);
 
         const word instanceName(restraintName_);
         instance_.reset
@@ -170,7 +243,7 @@ Foam::connectorFmu::connectorFmu
 
         instance_->setupExperiment(startTime);
         instance_->enterInitializationMode();
-        setParameters(parameters);
+        setParameters(*instance_, parameters);
     }
     catch (const fmuImport::Error& err)
     {
@@ -191,14 +264,15 @@ Foam::connectorFmu::connectorFmu
 
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
-Foam::connectorFmu::~connectorFmu()
+Foam::fmuConnectorCore::~fmuConnectorCore()
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::connectorFmu::evaluate
+void Foam::fmuConnectorCore::evaluate
 (
+    const label timeIndex,
     const scalar t,
     const scalar deltaT,
     const kinematics& A,
@@ -210,7 +284,7 @@ void Foam::connectorFmu::evaluate
 
     try
     {
-        const bool newStep = (deltaT > 0 && t != foamStepTime_);
+        const bool newStep = (deltaT > 0 && timeIndex != stepIndex_);
         const bool repeatedSolve =
             deltaT > 0 && !newStep && initialised_ && canRollback_;
 
@@ -244,7 +318,7 @@ void Foam::connectorFmu::evaluate
 
         if (newStep)
         {
-            foamStepTime_ = t;
+            stepIndex_ = timeIndex;
             stepEndTime_ = stepStartTime_ + deltaT;
             doStep(t, deltaT);
         }
@@ -269,16 +343,44 @@ void Foam::connectorFmu::evaluate
             << "restraint " << restraintName_ << " at t = " << t << ": "
             << err.what() << exit(FatalError);
     }
+
+    if (output_.valid() && deltaT > 0)
+    {
+        output_->record(timeIndex, t);
+    }
 }
 
 
-bool Foam::connectorFmu::canSerialize() const
+void Foam::fmuConnectorCore::checkBodyB
+(
+    const word& bodyB,
+    const dictionary& dict
+) const
+{
+    if (!declaresBodyB() && !bodyB.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << restraintName_ << ": entry bodyB names "
+            << bodyB << " but FMU " << file_
+            << " connects one body to the fixed world (it declares no B."
+            << " inputs)" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fmuConnectorCore::record(fmuConnectorOutput* output)
+{
+    output_.reset(output);
+}
+
+
+bool Foam::fmuConnectorCore::canSerialize() const
 {
     return fmu_->modelDescription().canSerializeFMUstate && canRollback_;
 }
 
 
-std::vector<char> Foam::connectorFmu::serialize(scalar& time) const
+std::vector<char> Foam::fmuConnectorCore::serialize(scalar& time) const
 {
     time = stepEndTime_ >= stepStartTime_ ? stepEndTime_ : stepStartTime_;
 
@@ -296,7 +398,7 @@ std::vector<char> Foam::connectorFmu::serialize(scalar& time) const
 }
 
 
-void Foam::connectorFmu::deserialize
+void Foam::fmuConnectorCore::deserialize
 (
     const std::vector<char>& bytes,
     const scalar time,

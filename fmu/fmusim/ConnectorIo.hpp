@@ -1,8 +1,8 @@
-// The connector FMU interface (docs/connector-fmu-interface.md) seen from
-// fmusim: its vocabulary of variables, and feeding two bodies' kinematics to
-// a connector instance and reading back the loads.
-#ifndef FMUSIM_CONNECTOR_HPP
-#define FMUSIM_CONNECTOR_HPP
+// A connector FMU's inputs and outputs as fmusim drives them: two bodies'
+// kinematics and mass properties in, loads out. The interface's vocabulary
+// and rules are fmuImport's (fmuImport::connector).
+#ifndef FMUSIM_CONNECTORIO_HPP
+#define FMUSIM_CONNECTORIO_HPP
 
 #include "WatchedInstance.hpp"
 
@@ -39,42 +39,30 @@ struct Loads {
         = Eigen::Vector3d::Zero(); // moment about the reference point [N.m]
 };
 
-enum class Shape { scalar, vector, matrix };
-enum class Requirement { always, twoBody, optional };
-
-// One name of the interface: base "A.r" with shape vector stands for
-// A.r[1], A.r[2], A.r[3].
-struct VocabularyEntry {
-    std::string base;
-    Shape shape;
-    fmuImport::Causality causality;
-    fmuImport::Variability variability;
-    std::vector<std::string>
-        units; // accepted units; the first is the documented one
-    Requirement requirement;
-};
-
-const std::vector<VocabularyEntry>& connectorVocabulary();
-
-// The scalar names of an entry: "A.r[1]".."A.r[3]", "A.R[1,1]".."A.R[3,3]".
-std::vector<std::string> componentNames(const std::string& base, Shape shape);
-
 // A connector FMU's kinematic inputs, mass property inputs and load outputs,
-// by value reference. A block counts as declared when all its components are
-// declared Real variables.
-class Connector {
+// by value reference (declared terms of fmuImport::connector::Variables).
+class ConnectorIo {
 public:
-    explicit Connector(const fmuImport::Fmu& fmu);
+    explicit ConnectorIo(const fmuImport::Fmu& fmu);
 
-    bool twoBody() const { return twoBody_; } // declares B. inputs
-    // The required blocks not fully declared ("A.F", ...); empty for a
+    // The FMU's interface variables and their departures from the interface
+    const fmuImport::connector::Variables& variables() const
+    {
+        return variables_;
+    }
+
+    bool twoBody() const { return variables_.twoBody(); } // declares B. inputs
+    // The required terms not fully declared ("A.F", ...); empty for a
     // usable connector.
-    std::vector<std::string> missingRequired() const;
-    bool hasLoadsB() const { return B_.F.declared && B_.M.declared; }
+    std::vector<std::string> missingRequired() const
+    {
+        return variables_.missingRequired();
+    }
+    bool hasLoadsB() const { return !B_.F.empty() && !B_.M.empty(); }
     bool hasVelocities() const
     {
-        return A_.v.declared || A_.omega.declared || B_.v.declared
-            || B_.omega.declared;
+        return !A_.v.empty() || !A_.omega.empty() || !B_.v.empty()
+            || !B_.omega.empty();
     }
 
     // Sets the declared inputs; for a one-body connector B is ignored.
@@ -90,21 +78,15 @@ public:
     std::vector<std::pair<std::string, unsigned int>> kinematicInputs() const;
 
 private:
-    struct Block {
-        std::vector<std::string> names;
-        std::vector<unsigned int> vrs;
-        bool declared = false;
-    };
+    // Value references of one body's terms, empty when not declared
     struct Body {
-        Block r, R, v, omega, m, c, J, F, M;
+        std::vector<unsigned int> r, R, v, omega, m, c, J, F, M;
     };
 
-    static Block find(const fmuImport::Fmu& fmu, const std::string& base,
-                      Shape shape);
-    static Body findBody(const fmuImport::Fmu& fmu, const std::string& prefix);
+    Body body(const std::string& prefix) const;
 
+    fmuImport::connector::Variables variables_;
     Body A_, B_;
-    bool twoBody_ = false;
 };
 
 } // namespace fmusim

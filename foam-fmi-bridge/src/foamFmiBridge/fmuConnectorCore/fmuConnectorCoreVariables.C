@@ -1,0 +1,259 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Description
+    Variable handling of fmuConnectorCore: its interface variables by
+    fmuImport's vocabulary, inputs and outputs (parameters:
+    fmuConnectorCoreParameters.C).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fmuConnectorCore.H"
+#include "error.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fmuConnectorCore::lookupVariables()
+{
+    variables_.reset(new fmuImport::connector::Variables(*fmu_));
+
+    // The FMU follows the interface as fmusim check has it, or is refused
+    // with every departure; a required term not declared at all takes one
+    // line, not one per component
+    namespace connector = fmuImport::connector;
+    OStringStream problems;
+    const connector::Term* undeclared = nullptr;
+    for (const connector::Problem& p : variables_->problems())
+    {
+        const connector::Term& term = *p.term;
+        const std::vector<std::string> names
+        (
+            connector::componentNames(term.base, term.shape)
+        );
+        const bool noneDeclared = std::none_of
+        (
+            names.begin(),
+            names.end(),
+            [this](const std::string& n) { return fmu_->hasVariable(n); }
+        );
+
+        if (p.required && noneDeclared)
+        {
+            if (&term != undeclared)
+            {
+                undeclared = &term;
+                problems
+                    << nl << "    the connector interface requires the "
+                    << connector::causalityName(term.causality) << ' '
+                    << term.base.c_str()
+                    << (
+                           term.shape == connector::Shape::scalar ? ""
+                         : term.shape == connector::Shape::vector ? "[1..3]"
+                         : "[1..3,1..3]"
+                       )
+                    << " but the FMU does not declare it";
+            }
+        }
+        else
+        {
+            problems<< nl << "    " << p.text.c_str();
+        }
+    }
+    if (!problems.str().empty())
+    {
+        FatalErrorInFunction
+            << where().c_str() << "the FMU does not follow the connector"
+            << " interface (docs/connector-fmu-interface.md; fmusim check"
+            << " tells the same):" << problems.str().c_str()
+            << exit(FatalError);
+    }
+
+    auto lookupBody = [this](const std::string& body, bodyVariables& vars)
+    {
+        const fmuImport::connector::Variables& found = variables_();
+        vars.r = found.refs(body + ".r");
+        vars.R = found.refs(body + ".R");
+        vars.v = found.refs(body + ".v");
+        vars.omega = found.refs(body + ".omega");
+        vars.m = found.refs(body + ".m");
+        vars.c = found.refs(body + ".c");
+        vars.J = found.refs(body + ".J");
+    };
+
+    lookupBody("A", A_);
+    lookupBody("B", B_);
+
+    for (const bodyVariables* vars : {&A_, &B_})
+    {
+        for (const auto* refs : {&vars->r, &vars->R, &vars->v, &vars->omega})
+        {
+            inputRefs_.insert(inputRefs_.end(), refs->begin(), refs->end());
+        }
+    }
+    inputValues_.resize(inputRefs_.size());
+
+    for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
+    {
+        if
+        (
+            var.causality == fmuImport::Causality::output
+         && var.type == fmuImport::Type::Real
+        )
+        {
+            outputNames_.append(word(var.name, false));
+            outputRefs_.push_back(var.valueReference);
+        }
+    }
+    outputs_.setSize(outputNames_.size(), Zero);
+
+    // Positions of the loads among the outputs
+    auto positions = [this](const std::string& term)
+    {
+        const std::vector<unsigned int>& refs = variables_->refs(term);
+        labelList pos(refs.size());
+        forAll(pos, i)
+        {
+            pos[i] =
+                std::find(outputRefs_.begin(), outputRefs_.end(), refs[i])
+              - outputRefs_.begin();
+        }
+        return pos;
+    };
+
+    A_.Fout = positions("A.F");
+    A_.Mout = positions("A.M");
+    B_.Fout = positions("B.F");
+    B_.Mout = positions("B.M");
+}
+
+
+void Foam::fmuConnectorCore::setInputs
+(
+    const kinematics& A,
+    const kinematics& B
+)
+{
+    // In the order of inputRefs_ (lookupVariables); OpenFOAM's tensor
+    // stores its components row by row, as A.R[i,j] does
+    double* value = inputValues_.data();
+    auto add = [&value](const std::vector<unsigned int>& refs, const double* v)
+    {
+        value = std::copy(v, v + refs.size(), value);
+    };
+
+    for (const auto& body : {std::make_pair(&A_, &A), std::make_pair(&B_, &B)})
+    {
+        add(body.first->r, body.second->r.cdata());
+        add(body.first->R, body.second->R.cdata());
+        add(body.first->v, body.second->v.cdata());
+        add(body.first->omega, body.second->omega.cdata());
+    }
+
+    if (!inputRefs_.empty())
+    {
+        instance_->setReal(inputRefs_, inputValues_);
+    }
+    if (!massRefs_.empty())
+    {
+        instance_->setReal(massRefs_, massValues_);
+    }
+}
+
+
+void Foam::fmuConnectorCore::setMassProperties
+(
+    const massProperties& A,
+    const massProperties& B,
+    const bool setB
+)
+{
+    massRefs_.clear();
+    massValues_.clear();
+
+    auto add = [this](const std::vector<unsigned int>& refs, const double* v)
+    {
+        massRefs_.insert(massRefs_.end(), refs.begin(), refs.end());
+        massValues_.insert(massValues_.end(), v, v + refs.size());
+    };
+
+    add(A_.m, &A.m);
+    add(A_.c, A.c.cdata());
+    add(A_.J, A.J.cdata());
+    if (setB)
+    {
+        add(B_.m, &B.m);
+        add(B_.c, B.c.cdata());
+        add(B_.J, B.J.cdata());
+    }
+}
+
+
+void Foam::fmuConnectorCore::readOutputs()
+{
+    const std::vector<double> values = instance_->getReal(outputRefs_);
+
+    forAll(outputs_, i)
+    {
+        if (!std::isfinite(values[i]))
+        {
+            FatalErrorInFunction
+                << where().c_str() << "output " << outputNames_[i]
+                << " is not finite (" << values[i] << ") at t = "
+                << stepEndTime_ << exit(FatalError);
+        }
+        outputs_[i] = values[i];
+    }
+}
+
+
+Foam::fmuConnectorCore::loads Foam::fmuConnectorCore::loadsOf
+(
+    const bodyVariables& vars
+) const
+{
+    loads l{Zero, Zero};
+
+    forAll(vars.Fout, i)
+    {
+        l.F[i] = outputs_[vars.Fout[i]];
+        l.M[i] = outputs_[vars.Mout[i]];
+    }
+
+    return l;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fmuConnectorCore::output
+(
+    const word& name,
+    const scalar deflt
+) const
+{
+    const label i = outputNames_.find(name);
+    return i < 0 ? deflt : outputs_[i];
+}
+
+
+void Foam::fmuConnectorCore::writeDiagnostics(Ostream& os) const
+{
+    for (const word diagnostic : {"length", "tension"})
+    {
+        if (outputNames_.found(diagnostic))
+        {
+            os  << ' ' << diagnostic << ' ' << output(diagnostic, 0);
+        }
+    }
+}
+
+
+// ************************************************************************* //
