@@ -15,7 +15,7 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
 {
     for (const ScalarVariable& v : model_->variables().variables()) {
         realAccess_.push_back(
-            v.type != Type::real                      ? RealAccess::none
+            v.type != Type::Real                      ? RealAccess::none
                 : v.causality == Causality::input     ? RealAccess::input
                 : v.causality == Causality::parameter ? RealAccess::parameter
                 : v.causality == Causality::output    ? RealAccess::output
@@ -124,7 +124,7 @@ const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
     if (v.type != type) {
         throw UsageError("value reference " + std::to_string(vr) + " (" + v.name
                          + ") is not of type "
-                         + (type == Type::real ? "Real" : "Boolean"));
+                         + (type == Type::Real ? "Real" : "Boolean"));
     }
     return v;
 }
@@ -178,7 +178,7 @@ void FmuInstance::getBoolean(const fmi2ValueReference vr[], std::size_t n,
                              fmi2Boolean value[])
 {
     for (std::size_t i = 0; i < n; ++i) {
-        variable(vr[i], Type::boolean);
+        variable(vr[i], Type::Boolean);
     }
     for (std::size_t i = 0; i < n; ++i) {
         value[i] = values_[vr[i]] != 0.0 ? fmi2True : fmi2False;
@@ -188,7 +188,7 @@ void FmuInstance::getBoolean(const fmi2ValueReference vr[], std::size_t n,
 void FmuInstance::setBoolean(const fmi2ValueReference vr[], std::size_t n)
 {
     for (std::size_t i = 0; i < n; ++i) {
-        throw UsageError("variable " + variable(vr[i], Type::boolean).name
+        throw UsageError("variable " + variable(vr[i], Type::Boolean).name
                          + " is a constant and cannot be set");
     }
 }

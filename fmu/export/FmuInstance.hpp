@@ -85,7 +85,7 @@ private:
     RealAccess realAccess(fmi2ValueReference vr) const
     {
         if (vr >= realAccess_.size() || realAccess_[vr] == RealAccess::none) {
-            variable(vr, Type::real);
+            variable(vr, Type::Real);
         }
         return realAccess_[vr];
     }

@@ -165,7 +165,7 @@ std::string modelGuid(const Model& model)
          << id.description << '\n';
     for (const ScalarVariable& v : model.variables().variables()) {
         text << v.name << '|' << v.valueReference << '|'
-             << (v.type == Type::real ? "Real" : "Boolean") << '|'
+             << (v.type == Type::Real ? "Real" : "Boolean") << '|'
              << causalityName(v.causality) << '|'
              << variabilityName(v.variability) << '|' << initialName(v.initial)
              << '|' << v.unit << '|' << v.description << '|'
@@ -211,7 +211,7 @@ std::string modelDescriptionXml(const Model& model)
 
     std::set<std::string> used;
     for (const ScalarVariable& v : variables) {
-        if (v.type == Type::real) {
+        if (v.type == Type::Real) {
             used.insert(v.unit);
         }
     }
@@ -242,7 +242,7 @@ std::string modelDescriptionXml(const Model& model)
         if (v.initial != Initial::none) {
             x << " initial=\"" << initialName(v.initial) << "\"";
         }
-        if (v.type == Type::boolean) {
+        if (v.type == Type::Boolean) {
             x << ">\n      <Boolean start=\""
               << (v.start != 0.0 ? "true" : "false") << "\"";
         } else {
@@ -298,7 +298,7 @@ std::string documentationHtml(const Model& model)
           << v.valueReference << "</td><td>" << causalityName(v.causality)
           << "</td><td>" << escape(v.unit) << "</td><td>"
           << (v.initial == Initial::calculated ? std::string()
-                  : v.type == Type::boolean
+                  : v.type == Type::Boolean
                   ? std::string(v.start != 0.0 ? "true" : "false")
                   : formatDouble(v.start))
           << "</td><td>" << escape(v.description) << "</td></tr>\n";

@@ -82,7 +82,7 @@ Block VariableTable::booleanConstant(const std::string& name,
     ScalarVariable v;
     v.name = name;
     v.valueReference = fmi2ValueReference(variables_.size());
-    v.type = Type::boolean;
+    v.type = Type::Boolean;
     v.causality = Causality::local;
     v.variability = Variability::constant;
     v.initial = Initial::exact;

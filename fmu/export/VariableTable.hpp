@@ -15,8 +15,9 @@ namespace fmuExport {
 
 enum class Causality { parameter, input, output, local };
 enum class Variability { constant, fixed, continuous };
-//- FMI base type; a Boolean is stored as 0.0 or 1.0 in the value array
-enum class Type { real, boolean };
+//- FMI base type, spelt as in modelDescription.xml (and fmuImport::Type);
+//  a Boolean is stored as 0.0 or 1.0 in the value array
+enum class Type { Real, Boolean };
 //- `none` omits the attribute (required for inputs)
 enum class Initial { none, exact, calculated };
 //- Scalar "x", vector "x[1..3]", matrix "x[1..3,1..3]" (row, column)
@@ -31,7 +32,7 @@ struct Block {
 struct ScalarVariable {
     std::string name;
     fmi2ValueReference valueReference = 0;
-    Type type = Type::real;
+    Type type = Type::Real;
     Causality causality = Causality::parameter;
     Variability variability = Variability::fixed;
     Initial initial = Initial::none;
