@@ -19,17 +19,20 @@
 //           with vn, vt the normal and tangential parts of -v_i
 //
 // The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
-// states (position and velocity of each free node, interleaved node by
-// node, so that the Jacobian is banded with half-bandwidth 11) are
-// integrated by CVODE's BDF method (CvodeBdf) with a banded direct solver.
-// Over a step the ends follow the cubic Hermite path through their
-// positions and velocities at both ends of the step (those saved in the
-// state at its start, the kinematics given at its end), and the node
-// equations see that path's velocity; at the end of the step it is the
-// given velocity, the one `evaluate` uses for the end segments' damping.
-// Every step starts CVODE afresh (CVodeReInit, order 1) from the node
-// state, so a step repeated from a saved state gives the same result to the
-// last bit.
+// states (position and velocity of each free node) are integrated by the
+// implicit trapezoidal rule (default; MoorDyn's implicit Newmark): per
+// step one Newton solve, on the end positions, with the block tridiagonal
+// matrix M + h^2/4 S + h/2 D (LineStatics.hpp); or by CVODE's BDF method
+// (CvodeBdf) with a banded direct solver. Over a step the ends follow the
+// cubic Hermite path through their positions and velocities at both ends
+// of the step (those saved in the state at its start, the kinematics given
+// at its end); the trapezoidal rule sees them at the step's ends (and
+// substeps'), CVODE also inside it. At the end of the step the velocity is
+// the given one, which `evaluate` uses for the end segments' damping. A
+// step depends on the node state alone (the trapezoidal rule keeps
+// nothing from one step to the next; CVODE is restarted, order 1, at every
+// step), so a step repeated from a saved state gives the same result to
+// the last bit.
 //
 // Loads: the end nodes' half-segment weight is carried by the bodies
 // (at Q by the seabed when seabedContact):
@@ -73,7 +76,8 @@ struct MooringLineParameters {
     //- Longest trapezoidal step [s]: a coupling step is cut into equal
     //  substeps no longer than this (0: one step per coupling step)
     double maxStep = 0.0;
-    //- CVODE tolerances (relative [-], absolute [m, m/s])
+    //- CVODE tolerances (relative [-], absolute [m, m/s]); Integrator::cvode
+    //  only
     double relativeTolerance = 1e-6, absoluteTolerance = 1e-6;
     //- The ends' path over a step: the cubic Hermite curve through the
     //  positions and velocities at both ends (true), or straight lines
@@ -126,8 +130,8 @@ public:
     //- Advances `state` by h > 0, the ends moving along the cubic Hermite
     //  path from their positions and velocities in `state` to those of the
     //  attachment points of A and B (the kinematics at state.time + h).
-    //  Throws UndefinedStateError (naming CVODE's failure) on failure,
-    //  leaving `state` unchanged.
+    //  Throws UndefinedStateError (naming the integrator's failure) on
+    //  failure, leaving `state` unchanged.
     void advance(MooringLineState& state, const BodyKinematics& A,
                  const BodyKinematics& B, double h);
 
