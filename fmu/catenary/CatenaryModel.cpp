@@ -4,10 +4,7 @@
 // The FMU state is the value array of the export layer. The H and V outputs
 // keep the solution of the previous evaluation there; each evaluation warm
 // starts Newton from them, so a restored state repeats a step exactly.
-#include <cmath>
-
-#include "LineFmuVariables.hpp"
-#include "Model.hpp"
+#include "LineFmuModel.hpp"
 #include "catenary/Catenary.hpp"
 #include "common/ConnectorError.hpp"
 
@@ -41,7 +38,7 @@ solved in closed form. fmi2Error (with the regime and residual in the
 message) for a fairlead below the seabed and a Newton failure.
 No SUNDIALS dependency. Details: connectors/catenary/README.md.</p>)";
 
-class CatenaryModel final : public fmuExport::Model {
+class CatenaryModel final : public fmuExport::LineFmuModel {
 public:
     CatenaryModel();
 
@@ -50,23 +47,25 @@ public:
         connectors::Catenary law(parameters(values));
     }
 
-    void computeOutputs(double* values) const override;
+protected:
+    fmuExport::ConnectorOutputs
+    evaluate(const double* values, const connectors::BodyKinematics& A,
+             const connectors::BodyKinematics& B) const override;
 
 private:
     connectors::CatenaryParameters parameters(const double* values) const;
 
-    lineFmu::LineVariables v_;
     Block length_, EA_, weight_, seabedContact_, seabedFriction_;
 };
 
 CatenaryModel::CatenaryModel()
-    : Model({"catenary",
-             "Quasi-static elastic catenary mooring line between a body and "
-             "a seabed anchor, or between two bodies",
-             "1.0.0", lawHtml})
+    : LineFmuModel(
+        {"catenary",
+         "Quasi-static elastic catenary mooring line between a body and "
+         "a seabed anchor, or between two bodies",
+         "1.0.0", lawHtml})
 {
     fmuExport::VariableTable& t = table();
-    lineFmu::declareAttachments(t, v_);
     length_ = t.parameter("unstretchedLength", Shape::scalar, "m",
                           "unstretched length L of the line, > 0", {1.5});
     EA_ = t.parameter("EA", Shape::scalar, "N", "axial stiffness EA, > 0",
@@ -81,21 +80,22 @@ CatenaryModel::CatenaryModel()
                                  {0.0});
     seabedFriction_ = t.parameter("seabedFriction", Shape::scalar, "1",
                                   "seabed friction coefficient, >= 0", {0.0});
-    lineFmu::declareBodies(t, v_, {1, 0, 0});
-    const std::vector<Block> positions = lineFmu::positionBlocks(v_);
-    lineFmu::LineDependencies d;
-    d.loads = lineFmu::join(
-        positions, {length_, EA_, weight_, seabedContact_, seabedFriction_});
+    declareBodies({1, 0, 0});
+    const std::vector<Block> positions = positionBlocks();
+    OutputDependencies d;
+    d.loads = join(positions,
+                   {length_, EA_, weight_, seabedContact_, seabedFriction_});
     d.length = positions;
-    d.lengthRate = lineFmu::join(positions, lineFmu::velocityBlocks(v_));
-    d.energy = d.loads;
-    lineFmu::declareOutputs(t, v_, d);
+    d.lengthRate = join(positions, velocityBlocks());
+    d.tension = d.loads;
+    d.potentialEnergy = d.loads;
+    declareLineOutputs(d);
 }
 
 connectors::CatenaryParameters
 CatenaryModel::parameters(const double* values) const
 {
-    const double contact = values[seabedContact_.first];
+    const double contact = scalar(values, seabedContact_);
     if (contact != 0.0 && contact != 1.0) {
         throw connectors::ConnectorError(
             "catenary: parameter seabedContact = "
@@ -103,25 +103,27 @@ CatenaryModel::parameters(const double* values) const
             + " is out of range (allowed: 0 or 1)");
     }
     connectors::CatenaryParameters p;
-    p.p_AoP_A = lineFmu::vector3(values, v_.A_p);
-    p.p_BoQ_B = lineFmu::vector3(values, v_.B_p);
-    p.line.length = values[length_.first];
-    p.line.EA = values[EA_.first];
-    p.line.weight = values[weight_.first];
+    p.p_AoP_A = vector3(values, A_p);
+    p.p_BoQ_B = vector3(values, B_p);
+    p.line.length = scalar(values, length_);
+    p.line.EA = scalar(values, EA_);
+    p.line.weight = scalar(values, weight_);
     p.line.seabedContact = contact == 1.0;
-    p.line.seabedFriction = values[seabedFriction_.first];
+    p.line.seabedFriction = scalar(values, seabedFriction_);
     return p;
 }
 
-void CatenaryModel::computeOutputs(double* values) const
+fmuExport::ConnectorOutputs
+CatenaryModel::evaluate(const double* values,
+                        const connectors::BodyKinematics& A,
+                        const connectors::BodyKinematics& B) const
 {
     const connectors::Catenary law(parameters(values));
-    const connectors::CatenaryGuess previous {values[v_.H.first],
-                                              values[v_.V.first]};
-    const connectors::CatenaryOutput c = law.evaluate(
-        lineFmu::kinematics(values, v_.A), lineFmu::kinematics(values, v_.B),
-        &previous, lineFmu::shapePoints);
-    lineFmu::LineOutputs o;
+    const connectors::CatenaryGuess previous {scalar(values, H),
+                                              scalar(values, V)};
+    const connectors::CatenaryOutput c
+        = law.evaluate(A, B, &previous, shapePoints);
+    fmuExport::LineOutputs o;
     o.loads = c.loads;
     o.fairleadTension = c.fairleadTension;
     o.anchorTension = c.anchorTension;
@@ -129,7 +131,7 @@ void CatenaryModel::computeOutputs(double* values) const
     o.H = c.solution.H;
     o.V = c.solution.V;
     o.shape = c.shape;
-    lineFmu::writeOutputs(values, v_, variables(), "catenary", o);
+    return outputs(o);
 }
 
 } // namespace

@@ -6,12 +6,7 @@
 // unwraps the new angle against it, so the angle stays continuous through
 // any number of turns and is saved, restored and serialized with the FMU
 // state (rollback of repeated steps, restart).
-#include <cmath>
-#include <stdexcept>
-
-#include "BodyInputs.hpp"
-#include "Model.hpp"
-#include "ModelDescription.hpp"
+#include "ConnectorFmuModel.hpp"
 #include "hinge/Hinge.hpp"
 
 namespace {
@@ -48,13 +43,23 @@ must be finite and &ge; 0, the axes non-zero (checked in
 fmi2ExitInitializationMode). See connectors/hinge/README.md for the
 stability limit of the penalty in an explicit coupling.</p>)";
 
-std::vector<Block> join(std::vector<Block> a, const std::vector<Block>& b)
+fmuExport::ConnectorWording hingeWording()
 {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
+    fmuExport::ConnectorWording w;
+    w.noun = "hinge";
+    w.A_p = "hinge point on A";
+    w.B_p = "hinge point on B";
+    w.length = "distance between the hinge points (the same as gap)";
+    w.tension = "penalty force along P->Q, positive when it pulls the hinge "
+                "points together";
+    w.potentialEnergy
+        = "energy stored in the penalty springs and the PTO spring";
+    w.dissipatedPower
+        = "power dissipated by the penalty and PTO dampers, never negative";
+    return w;
 }
 
-class HingeModel final : public fmuExport::Model {
+class HingeModel final : public fmuExport::ConnectorFmuModel {
 public:
     HingeModel();
 
@@ -63,39 +68,31 @@ public:
         connectors::Hinge law(parameters(values));
     }
 
-    void computeOutputs(double* values) const override;
+protected:
+    fmuExport::ConnectorOutputs
+    evaluate(const double* values, const connectors::BodyKinematics& A,
+             const connectors::BodyKinematics& B) const override;
 
 private:
     connectors::HingeParameters parameters(const double* values) const;
-    void declareOutputs();
+    void declareHingeOutputs();
 
-    static connectors::Vector3 vector3(const double* values, Block block)
-    {
-        return fmuExport::blockVector3(values, block);
-    }
-
-    Block A_p_, B_p_, A_axis_, B_axis_, A_ref_, B_ref_;
+    Block A_axis_, B_axis_, A_ref_, B_ref_;
     Block stiffness_, damping_, rotationalStiffness_, rotationalDamping_;
     Block ptoStiffness_, ptoDamping_, ptoRestAngle_;
-    fmuExport::BodyInputs A_, B_;
-    //- First output and the `angle` output (the unwrapping state)
-    Block firstOutput_, angle_;
+    //- The `angle` output (the unwrapping state)
+    Block angle_;
 };
 
 HingeModel::HingeModel()
-    : Model({"hinge",
-             "Hinge (revolute joint) between two bodies as a penalty force "
-             "element, with a rotary power take-off about its axis",
-             "1.0.0", lawHtml})
+    : ConnectorFmuModel({"hinge",
+                         "Hinge (revolute joint) between two bodies as a "
+                         "penalty force element, with a rotary power take-off "
+                         "about its axis",
+                         "1.0.0", lawHtml},
+                        hingeWording())
 {
     fmuExport::VariableTable& t = table();
-    A_p_ = t.parameter("A.p", Shape::vector3, "m",
-                       "hinge point on A, A's frame, from A's reference point",
-                       {0, 0, 0});
-    B_p_ = t.parameter("B.p", Shape::vector3, "m",
-                       "hinge point on B, B's frame, from B's reference point "
-                       "(a global point when B is the world)",
-                       {0, 0, 0});
     A_axis_ = t.parameter("A.axis", Shape::vector3, "1",
                           "hinge axis in A's frame, non-zero (normalised)",
                           {0, 0, 1});
@@ -130,25 +127,19 @@ HingeModel::HingeModel()
     ptoRestAngle_
         = t.parameter("ptoRestAngle", Shape::scalar, "rad",
                       "angle at which the PTO spring is unloaded", {0.0});
-    A_ = fmuExport::declareBodyInputs(t, "A", {0, 0, 0});
-    B_ = fmuExport::declareBodyInputs(t, "B", {0, 0, 0});
     // Both bodies at the origin with the default hinge points: no load
-    t.booleanConstant("inputsStartAtRest",
-                      "the start values of inputs and parameters are a "
-                      "configuration where the connector exerts no load",
-                      true);
-    declareOutputs();
+    declareBodies({0, 0, 0});
+    declareStartAtRest();
+    declareHingeOutputs();
 }
 
-void HingeModel::declareOutputs()
+void HingeModel::declareHingeOutputs()
 {
-    fmuExport::VariableTable& t = table();
-    const std::vector<Block> points = {A_p_, B_p_, A_.r, A_.R, B_.r, B_.R};
-    const std::vector<Block> pointMotion
-        = join(points, {A_.v, A_.omega, B_.v, B_.omega});
-    const std::vector<Block> orientations = {A_.R, B_.R, A_axis_, B_axis_};
+    const std::vector<Block> points = positionBlocks();
+    const std::vector<Block> pointMotion = join(points, velocityBlocks());
+    const std::vector<Block> orientations = {A.R, B.R, A_axis_, B_axis_};
     const std::vector<Block> angle = join(orientations, {A_ref_, B_ref_});
-    const std::vector<Block> angleRate = {A_.R, A_axis_, A_.omega, B_.omega};
+    const std::vector<Block> angleRate = {A.R, A_axis_, A.omega, B.omega};
     const std::vector<Block> pto = join(
         join(angle, angleRate), {ptoStiffness_, ptoDamping_, ptoRestAngle_});
     const std::vector<Block> loads = join(
@@ -161,95 +152,64 @@ void HingeModel::declareOutputs()
         = join(join(pointMotion, angleRate),
                {damping_, rotationalDamping_, ptoDamping_});
 
-    firstOutput_ = t.output("A.F", Shape::vector3, "N",
-                            "force of the hinge on A, global frame", loads);
-    t.output("A.M", Shape::vector3, "N.m",
-             "moment of the hinge on A about A's reference point, global frame",
-             loads);
-    t.output("B.F", Shape::vector3, "N",
-             "force of the hinge on B, global frame", loads);
-    t.output("B.M", Shape::vector3, "N.m",
-             "moment of the hinge on B about B's reference point, global frame",
-             loads);
-    t.output("length", Shape::scalar, "m",
-             "distance between the hinge points (the same as gap)", points);
-    t.output("lengthRate", Shape::scalar, "m/s",
-             "time derivative of the length", pointMotion);
-    t.output("tension", Shape::scalar, "N",
-             "penalty force along P->Q, positive when it pulls the hinge "
-             "points together",
-             join(pointMotion, {stiffness_, damping_}));
-    t.output("potentialEnergy", Shape::scalar, "J",
-             "energy stored in the penalty springs and the PTO spring", energy);
-    t.output("dissipatedPower", Shape::scalar, "W",
-             "power dissipated by the penalty and PTO dampers, never negative",
-             dissipation);
-    angle_ = t.output("angle", Shape::scalar, "rad",
+    OutputDependencies d;
+    d.loads = loads;
+    d.length = points;
+    d.lengthRate = pointMotion;
+    d.tension = join(pointMotion, {stiffness_, damping_});
+    d.potentialEnergy = energy;
+    d.dissipatedPower = dissipation;
+    declareOutputs(d);
+    angle_
+        = extraOutput("angle", Shape::scalar, "rad",
                       "relative angle of B about the hinge axis from A.ref to "
                       "B.ref, continuous through full turns",
                       angle);
-    t.output("angleRate", Shape::scalar, "rad/s",
-             "relative angular velocity about A's hinge axis", angleRate);
-    t.output("gap", Shape::scalar, "m",
-             "distance between the hinge points (constraint error)", points);
-    t.output("misalignment", Shape::scalar, "rad",
-             "angle between the two hinge axes (constraint error), 0 to pi",
-             orientations);
-    t.output("ptoTorque", Shape::scalar, "N.m",
-             "PTO torque about the axis, positive when it resists a positive "
-             "angle",
-             pto);
-    t.output("ptoPower", Shape::scalar, "W",
-             "power absorbed by the PTO from the bodies", pto);
+    extraOutput("angleRate", Shape::scalar, "rad/s",
+                "relative angular velocity about A's hinge axis", angleRate);
+    extraOutput("gap", Shape::scalar, "m",
+                "distance between the hinge points (constraint error)", points);
+    extraOutput("misalignment", Shape::scalar, "rad",
+                "angle between the two hinge axes (constraint error), 0 to pi",
+                orientations);
+    extraOutput(
+        "ptoTorque", Shape::scalar, "N.m",
+        "PTO torque about the axis, positive when it resists a positive "
+        "angle",
+        pto);
+    extraOutput("ptoPower", Shape::scalar, "W",
+                "power absorbed by the PTO from the bodies", pto);
 }
 
 connectors::HingeParameters HingeModel::parameters(const double* values) const
 {
     connectors::HingeParameters p;
-    p.p_AoP_A = vector3(values, A_p_);
-    p.p_BoQ_B = vector3(values, B_p_);
+    p.p_AoP_A = vector3(values, A_p);
+    p.p_BoQ_B = vector3(values, B_p);
     p.axis_A = vector3(values, A_axis_);
     p.axis_B = vector3(values, B_axis_);
     p.ref_A = vector3(values, A_ref_);
     p.ref_B = vector3(values, B_ref_);
-    p.stiffness = values[stiffness_.first];
-    p.damping = values[damping_.first];
-    p.rotationalStiffness = values[rotationalStiffness_.first];
-    p.rotationalDamping = values[rotationalDamping_.first];
-    p.ptoStiffness = values[ptoStiffness_.first];
-    p.ptoDamping = values[ptoDamping_.first];
-    p.ptoRestAngle = values[ptoRestAngle_.first];
+    p.stiffness = scalar(values, stiffness_);
+    p.damping = scalar(values, damping_);
+    p.rotationalStiffness = scalar(values, rotationalStiffness_);
+    p.rotationalDamping = scalar(values, rotationalDamping_);
+    p.ptoStiffness = scalar(values, ptoStiffness_);
+    p.ptoDamping = scalar(values, ptoDamping_);
+    p.ptoRestAngle = scalar(values, ptoRestAngle_);
     return p;
 }
 
-void HingeModel::computeOutputs(double* values) const
+fmuExport::ConnectorOutputs
+HingeModel::evaluate(const double* values, const connectors::BodyKinematics& A,
+                     const connectors::BodyKinematics& B) const
 {
     const connectors::Hinge law(parameters(values));
-    const connectors::HingeResult h = law.evaluate(
-        fmuExport::bodyKinematics(values, A_),
-        fmuExport::bodyKinematics(values, B_), values[angle_.first]);
-    const connectors::ConnectorResult& r = h.loads;
-    const double out[]
-        = {r.A.f_W[0],        r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-           r.A.m_Bo_W[1],     r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
-           r.B.f_W[2],        r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
-           r.length,          r.lengthRate,  r.tension,     r.potentialEnergy,
-           r.dissipatedPower, h.angle,       h.angleRate,   h.gap,
-           h.misalignment,    h.ptoTorque,   h.ptoPower};
-    const std::size_t n = sizeof out / sizeof out[0];
-    const std::vector<fmuExport::ScalarVariable>& variables
-        = this->variables().variables();
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!std::isfinite(out[i])) {
-            throw std::range_error(
-                "hinge: output " + variables[firstOutput_.first + i].name
-                + " = " + fmuExport::formatDouble(out[i])
-                + " is not finite (inputs or parameters too large)");
-        }
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        values[firstOutput_.first + i] = out[i];
-    }
+    const connectors::HingeResult h
+        = law.evaluate(A, B, scalar(values, angle_));
+    return {
+        h.loads,
+        {h.angle, h.angleRate, h.gap, h.misalignment, h.ptoTorque, h.ptoPower}};
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 // linearDamper.fmu: connectors::LinearDamper behind the connector FMU
 // interface. The variable table below is the only list of its variables.
-#include "ConnectorModel.hpp"
+#include "ConnectorFmuModel.hpp"
 #include "linearDamper/LinearDamper.hpp"
 
 namespace {
@@ -22,14 +22,15 @@ potentialEnergy = 0,  dissipatedPower = damping lengthRate^2 [W]
 damping must be finite and &ge; 0 (checked in
 fmi2ExitInitializationMode).</p>)";
 
-class LinearDamperModel final : public fmuExport::ConnectorModel {
+class LinearDamperModel final : public fmuExport::ConnectorFmuModel {
 public:
     LinearDamperModel()
-        : ConnectorModel({"linearDamper",
-                          "Linear damper along the line between two "
-                          "attachment points",
-                          "1.0.0", lawHtml})
+        : ConnectorFmuModel({"linearDamper",
+                             "Linear damper along the line between two "
+                             "attachment points",
+                             "1.0.0", lawHtml})
     {
+        declareBodies({1, 0, 0});
         damping_ = table().parameter("damping", Shape::scalar, "N.s/m",
                                      "damping coefficient c, >= 0", {100.0});
         const std::vector<Block> positions = positionBlocks();
@@ -51,7 +52,7 @@ public:
     }
 
 protected:
-    connectors::ConnectorResult
+    fmuExport::ConnectorOutputs
     evaluate(const double* values, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {

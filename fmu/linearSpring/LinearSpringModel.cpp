@@ -1,6 +1,6 @@
 // linearSpring.fmu: connectors::LinearSpring behind the connector FMU
 // interface. The variable table below is the only list of its variables.
-#include "ConnectorModel.hpp"
+#include "ConnectorFmuModel.hpp"
 #include "linearSpring/LinearSpring.hpp"
 
 namespace {
@@ -25,14 +25,16 @@ restLength &gt; 0 and stiffness &gt; 0 the FMU returns fmi2Error; the damping
 force is zero there. stiffness, restLength and damping must be finite and
 &ge; 0 (checked in fmi2ExitInitializationMode).</p>)";
 
-class LinearSpringModel final : public fmuExport::ConnectorModel {
+class LinearSpringModel final : public fmuExport::ConnectorFmuModel {
 public:
     LinearSpringModel()
-        : ConnectorModel({"linearSpring",
-                          "Linear spring with optional axial damping between "
-                          "two bodies",
-                          "1.0.0", lawHtml})
+        : ConnectorFmuModel(
+            {"linearSpring",
+             "Linear spring with optional axial damping between "
+             "two bodies",
+             "1.0.0", lawHtml})
     {
+        declareBodies({1, 0, 0});
         stiffness_ = table().parameter("stiffness", Shape::scalar, "N/m",
                                        "spring stiffness k, >= 0", {1000.0});
         restLength_ = table().parameter("restLength", Shape::scalar, "m",
@@ -59,7 +61,7 @@ public:
     }
 
 protected:
-    connectors::ConnectorResult
+    fmuExport::ConnectorOutputs
     evaluate(const double* values, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {

@@ -10,8 +10,7 @@
 #include <cmath>
 #include <optional>
 
-#include "LineFmuVariables.hpp"
-#include "Model.hpp"
+#include "LineFmuModel.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
 
@@ -91,7 +90,7 @@ const Scalar scalars[] = {
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
-class MooringLineModel final : public fmuExport::Model {
+class MooringLineModel final : public fmuExport::LineFmuModel {
 public:
     MooringLineModel();
 
@@ -100,20 +99,24 @@ public:
         connectors::MooringLine law(parameters(values));
     }
 
-    void computeOutputs(double* values) const override;
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
     std::vector<double> internalState() const override;
     void setInternalState(const double* values,
                           const std::vector<double>& state) override;
 
+protected:
+    fmuExport::ConnectorOutputs
+    evaluate(const double* values, const connectors::BodyKinematics& A,
+             const connectors::BodyKinematics& B) const override;
+
 private:
     connectors::MooringLineParameters parameters(const double* values) const;
     //- The law for the parameters in `values` (rebuilt when they change)
     connectors::MooringLine& line(const double* values);
-    void write(double* values, const connectors::MooringLineOutput& out) const;
+    fmuExport::ConnectorOutputs
+    lineOutputs(const connectors::MooringLineOutput& out) const;
 
-    lineFmu::LineVariables v_;
     Block first_; // first of the scalar parameters, in `scalars` order
     std::unique_ptr<connectors::MooringLine> line_;
     std::vector<double> lineParameters_;
@@ -121,13 +124,13 @@ private:
 };
 
 MooringLineModel::MooringLineModel()
-    : Model({"mooringLine",
-             "Dynamic lumped-mass mooring line between a body and a seabed "
-             "anchor, or between two bodies (SUNDIALS CVODE inside each step)",
-             "1.0.0", lawHtml})
+    : LineFmuModel(
+        {"mooringLine",
+         "Dynamic lumped-mass mooring line between a body and a seabed "
+         "anchor, or between two bodies (SUNDIALS CVODE inside each step)",
+         "1.0.0", lawHtml})
 {
     fmuExport::VariableTable& t = table();
-    lineFmu::declareAttachments(t, v_);
     for (const Scalar& s : scalars) {
         const Block b = t.parameter(s.name, Shape::scalar, s.unit,
                                     s.description, {s.start});
@@ -135,18 +138,18 @@ MooringLineModel::MooringLineModel()
             first_ = b;
         }
     }
-    lineFmu::declareBodies(t, v_, {1, 0, 0});
-    const std::vector<Block> positions = lineFmu::positionBlocks(v_);
-    const std::vector<Block> motion
-        = lineFmu::join(positions, lineFmu::velocityBlocks(v_));
+    declareBodies({1, 0, 0});
+    const std::vector<Block> positions = positionBlocks();
+    const std::vector<Block> motion = join(positions, velocityBlocks());
     const Block all {first_.first, scalarCount};
-    lineFmu::LineDependencies d;
-    d.loads = lineFmu::join(motion, {all});
+    OutputDependencies d;
+    d.loads = join(motion, {all});
     d.length = positions;
     d.lengthRate = motion;
-    d.energy = lineFmu::join(positions, {all});
-    d.dissipation = d.loads;
-    lineFmu::declareOutputs(t, v_, d);
+    d.tension = d.loads;
+    d.potentialEnergy = join(positions, {all});
+    d.dissipatedPower = d.loads;
+    declareLineOutputs(d);
 }
 
 connectors::MooringLineParameters
@@ -171,8 +174,8 @@ MooringLineModel::parameters(const double* values) const
             + " is out of range (allowed: an integer from 2 to 1000)");
     }
     connectors::MooringLineParameters p;
-    p.p_AoP_A = lineFmu::vector3(values, v_.A_p);
-    p.p_BoQ_B = lineFmu::vector3(values, v_.B_p);
+    p.p_AoP_A = vector3(values, A_p);
+    p.p_BoQ_B = vector3(values, B_p);
     p.length = s[0];
     p.EA = s[1];
     p.axialDamping = s[2];
@@ -198,7 +201,7 @@ connectors::MooringLine& MooringLineModel::line(const double* values)
 {
     std::vector<double> current(values + first_.first,
                                 values + first_.first + scalarCount);
-    for (const Block b : {v_.A_p, v_.B_p}) {
+    for (const Block b : {A_p, B_p}) {
         current.insert(current.end(), values + b.first, values + b.first + 3);
     }
     if (!line_ || current != lineParameters_) {
@@ -208,10 +211,10 @@ connectors::MooringLine& MooringLineModel::line(const double* values)
     return *line_;
 }
 
-void MooringLineModel::write(double* values,
-                             const connectors::MooringLineOutput& m) const
+fmuExport::ConnectorOutputs
+MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
 {
-    lineFmu::LineOutputs o;
+    fmuExport::LineOutputs o;
     o.loads = m.loads;
     o.fairleadTension = m.fairleadTension;
     o.anchorTension = m.anchorTension;
@@ -219,29 +222,28 @@ void MooringLineModel::write(double* values,
     o.H = m.H;
     o.V = m.V;
     o.shape = m.shape;
-    lineFmu::writeOutputs(values, v_, variables(), "mooringLine", o);
+    return outputs(o);
 }
 
-void MooringLineModel::computeOutputs(double* values) const
+fmuExport::ConnectorOutputs
+MooringLineModel::evaluate(const double* values,
+                           const connectors::BodyKinematics& A,
+                           const connectors::BodyKinematics& B) const
 {
-    const connectors::BodyKinematics A = lineFmu::kinematics(values, v_.A);
-    const connectors::BodyKinematics B = lineFmu::kinematics(values, v_.B);
     if (state_ && line_) {
-        write(values, line_->evaluate(*state_, A, B, lineFmu::shapePoints));
-        return;
+        return lineOutputs(line_->evaluate(*state_, A, B, shapePoints));
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     const connectors::MooringLine law(parameters(values));
-    write(
-        values,
-        law.evaluate(law.initialState(A, B, 0.0), A, B, lineFmu::shapePoints));
+    return lineOutputs(
+        law.evaluate(law.initialState(A, B, 0.0), A, B, shapePoints));
 }
 
 void MooringLineModel::initializeState(const double* values, double time)
 {
     connectors::MooringLine& law = line(values);
-    state_ = law.initialState(lineFmu::kinematics(values, v_.A),
-                              lineFmu::kinematics(values, v_.B), time);
+    state_ = law.initialState(fmuExport::bodyKinematics(values, A),
+                              fmuExport::bodyKinematics(values, B), time);
 }
 
 void MooringLineModel::doStep(double* values, double, double h)
@@ -251,11 +253,14 @@ void MooringLineModel::doStep(double* values, double, double h)
                                "initialised");
     }
     connectors::MooringLine& law = line(values);
-    const connectors::BodyKinematics A = lineFmu::kinematics(values, v_.A);
-    const connectors::BodyKinematics B = lineFmu::kinematics(values, v_.B);
+    const connectors::BodyKinematics bodyA
+        = fmuExport::bodyKinematics(values, A);
+    const connectors::BodyKinematics bodyB
+        = fmuExport::bodyKinematics(values, B);
     connectors::MooringLineState next = *state_;
-    law.advance(next, A, B, h);
-    write(values, law.evaluate(next, A, B, lineFmu::shapePoints));
+    law.advance(next, bodyA, bodyB, h);
+    writeOutputs(values,
+                 lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints)));
     state_ = std::move(next);
 }
 

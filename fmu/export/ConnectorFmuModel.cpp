@@ -1,0 +1,168 @@
+#include "ConnectorFmuModel.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "ModelDescription.hpp"
+
+namespace fmuExport {
+
+namespace {
+
+//- A.F, A.M, B.F, B.M (three each) and the five diagnostics
+constexpr std::size_t interfaceOutputCount = 17;
+
+} // namespace
+
+ConnectorFmuModel::ConnectorFmuModel(ModelIdentity identity,
+                                     ConnectorWording wording)
+    : Model(std::move(identity)), wording_(std::move(wording))
+{
+    A_p = table().parameter(
+        "A.p", Shape::vector3, "m",
+        wording_.A_p + ", A's frame, from A's reference point", {0, 0, 0});
+    B_p = table().parameter("B.p", Shape::vector3, "m",
+                            wording_.B_p
+                                + ", B's frame, from B's reference point (a "
+                                  "global point when B is the world)",
+                            {0, 0, 0});
+}
+
+void ConnectorFmuModel::declareBodies(const std::vector<double>& B_r0)
+{
+    A = declareBodyInputs(table(), "A", {0, 0, 0});
+    B = declareBodyInputs(table(), "B", B_r0);
+    bodiesDeclared_ = true;
+}
+
+void ConnectorFmuModel::declareStartAtRest()
+{
+    table().booleanConstant("inputsStartAtRest",
+                            "the start values of inputs and parameters are a "
+                            "configuration where the connector exerts no load",
+                            true);
+}
+
+void ConnectorFmuModel::declareOutputs(const OutputDependencies& d)
+{
+    if (!bodiesDeclared_) {
+        throw std::logic_error(identity().modelIdentifier
+                               + ": declareOutputs before declareBodies");
+    }
+    VariableTable& t = table();
+    const std::string& noun = wording_.noun;
+    firstOutput_ = fmi2ValueReference(t.size());
+    outputsDeclared_ = true;
+    t.output("A.F", Shape::vector3, "N",
+             "force of the " + noun + " on A, global frame", d.loads);
+    t.output("A.M", Shape::vector3, "N.m",
+             "moment of the " + noun
+                 + " on A about A's reference point, global frame",
+             d.loads);
+    t.output("B.F", Shape::vector3, "N",
+             "force of the " + noun + " on B, global frame", d.loads);
+    t.output("B.M", Shape::vector3, "N.m",
+             "moment of the " + noun
+                 + " on B about B's reference point, global frame",
+             d.loads);
+    t.output("length", Shape::scalar, "m", wording_.length, d.length);
+    t.output("lengthRate", Shape::scalar, "m/s", wording_.lengthRate,
+             d.lengthRate);
+    t.output("tension", Shape::scalar, "N", wording_.tension, d.tension);
+    t.output("potentialEnergy", Shape::scalar, "J", wording_.potentialEnergy,
+             d.potentialEnergy);
+    t.output("dissipatedPower", Shape::scalar, "W", wording_.dissipatedPower,
+             d.dissipatedPower);
+}
+
+Block ConnectorFmuModel::extraOutput(const std::string& name, Shape shape,
+                                     const std::string& unit,
+                                     const std::string& description,
+                                     const std::vector<Block>& dependsOn)
+{
+    VariableTable& t = table();
+    if (!outputsDeclared_
+        || t.size() != firstOutput_ + interfaceOutputCount + extraCount_) {
+        throw std::logic_error(identity().modelIdentifier + ": extra output "
+                               + name
+                               + " does not follow the interface outputs");
+    }
+    const Block block = t.output(name, shape, unit, description, dependsOn);
+    extraCount_ += block.size;
+    return block;
+}
+
+std::vector<Block> ConnectorFmuModel::positionBlocks() const
+{
+    return {A_p, B_p, A.r, A.R, B.r, B.R};
+}
+
+std::vector<Block> ConnectorFmuModel::velocityBlocks() const
+{
+    return {A.v, A.omega, B.v, B.omega};
+}
+
+std::vector<Block> ConnectorFmuModel::join(std::vector<Block> a,
+                                           const std::vector<Block>& b)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+double ConnectorFmuModel::scalar(const double* values, Block block)
+{
+    return values[block.first];
+}
+
+connectors::Vector3 ConnectorFmuModel::vector3(const double* values,
+                                               Block block)
+{
+    return blockVector3(values, block);
+}
+
+void ConnectorFmuModel::computeOutputs(double* values) const
+{
+    writeOutputs(
+        values,
+        evaluate(values, bodyKinematics(values, A), bodyKinematics(values, B)));
+}
+
+void ConnectorFmuModel::writeOutputs(double* values,
+                                     const ConnectorOutputs& outputs) const
+{
+    const std::string& model = identity().modelIdentifier;
+    if (outputs.extra.size() != extraCount_) {
+        throw std::logic_error(
+            model + ": " + std::to_string(outputs.extra.size())
+            + " extra output values, expected " + std::to_string(extraCount_));
+    }
+    const connectors::ConnectorResult& r = outputs.loads;
+    const double interface[interfaceOutputCount]
+        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+           r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+           r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+           r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
+           r.dissipatedPower};
+    const auto value = [&](std::size_t i) {
+        return i < interfaceOutputCount
+            ? interface[i]
+            : outputs.extra[i - interfaceOutputCount];
+    };
+    const std::size_t count = interfaceOutputCount + extraCount_;
+    const std::vector<ScalarVariable>& variables
+        = this->variables().variables();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!std::isfinite(value(i))) {
+            throw std::range_error(model + ": output "
+                                   + variables[firstOutput_ + i].name + " = "
+                                   + formatDouble(value(i))
+                                   + " is not finite (inputs or parameters "
+                                     "too large)");
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        values[firstOutput_ + i] = value(i);
+    }
+}
+
+} // namespace fmuExport

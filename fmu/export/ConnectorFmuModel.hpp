@@ -1,0 +1,127 @@
+// ConnectorFmuModel: the one base of every connector FMU's model. It declares
+// the variables of the connector FMU interface (docs/connector-fmu-interface.md)
+// and maps the value array to the law's kinematics and back; a connector
+// model adds only its law's mapping:
+//   - its parameters, declared with table().parameter() in its constructor,
+//     before or after declareBodies() (the order is that of the value
+//     references, so that of modelDescription.xml);
+//   - evaluate(): its parameters to the law, the law's result to the outputs;
+//   - optionally outputs of its own after the 17 interface outputs
+//     (extraOutput(), filled in by evaluate() in declaration order);
+//   - optionally an internal state through Model's state hooks
+//     (initializeState, doStep, internalState, setInternalState), with
+//     writeOutputs() to publish what a step computed.
+#ifndef FMU_EXPORT_CONNECTORFMUMODEL_HPP
+#define FMU_EXPORT_CONNECTORFMUMODEL_HPP
+
+#include <string>
+#include <vector>
+
+#include "BodyInputs.hpp"
+#include "Model.hpp"
+#include "common/Kinematics.hpp"
+
+namespace fmuExport {
+
+//- How a connector words the interface variables in modelDescription.xml
+struct ConnectorWording {
+    //- The connector in "force of the <noun> on A"
+    std::string noun = "connector";
+    //- What A.p and B.p are, e.g. "attachment point on A"
+    std::string A_p = "attachment point on A";
+    std::string B_p = "attachment point on B";
+    //- Descriptions of the five diagnostics
+    std::string length = "distance between the attachment points";
+    std::string lengthRate = "time derivative of the length";
+    std::string tension = "axial force, positive when the connector pulls the "
+                          "bodies together";
+    std::string potentialEnergy = "energy stored in the connector";
+    std::string dissipatedPower = "power dissipated by the connector (removed "
+                                  "from the bodies and not stored), never "
+                                  "negative";
+};
+
+//- What one evaluation gives the outputs: the law's loads and diagnostics,
+//  then the values of the model's extra outputs in declaration order
+struct ConnectorOutputs {
+    ConnectorOutputs(const connectors::ConnectorResult& result,
+                     std::vector<double> extraValues = {})
+        : loads(result), extra(std::move(extraValues))
+    {
+    }
+
+    connectors::ConnectorResult loads;
+    std::vector<double> extra;
+};
+
+class ConnectorFmuModel : public Model {
+public:
+    //- Evaluates the law for the parameters and inputs in `values` and
+    //  writes every output (see writeOutputs)
+    void computeOutputs(double* values) const final;
+
+protected:
+    //- For each interface output, the input and parameter blocks it
+    //  depends on
+    struct OutputDependencies {
+        std::vector<Block> loads, length, lengthRate, tension, potentialEnergy,
+            dissipatedPower;
+    };
+
+    //- Declares the parameters A.p and B.p
+    ConnectorFmuModel(ModelIdentity identity, ConnectorWording wording = {});
+
+    //- Declares the inputs of A (at the origin) and of B (its reference point
+    //  at `B_r0`); both start with identity orientation and at rest
+    void declareBodies(const std::vector<double>& B_r0);
+
+    //- Declares the Boolean constant inputsStartAtRest = true: the start
+    //  values of the inputs and parameters are a configuration without load
+    //  (docs/connector-fmu-interface.md, "Rest configuration")
+    void declareStartAtRest();
+
+    //- Declares A.F, A.M, B.F, B.M and the five diagnostics (after
+    //  declareBodies)
+    void declareOutputs(const OutputDependencies& dependencies);
+
+    //- Declares an output of the model's own, right after the interface
+    //  outputs and the extra outputs declared before it
+    Block extraOutput(const std::string& name, Shape shape,
+                      const std::string& unit, const std::string& description,
+                      const std::vector<Block>& dependsOn);
+
+    //- The connector law for the parameters and previous outputs in
+    //  `values`: the outputs for the kinematics of A and B
+    virtual ConnectorOutputs
+    evaluate(const double* values, const connectors::BodyKinematics& A,
+             const connectors::BodyKinematics& B) const = 0;
+
+    //- Writes every output; throws std::range_error naming the first
+    //  non-finite one, and writes nothing then
+    void writeOutputs(double* values, const ConnectorOutputs& outputs) const;
+
+    //- Blocks that the geometry depends on: A.p, B.p, A.r, A.R, B.r, B.R
+    std::vector<Block> positionBlocks() const;
+    //- Blocks that velocities depend on: A.v, A.omega, B.v, B.omega
+    std::vector<Block> velocityBlocks() const;
+
+    static double scalar(const double* values, Block block);
+    static connectors::Vector3 vector3(const double* values, Block block);
+    static std::vector<Block> join(std::vector<Block> a,
+                                   const std::vector<Block>& b);
+
+    Block A_p, B_p;
+    BodyInputs A, B;
+
+private:
+    ConnectorWording wording_;
+    bool bodiesDeclared_ = false, outputsDeclared_ = false;
+    //- First value reference of the interface outputs; number of scalar
+    //  extra outputs after them
+    fmi2ValueReference firstOutput_ = 0;
+    std::size_t extraCount_ = 0;
+};
+
+} // namespace fmuExport
+
+#endif
