@@ -1,0 +1,365 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Description
+    The added-mass coupling of addedMassRigidBodyMeshMotion: loads, body
+    accelerations, the Newton iterations and the residual.
+
+\*---------------------------------------------------------------------------*/
+
+#include "addedMassRigidBodyMeshMotion.H"
+#include "forces.H"
+#include "fvMesh.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::addedMassRigidBodyMeshMotion::readCoupling()
+{
+    const dictionary& dict = coeffDict().subOrEmptyDict("coupling");
+
+    addedMass_ = dict.lookupOrDefault<Switch>("addedMass", true);
+    pName_ = dict.lookupOrDefault<word>("pressure", "p_rgh");
+    residualName_ = dict.lookupOrDefault<word>("residual", "rigidBodyCoupling");
+    maxIter_ = dict.lookupOrDefault<label>("maxIter", 10);
+    tolerance_ = dict.lookupOrDefault<scalar>("tolerance", 1e-9);
+
+    if (maxIter_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxIter = " << maxIter_ << ": at least one Newton iteration"
+            << " per outer corrector is needed" << exit(FatalIOError);
+    }
+    if (!(tolerance_ > 0 && tolerance_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "tolerance = " << tolerance_ << ": the relative tolerance of"
+            << " the Newton iterations must be in (0, 1)"
+            << exit(FatalIOError);
+    }
+    if (addedMass_ && coeffDict().found("accelerationRelaxation"))
+    {
+        const scalar aRelax =
+            coeffDict().get<scalar>("accelerationRelaxation");
+        if (aRelax != 1)
+        {
+            FatalIOErrorInFunction(coeffDict())
+                << "accelerationRelaxation " << aRelax << " with the"
+                << " added-mass coupling: the coupling converges without"
+                << " relaxation, which would only slow it down; remove the"
+                << " entry (or set coupling { addedMass off; } to run"
+                << " OpenFOAM's relaxed coupling)" << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::Field<Foam::spatialVector>
+Foam::addedMassRigidBodyMeshMotion::fluidLoads(const scalar ramp) const
+{
+    Field<spatialVector> fx(model_.nBodies(), Zero);
+
+    forAll(bodyMeshes_, bi)
+    {
+        const label bodyID = bodyMeshes_[bi].bodyID_;
+
+        dictionary forcesDict;
+        forcesDict.add("type", functionObjects::forces::typeName);
+        forcesDict.add("patches", bodyMeshes_[bi].patches_);
+        forcesDict.add("rhoInf", rhoInf_);
+        forcesDict.add("rho", rhoName_);
+        forcesDict.add("CofR", vector::zero);
+
+        functionObjects::forces f("forces", db(), forcesDict);
+        f.calcForcesMoment();
+
+        fx[bodyID] = ramp*spatialVector(f.momentEff(), f.forceEff());
+    }
+
+    return fx;
+}
+
+
+Foam::scalarField
+Foam::addedMassRigidBodyMeshMotion::bodyAccelerations() const
+{
+    scalarField c(6*bodyMeshes_.size());
+
+    forAll(bodyMeshes_, bi)
+    {
+        const label bodyID = bodyMeshes_[bi].bodyID_;
+        const spatialTransform X0(model_.X0(bodyID));
+
+        // Angular acceleration and acceleration of the body's origin, in
+        // global axes (OpenFOAM's a() carries -g: the base accelerates up)
+        const spatialVector a
+        (
+            spatialTransform(X0.E().T(), Zero) & model_.a(bodyID)
+        );
+        const vector linear(a.l() + (a.w() ^ (origins_[bi] - X0.r())));
+
+        for (direction r = 0; r < 3; ++r)
+        {
+            c[6*bi + r] = a.w()[r];
+            c[6*bi + 3 + r] = linear[r];
+        }
+    }
+
+    return c;
+}
+
+
+Foam::scalarField Foam::addedMassRigidBodyMeshMotion::solveWith
+(
+    const RBD::rigidBodyModelState& start,
+    const Field<spatialVector>& fx,
+    const scalarField& fAdd
+)
+{
+    Field<spatialVector> f(fx);
+
+    forAll(bodyMeshes_, bi)
+    {
+        const vector moment(fAdd[6*bi], fAdd[6*bi + 1], fAdd[6*bi + 2]);
+        const vector force(fAdd[6*bi + 3], fAdd[6*bi + 4], fAdd[6*bi + 5]);
+
+        // OpenFOAM's loads are about the global origin
+        f[bodyMeshes_[bi].bodyID_] +=
+            spatialVector(moment + (origins_[bi] ^ force), force);
+    }
+
+    const Time& t = mesh().time();
+    model_.state() = start;
+    model_.solve
+    (
+        t.value(),
+        t.deltaTValue(),
+        scalarField(model_.nDoF(), Zero),
+        f
+    );
+
+    return bodyAccelerations();
+}
+
+
+Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
+(
+    const Field<spatialVector>& fx,
+    const scalar ramp,
+    const scalarField& c0,
+    scalar& newtonResidual
+)
+{
+    const label n = c0.size();
+    const RBD::rigidBodyModelState start(model_.state());
+
+    // The load answering a change of acceleration from c0: -ramp M (c - c0)
+    auto addedLoad = [&](const scalarField& c)
+    {
+        scalarField f(n, Zero);
+        for (label i = 0; i < n; ++i)
+        {
+            for (label j = 0; j < n; ++j)
+            {
+                f[i] -= ramp*M_(i, j)*(c[j] - c0[j]);
+            }
+        }
+        return f;
+    };
+
+    const scalarField cFree(solveWith(start, fx, scalarField(n, Zero)));
+
+    // D = dC/df, the solver's acceleration response to a load, column by
+    // column; a load step of 1e-4 of the body's weight (or of its weight
+    // times its radius of gyration for a moment), with its added mass
+    const scalar gMag = max(mag(model_.g()), scalar(1));
+    scalarSquareMatrix D(n, Zero);
+    forAll(bodyMeshes_, bi)
+    {
+        const label bodyID = bodyMeshes_[bi].bodyID_;
+        const scalar mEff =
+            model_.I(bodyID).m()
+          + max(M_(6*bi + 3, 6*bi + 3), max(M_(6*bi + 4, 6*bi + 4),
+                M_(6*bi + 5, 6*bi + 5)));
+        const scalar IEff =
+            tr(model_.I(bodyID).Ic())/3
+          + max(M_(6*bi, 6*bi), max(M_(6*bi + 1, 6*bi + 1),
+                M_(6*bi + 2, 6*bi + 2)));
+        const scalar gyration = sqrt(IEff/max(mEff, VSMALL));
+
+        for (label k = 0; k < 6; ++k)
+        {
+            const label j = 6*bi + k;
+            const scalar step =
+                1e-4*mEff*gMag*(k < 3 ? gyration : scalar(1));
+
+            scalarField f(n, Zero);
+            f[j] = step;
+            const scalarField c(solveWith(start, fx, f));
+            for (label i = 0; i < n; ++i)
+            {
+                D(i, j) = (c[i] - cFree[i])/step;
+            }
+        }
+    }
+
+    // Newton on R(c) = c - C(f - M (c - c0)), Jacobian I + ramp D M
+    scalarSquareMatrix J(n, Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            scalar DM = 0;
+            for (label k = 0; k < n; ++k)
+            {
+                DM += D(i, k)*M_(k, j);
+            }
+            J(i, j) = (i == j ? 1 : 0) + ramp*DM;
+        }
+    }
+    labelList pivots(n);
+    label sign;
+    LUDecompose(J, pivots, sign);
+
+    const scalar scale = max(max(mag(c0)), max(mag(cFree))) + SMALL;
+
+    scalarField c(c0);
+    scalarField R(c0 - cFree);
+    label iter = 0;
+
+    while (iter < maxIter_)
+    {
+        ++iter;
+        scalarField delta(-R);
+        LUBacksubstitute(J, pivots, delta);
+        c += delta;
+
+        R = c - solveWith(start, fx, addedLoad(c));
+
+        newtonResidual = max(mag(R))/scale;
+        if (newtonResidual < tolerance_)
+        {
+            break;
+        }
+    }
+
+    return iter;
+}
+
+
+Foam::scalar Foam::addedMassRigidBodyMeshMotion::couplingResidual
+(
+    const scalarField& c0,
+    const scalarField& c
+) const
+{
+    scalar change2 = 0;
+    scalar size2 = 0;
+
+    forAll(bodyMeshes_, bi)
+    {
+        const label bodyID = bodyMeshes_[bi].bodyID_;
+        const scalar m = max(model_.I(bodyID).m(), VSMALL);
+        const scalar gyration = sqrt(tr(model_.I(bodyID).Ic())/(3*m));
+
+        for (direction r = 0; r < 3; ++r)
+        {
+            const label w = 6*bi + r;
+            const label l = 6*bi + 3 + r;
+            change2 +=
+                sqr(gyration*(c[w] - c0[w])) + sqr(c[l] - c0[l]);
+            // the true acceleration: OpenFOAM's carries -g
+            size2 +=
+                sqr(gyration*c[w]) + sqr(c[l] + model_.g()[r]);
+        }
+    }
+
+    return sqrt(change2)/(sqrt(size2) + 0.01*mag(model_.g()) + VSMALL);
+}
+
+
+void Foam::addedMassRigidBodyMeshMotion::reportResidual
+(
+    const scalar r,
+    const scalar newtonResidual,
+    const label nIter
+)
+{
+    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+
+    if (!residualField_.valid())
+    {
+        residualField_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    residualName_,
+                    fvm.time().timeName(),
+                    fvm,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    true
+                ),
+                fvm,
+                dimensionedScalar("zero", dimless, Zero)
+            )
+        );
+    }
+    residualField_.ref() == dimensionedScalar("r", dimless, r);
+
+    // PIMPLE's residualControl looks residuals up by the name of a
+    // registered field: the coupling residual goes under residualName_.
+    // The first corrector's change is the step's own change of
+    // acceleration, not an iteration residual: it is not reported, so
+    // that a time step does at least two correctors.
+    if (corrector_ > 1)
+    {
+        fvm.setSolverPerformance
+        (
+            residualName_,
+            SolverPerformance<scalar>
+            (
+                addedMass_ ? "addedMassNewton" : "fixedPoint",
+                residualName_,
+                r,
+                r,
+                nIter,
+                !addedMass_ || newtonResidual < tolerance_
+            )
+        );
+    }
+
+    if (model_.report())
+    {
+        Info<< typeName << ": outer corrector " << corrector_
+            << ", coupling residual " << r;
+        if (addedMass_)
+        {
+            Info<< ", Newton iterations " << nIter
+                << " (residual " << newtonResidual << ")";
+            if (corrector_ == 1)
+            {
+                // The added masses of this step, body by body
+                forAll(bodyMeshes_, bi)
+                {
+                    Info<< nl << "    added mass of " << bodyMeshes_[bi].name_
+                        << ": rotation (" << M_(6*bi, 6*bi) << ' '
+                        << M_(6*bi + 1, 6*bi + 1) << ' '
+                        << M_(6*bi + 2, 6*bi + 2) << ") kg m^2,"
+                        << " translation (" << M_(6*bi + 3, 6*bi + 3) << ' '
+                        << M_(6*bi + 4, 6*bi + 4) << ' '
+                        << M_(6*bi + 5, 6*bi + 5) << ") kg";
+                }
+            }
+        }
+        Info<< endl;
+    }
+}
+
+
+// ************************************************************************* //

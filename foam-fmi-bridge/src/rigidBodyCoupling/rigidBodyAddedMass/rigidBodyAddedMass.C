@@ -1,0 +1,262 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "rigidBodyAddedMass.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "fixedGradientFvPatchFields.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "spatialVector.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::wordList Foam::rigidBodyAddedMass::patchTypes() const
+{
+    const volScalarField& p = mesh_.lookupObject<volScalarField>(pName_);
+
+    wordList types(mesh_.boundary().size());
+
+    forAll(types, patchi)
+    {
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+
+        bool onBody = false;
+        for (const labelHashSet& patches : bodyPatches_)
+        {
+            onBody = onBody || patches.found(patchi);
+        }
+
+        if (onBody)
+        {
+            types[patchi] = fixedGradientFvPatchScalarField::typeName;
+        }
+        else if (pp.coupled())
+        {
+            types[patchi] = pp.type();
+        }
+        else if (pp.fixesValue())
+        {
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+        else if (pp.type() == "empty" || pp.type() == "wedge"
+              || pp.type() == "symmetry" || pp.type() == "symmetryPlane")
+        {
+            types[patchi] = pp.type();
+        }
+        else
+        {
+            types[patchi] = zeroGradientFvPatchScalarField::typeName;
+        }
+    }
+
+    return types;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::rigidBodyAddedMass::faceDensity() const
+{
+    if (mesh_.foundObject<volScalarField>(rhoName_))
+    {
+        return fvc::interpolate
+        (
+            mesh_.lookupObject<volScalarField>(rhoName_)
+        );
+    }
+
+    return tmp<surfaceScalarField>::New
+    (
+        IOobject
+        (
+            "rigidBodyAddedMass.rhof",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar("rhoInf", dimDensity, rhoInf_)
+    );
+}
+
+
+void Foam::rigidBodyAddedMass::setUnitAcceleration
+(
+    const label b,
+    const label k,
+    const vector& c
+)
+{
+    volScalarField::Boundary& pbf = pUnit_->boundaryFieldRef();
+
+    forAll(bodyPatches_, bi)
+    {
+        for (const label patchi : bodyPatches_[bi])
+        {
+            fixedGradientFvPatchScalarField& pp =
+                refCast<fixedGradientFvPatchScalarField>(pbf[patchi]);
+
+            if (bi != b)
+            {
+                pp.gradient() = 0;
+                continue;
+            }
+
+            const fvPatch& patch = mesh_.boundary()[patchi];
+            const vectorField nf(patch.nf());
+            const scalarField rhop(rhoPatch(patchi));
+
+            // Acceleration of the face centres in the unit mode [m/s^2]
+            vector e(Zero);
+            e[k % 3] = 1;
+            const vectorField a
+            (
+                k < 3
+              ? vectorField(e ^ (patch.Cf() - c))
+              : vectorField(patch.size(), e)
+            );
+
+            // (1/rho) dp/dn = -a.n: the fluid at the wall moves with it
+            pp.gradient() = -rhop*(a & nf);
+        }
+    }
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::rigidBodyAddedMass::rhoPatch(const label patchi) const
+{
+    if (mesh_.foundObject<volScalarField>(rhoName_))
+    {
+        return tmp<scalarField>::New
+        (
+            mesh_.lookupObject<volScalarField>(rhoName_)
+           .boundaryField()[patchi]
+        );
+    }
+
+    return tmp<scalarField>::New(mesh_.boundary()[patchi].size(), rhoInf_);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rigidBodyAddedMass::rigidBodyAddedMass
+(
+    const fvMesh& mesh,
+    const List<labelHashSet>& bodyPatches,
+    const word& pName,
+    const word& rhoName,
+    const scalar rhoInf
+)
+:
+    mesh_(mesh),
+    bodyPatches_(bodyPatches),
+    pName_(pName),
+    rhoName_(rhoName),
+    rhoInf_(rhoInf)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
+(
+    const List<vector>& origins
+)
+{
+    if (!pUnit_.valid())
+    {
+        if (!mesh_.foundObject<volScalarField>(pName_))
+        {
+            FatalErrorInFunction
+                << "No pressure field " << pName_ << " on mesh "
+                << mesh_.name() << ": the added-mass estimate takes the"
+                << " pressure's boundary types; name the pressure field"
+                << " with the entry 'pressure' of the coupling dictionary"
+                << exit(FatalError);
+        }
+
+        pUnit_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "rigidBodyAddedMass.p",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                mesh_,
+                dimensionedScalar("zero", dimMass/sqr(dimLength), Zero),
+                patchTypes()
+            )
+        );
+    }
+
+    volScalarField& p = pUnit_.ref();
+    const surfaceScalarField rAf(1/faceDensity());
+
+    const label nBodies = bodyPatches_.size();
+    scalarSquareMatrix M(6*nBodies, Zero);
+
+    // The Poisson solves print nothing: six a body each time step
+    const int debug0 = SolverPerformance<scalar>::debug;
+    SolverPerformance<scalar>::debug = 0;
+
+    for (label b = 0; b < nBodies; ++b)
+    {
+        for (label k = 0; k < 6; ++k)
+        {
+            setUnitAcceleration(b, k, origins[b]);
+
+            fvScalarMatrix pEqn(fvm::laplacian(rAf, p));
+            pEqn.setReference(Pstream::master() ? 0 : -1, 0);
+            pEqn.solve(mesh_.solverDict(pName_ + "Final"));
+
+            // Loads on every body about its origin: moments and forces
+            for (label i = 0; i < nBodies; ++i)
+            {
+                vector moment(Zero);
+                vector force(Zero);
+
+                for (const label patchi : bodyPatches_[i])
+                {
+                    const fvPatch& patch = mesh_.boundary()[patchi];
+                    const vectorField pSf
+                    (
+                        p.boundaryField()[patchi]*patch.Sf()
+                    );
+                    force += sum(pSf);
+                    moment += sum((patch.Cf() - origins[i]) ^ pSf);
+                }
+                reduce(force, sumOp<vector>());
+                reduce(moment, sumOp<vector>());
+
+                for (direction r = 0; r < 3; ++r)
+                {
+                    M(6*i + r, 6*b + k) = -moment[r];
+                    M(6*i + 3 + r, 6*b + k) = -force[r];
+                }
+            }
+        }
+    }
+
+    SolverPerformance<scalar>::debug = debug0;
+
+    return M;
+}
+
+
+// ************************************************************************* //
