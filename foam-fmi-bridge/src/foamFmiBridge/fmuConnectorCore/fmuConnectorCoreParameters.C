@@ -336,13 +336,15 @@ void Foam::fmuConnectorCore::checkParameters
         return;
     }
 
-    // The parameter the refusal names, and the entry that sets it
+    // The parameter the refusal names (an element, A.p[1], or its vector,
+    // A.p), and the entry that sets it
     for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
     {
+        const std::string base(var.name.substr(0, var.name.find('[')));
         if
         (
             var.causality != fmuImport::Causality::parameter
-         || !namesParameter(refusal, var.name)
+         || !(namesParameter(refusal, var.name) || namesParameter(refusal, base))
         )
         {
             continue;
@@ -351,11 +353,7 @@ void Foam::fmuConnectorCore::checkParameters
         for (const entry& e : parameters)
         {
             const std::string key(e.keyword());
-            if
-            (
-                var.name == key
-             || var.name.compare(0, key.size() + 1, key + "[") == 0
-            )
+            if (key == var.name || key == base)
             {
                 FatalIOErrorInFunction(e.stream())
                     << "restraint " << restraintName_ << ": the FMU refuses"
@@ -370,7 +368,7 @@ void Foam::fmuConnectorCore::checkParameters
         (
             parameters.empty() ? restraintDict : parameters
         )   << "restraint " << restraintName_ << ": the FMU refuses the"
-            << " start value of its parameter " << var.name.c_str()
+            << " start value of its parameter " << base.c_str()
             << ", which the parameters do not set (" << file_ << "): "
             << refusal.c_str() << exit(FatalIOError);
     }

@@ -71,8 +71,8 @@ void Foam::fmuConnectorCore::lookupVariables()
     {
         FatalErrorInFunction
             << where().c_str() << "the FMU does not follow the connector"
-            << " interface (docs/connector-fmu-interface.md; fmusim check"
-            << " tells the same):" << problems.str().c_str()
+            << " interface (docs/connector-fmu-interface.md), as fmusim check"
+            << " reports it:" << problems.str().c_str()
             << exit(FatalError);
     }
 
