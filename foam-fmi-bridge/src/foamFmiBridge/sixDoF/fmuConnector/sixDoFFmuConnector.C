@@ -149,17 +149,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
         mass = sixDoFConnector::massProperties(startMotion);
     }
 
-    connector_ = sixDoFConnector::New
-    (
-        name_,
-        sDoFRBMRCoeffs_,
-        runTime,
-        fmuFile_,
-        body_,
-        bodyB_,
-        report_,
-        restart_ == fmuConnectorCore::restartMode::fresh
-    );
+    connector_ = sixDoFConnector::New(name_, sDoFRBMRCoeffs_, runTime);
     connector_->registerSide(side_, start, mass, sDoFRBMRCoeffs_);
 }
 
@@ -190,11 +180,6 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::restrain
             name_,
             sDoFRBMRCoeffs_,
             runTime,
-            fmuFile_,
-            body_,
-            bodyB_,
-            report_,
-            restart_ == fmuConnectorCore::restartMode::fresh,
             runTime.timeName(startTime),
             startTime
         );

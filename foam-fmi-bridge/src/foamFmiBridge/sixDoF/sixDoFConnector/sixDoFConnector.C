@@ -38,31 +38,9 @@ Foam::string entriesOf(const Foam::dictionary& dict)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::word Foam::sixDoFConnector::bodyName(const label side) const
+const Foam::word& Foam::sixDoFConnector::bodyName(const label side) const
 {
     return side == 0 ? bodyA_ : bodyB_;
-}
-
-
-void Foam::sixDoFConnector::load
-(
-    const Time& runTime,
-    const fileName& fmuFile,
-    const scalar startTime
-)
-{
-    fmu_.reset
-    (
-        new fmuConnectorCore
-        (
-            fmuConnectorCore::caseFile(fmuFile, runTime),
-            name_,
-            dict_,
-            dict_.subOrEmptyDict("parameters"),
-            startTime
-        )
-    );
-    fmu_->checkBodyB(bodyB_, dict_);
 }
 
 
@@ -73,11 +51,6 @@ Foam::sixDoFConnector::sixDoFConnector
     const word& name,
     const dictionary& dict,
     const Time& runTime,
-    const fileName& fmuFile,
-    const word& bodyA,
-    const word& bodyB,
-    const bool report,
-    const bool fresh,
     const word& startTimeName,
     const scalar startTime
 )
@@ -95,9 +68,9 @@ Foam::sixDoFConnector::sixDoFConnector
     ),
     name_(name),
     dict_(dict),
-    bodyA_(bodyA),
-    bodyB_(bodyB),
-    report_(report),
+    bodyA_(dict.get<word>("body")),
+    bodyB_(dict.getOrDefault<word>("bodyB", word::null)),
+    report_(dict.getOrDefault<Switch>("report", false)),
     motion_{nullptr, nullptr},
     start_{fmuConnectorCore::kinematics::world(), fmuConnectorCore::kinematics::world()},
     mass_{},
@@ -113,7 +86,27 @@ Foam::sixDoFConnector::sixDoFConnector
         return;
     }
 
-    load(runTime, fmuFile, stepTime_);
+    fmu_.reset
+    (
+        new fmuConnectorCore
+        (
+            fmuConnectorCore::caseFile(dict_.get<fileName>("fmu"), runTime),
+            name_,
+            dict_,
+            dict_.subOrEmptyDict("parameters"),
+            stepTime_
+        )
+    );
+    fmu_->checkBodyB(bodyB_, dict_);
+
+    const bool fresh =
+        fmuConnectorCore::restartModeNames.getOrDefault
+        (
+            "restart",
+            dict_,
+            fmuConnectorCore::restartMode::exact
+        )
+     == fmuConnectorCore::restartMode::fresh;
 
     stateIO_.reset
     (
@@ -145,11 +138,6 @@ std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
     const word& name,
     const dictionary& dict,
     const Time& runTime,
-    const fileName& fmuFile,
-    const word& bodyA,
-    const word& bodyB,
-    const bool report,
-    const bool fresh,
     const word& startTimeName,
     const scalar startTime
 )
@@ -178,8 +166,7 @@ std::shared_ptr<Foam::sixDoFConnector> Foam::sixDoFConnector::New
 
     return std::make_shared<sixDoFConnector>
     (
-        name, dict, runTime, fmuFile, bodyA, bodyB, report, fresh,
-        startTimeName, startTime
+        name, dict, runTime, startTimeName, startTime
     );
 }
 
@@ -243,7 +230,7 @@ void Foam::sixDoFConnector::registerSide
             << "restraint " << name_ << ": a second restraint of this name"
             << " in the motion of body " << bodyName(side) << "; the"
             << " restraint belongs once in the motion of " << bodyA_
-            << (bodyB_.empty() ? word::null : word(" and once in that of "))
+            << (bodyB_.empty() ? "" : " and once in that of ")
             << bodyB_ << exit(FatalIOError);
     }
     registered_[side] = true;
