@@ -1,7 +1,8 @@
 # add_connector_fmu(NAME <modelIdentifier> SOURCES <model sources...>)
 #
 # Builds one connector FMU from a model source that defines
-# fmuExport::createModel():
+# fmuExport::createModel(), linked with the law <name>Law where that target
+# exists (connectors/CMakeLists.txt):
 #   <name>          MODULE library <name>.so (no lib prefix, hidden
 #                   visibility; a version script exports the fmi2 functions
 #                   and nothing else, the static libraries stay hidden).
@@ -26,8 +27,13 @@ function(add_connector_fmu)
   set(staging ${CMAKE_BINARY_DIR}/fmuStaging/${name})
   set(fmu ${FOAMFMI_FMU_DIR}/${name}.fmu)
 
+  set(law)
+  if(TARGET ${name}Law)
+    set(law ${name}Law)
+  endif()
+
   add_library(${name}Model OBJECT ${ARG_SOURCES})
-  target_link_libraries(${name}Model PUBLIC fmuExport)
+  target_link_libraries(${name}Model PUBLIC fmuExport ${law})
   set_target_properties(${name}Model PROPERTIES
     POSITION_INDEPENDENT_CODE ON
     CXX_VISIBILITY_PRESET hidden
@@ -38,7 +44,7 @@ function(add_connector_fmu)
     $<TARGET_OBJECTS:fmuExportEntryPoints>
     ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/glibcCompat.c
     ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/staticRuntimeUnload.cpp)
-  target_link_libraries(${name} PRIVATE fmuExport)
+  target_link_libraries(${name} PRIVATE fmuExport ${law})
   set(exports ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/fmi2Exports.map)
   target_link_options(${name} PRIVATE
     -Wl,--version-script=${exports}
@@ -56,7 +62,7 @@ function(add_connector_fmu)
   add_executable(${name}Generator
     $<TARGET_OBJECTS:${name}Model>
     $<TARGET_OBJECTS:fmuExportGenerator>)
-  target_link_libraries(${name}Generator PRIVATE fmuExport)
+  target_link_libraries(${name}Generator PRIVATE fmuExport ${law})
 
   add_custom_command(
     OUTPUT ${staging}/modelDescription.xml ${staging}/documentation/index.html

@@ -3,9 +3,13 @@
 #ifndef TESTS_FMU_CONNECTORINPUTS_HPP
 #define TESTS_FMU_CONNECTORINPUTS_HPP
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Geometry>
+#include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "FmuHarness.hpp"
 #include "common/Kinematics.hpp"
@@ -86,6 +90,32 @@ inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
         }
     }
     return declared;
+}
+
+//- The 17 interface outputs of a law result, in connectorOutputs() order
+inline std::vector<double> flatten(const connectors::ConnectorResult& r)
+{
+    return {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
+            r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
+            r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+            r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
+            r.dissipatedPower};
+}
+
+//- The FMU's interface outputs equal the law's result
+inline void expectOutputs(Instance& in,
+                          const connectors::ConnectorResult& expected)
+{
+    std::vector<double> got;
+    ASSERT_EQ(in.get(connectorOutputs(), got), fmi2OK) << in.lastMessage();
+    const std::vector<double> want = flatten(expected);
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        // Tolerance: the FMU runs the same law on the same doubles; only
+        // a different instruction order in the two builds (contraction,
+        // inlining) can change the last bits: 1e-13 relative.
+        EXPECT_NEAR(got[i], want[i], 1e-13 * (1.0 + std::abs(want[i])))
+            << connectorOutputs()[i];
+    }
 }
 
 } // namespace fmuTest

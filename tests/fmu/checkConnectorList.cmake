@@ -1,0 +1,43 @@
+# Every connector is discovered and built: the folders connectors/<name>/
+# (all but common/), the connector FMUs CMake configured (CONFIGURED, comma
+# separated) and the <name>.fmu files in FMU_DIR are the same names.
+#   cmake -DSOURCE_DIR=<repository> -DFMU_DIR=<build>/fmus
+#         -DCONFIGURED=a,b,... -P checkConnectorList.cmake
+foreach(var SOURCE_DIR FMU_DIR CONFIGURED)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "checkConnectorList: -D${var}= is required")
+  endif()
+endforeach()
+
+file(GLOB entries LIST_DIRECTORIES true RELATIVE ${SOURCE_DIR}/connectors
+     ${SOURCE_DIR}/connectors/*)
+set(folders)
+foreach(entry IN LISTS entries)
+  if(IS_DIRECTORY ${SOURCE_DIR}/connectors/${entry}
+     AND NOT entry STREQUAL "common")
+    list(APPEND folders ${entry})
+  endif()
+endforeach()
+
+file(GLOB fmuFiles RELATIVE ${FMU_DIR} ${FMU_DIR}/*.fmu)
+set(built)
+foreach(file IN LISTS fmuFiles)
+  string(REGEX REPLACE "\\.fmu$" "" name ${file})
+  list(APPEND built ${name})
+endforeach()
+
+string(REPLACE "," ";" configured "${CONFIGURED}")
+foreach(list folders built configured)
+  list(SORT ${list})
+endforeach()
+message(STATUS "connector folders: ${folders}")
+message(STATUS "configured FMUs:   ${configured}")
+message(STATUS "built FMUs:        ${built}")
+if(NOT folders STREQUAL configured)
+  message(FATAL_ERROR "the connector FMUs CMake configured (${configured}) "
+                      "are not the folders of connectors/ (${folders})")
+endif()
+if(NOT folders STREQUAL built)
+  message(FATAL_ERROR "the FMUs in ${FMU_DIR} (${built}) are not the "
+                      "folders of connectors/ (${folders})")
+endif()
