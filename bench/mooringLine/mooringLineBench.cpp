@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "MooringLineReferences.hpp"
+#include "mooringLine/LineForces.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace {
@@ -165,10 +166,177 @@ void bench(const Case& c)
     }
 }
 
+//- Work-precision: error against the same N at the fine step and against
+//  N = 80, and CPU time, over N, coupling step and CVODE's tolerance
+void workPrecision(const Case& c, const std::vector<double>& steps,
+                   double cvodeStep)
+{
+    const double reference = run(c, 80, c.fineStep).amplitude;
+    std::printf("%s: work-precision (tension harmonic; time error against the "
+                "same N at %g s, total against N = 80)\n",
+                c.line.name, c.fineStep);
+    std::printf("%4s %7s %15s %14s %15s %11s\n", "N", "h [s]", "integrator",
+                "time err [pp]", "total err [%]", "CPU [s/s]");
+    for (const int N : {10, 20, 40}) {
+        const double fine = run(c, N, c.fineStep).amplitude;
+        const auto row = [&](double h, double tolerance) {
+            const Result r = run(c, N, h, tolerance);
+            char integrator[32];
+            std::snprintf(integrator, sizeof integrator,
+                          tolerance > 0.0 ? "CVODE %g" : "trapezoid",
+                          tolerance);
+            std::printf("%4d %7g %15s %14.4f %15.3f %11.3g\n", N, h, integrator,
+                        100.0 * (r.amplitude - fine) / reference,
+                        100.0 * (r.amplitude / reference - 1.0),
+                        r.cpuPerSecond);
+            std::fflush(stdout);
+        };
+        for (const double h : steps) {
+            row(h, 0.0);
+        }
+        for (const double tolerance : {1e-6, 1e-8, 1e-10}) {
+            row(cvodeStep, tolerance);
+        }
+    }
+}
+
+//- Snap: the lab chain's fairlead pulled in surge by a over 0.5 s (smooth
+//  start and stop) to 0.9997 of the line length from the anchor, then held
+//  to t = 2 s. Peak fairlead tension and its time, tension at the end,
+//  energy balance (work done on the line against its change of potential
+//  and kinetic energy plus the dissipated energy; trapezoidal sums)
+struct Snap {
+    double peak = 0.0, peakTime = 0.0, final = 0.0, imbalance = 0.0,
+           throughput = 0.0, cpu = 0.0;
+    bool finite = true;
+};
+
+Snap snap(int N, double h, bool addedMass, double tolerance = 0.0)
+{
+    references::ReferenceLine line = references::lab(N);
+    MooringLineParameters& p = line.p;
+    if (!addedMass) {
+        p.normalAddedMass = p.tangentialAddedMass = 0.0;
+    }
+    if (tolerance > 0.0) {
+        p.integrator = MooringLineParameters::Integrator::cvode;
+        p.relativeTolerance = p.absoluteTolerance = tolerance;
+    }
+    const Vector3 span = line.fairlead - line.anchor;
+    // surge a such that |span + a x^| = 0.9997 L
+    const double reach = 0.9997 * p.length;
+    const double a
+        = std::sqrt(reach * reach - span[1] * span[1] - span[2] * span[2])
+        - span[0];
+    const double pull = 0.5;
+    const auto fairlead = [&](double t) {
+        const double u = std::min(t / pull, 1.0);
+        BodyKinematics A;
+        A.p_WBo_W = line.fairlead
+            + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
+        A.v_WBo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
+                                     : 0.0,
+                            0.0, 0.0);
+        return A;
+    };
+    MooringLine law(p);
+    BodyKinematics B;
+    B.p_WBo_W = line.anchor;
+    const double l = p.length / N;
+    const double area = 0.25 * pi * p.diameter * p.diameter;
+    const double mn
+        = (p.massPerLength + p.normalAddedMass * p.waterDensity * area) * l;
+    const double mt
+        = (p.massPerLength + p.tangentialAddedMass * p.waterDensity * area) * l;
+    const auto energy = [&](const MooringLineState& s,
+                            const MooringLineOutput& out) {
+        // kinetic energy v' M v / 2 with the added mass about the tangent
+        std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+        unpack(s.nodes, N, r, v);
+        r[0] = s.Q;
+        r[std::size_t(N)] = s.P;
+        double kinetic = 0.0;
+        for (int i = 1; i < N; ++i) {
+            const Vector3 t
+                = (r[std::size_t(i + 1)] - r[std::size_t(i - 1)]).normalized();
+            const Vector3& vi = v[std::size_t(i)];
+            const double along = vi.dot(t);
+            kinetic += 0.5
+                * (mn * (vi.squaredNorm() - along * along)
+                   + mt * along * along);
+        }
+        return out.loads.potentialEnergy + kinetic;
+    };
+    Snap result;
+    MooringLineState s = law.initialState(fairlead(0.0), B, 0.0);
+    MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
+    const double energy0 = energy(s, out);
+    double power = 0.0, dissipation = out.loads.dissipatedPower;
+    double work = 0.0, dissipated = 0.0;
+    const double cpuStart = cpuSeconds();
+    const int steps = int(std::lround(2.0 / h));
+    for (int k = 1; k <= steps; ++k) {
+        const BodyKinematics A = fairlead(k * h);
+        law.advance(s, A, B, h);
+        out = law.evaluate(s, A, B, 0);
+        const double newPower = -out.loads.A.f_W.dot(A.v_WBo_W);
+        work += 0.5 * h * (power + newPower);
+        result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
+        dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);
+        power = newPower;
+        dissipation = out.loads.dissipatedPower;
+        result.finite = result.finite && std::isfinite(out.fairleadTension);
+        if (out.fairleadTension > result.peak) {
+            result.peak = out.fairleadTension;
+            result.peakTime = k * h;
+        }
+    }
+    result.cpu = cpuSeconds() - cpuStart;
+    result.final = out.fairleadTension;
+    result.imbalance = work - (energy(s, out) - energy0) - dissipated;
+    return result;
+}
+
+void snapTable()
+{
+    std::printf("lab chain snap: fairlead pulled to 0.9997 L in 0.5 s, held "
+                "to 2 s\n");
+    std::printf("%4s %7s %15s %11s %9s %11s %15s %10s %9s\n", "N", "h [s]",
+                "integrator", "added mass", "peak [N]", "at [s]",
+                "imbalance [J]", "of [J]", "CPU [s]");
+    const auto row = [](int N, double h, bool addedMass, double tolerance) {
+        const Snap r = snap(N, h, addedMass, tolerance);
+        char integrator[32];
+        std::snprintf(integrator, sizeof integrator,
+                      tolerance > 0.0 ? "CVODE %g" : "trapezoid", tolerance);
+        std::printf("%4d %7g %15s %11s %9.4g %11.4f %15.3g %10.3g %9.3g%s\n", N,
+                    h, integrator, addedMass ? "yes" : "no", r.peak, r.peakTime,
+                    r.imbalance, r.throughput, r.cpu,
+                    r.finite ? "" : " (not finite)");
+        std::fflush(stdout);
+    };
+    for (const int N : {10, 20, 40, 80}) {
+        row(N, 1e-3, true, 0.0);
+        row(N, 1e-4, true, 0.0);
+        row(N, 1e-3, false, 0.0);
+    }
+    row(20, 1e-3, true, 1e-8);
+    row(20, 1e-3, false, 1e-8);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+    if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol
+        const Snap r = snap(std::atoi(argv[2]), std::atof(argv[3]), true,
+                            std::atof(argv[4]));
+        std::printf("snap N = %s h = %s tolerance %s: peak %.6g N at %.5g s, "
+                    "imbalance %.3g J of %.3g J, CPU %.3g s, final %.6g N\n",
+                    argv[2], argv[3], argv[4], r.peak, r.peakTime, r.imbalance,
+                    r.throughput, r.cpu, r.final);
+        return 0;
+    }
     if (argc == 4 || argc == 5) { // one run: lab|oc4 N h [tolerance]
         const Case c = std::strcmp(argv[1], "lab") == 0 ? lab() : oc4();
         const Result r = run(c, std::atoi(argv[2]), std::atof(argv[3]),
@@ -179,6 +347,15 @@ int main(int argc, char** argv)
             "evaluations\n",
             c.line.name, argv[2], argv[3], r.amplitude, r.wallPerSecond,
             r.cpuPerSecond, r.stepsPerStep, r.forcesPerStep);
+        return 0;
+    }
+    if (argc == 2 && std::strcmp(argv[1], "precision") == 0) {
+        workPrecision(lab(), {4e-3, 2e-3, 1e-3, 5e-4}, 1e-3);
+        workPrecision(oc4(), {0.4, 0.2, 0.1, 0.01}, 0.1);
+        return 0;
+    }
+    if (argc == 2 && std::strcmp(argv[1], "snap") == 0) {
+        snapTable();
         return 0;
     }
     const bool all = argc < 2;

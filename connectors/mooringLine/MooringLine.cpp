@@ -335,7 +335,7 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
 }
 
 bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
-                                double s1)
+                                double s1, double largestMiss)
 {
     const double h = (s1 - s0) * ends_.h;
     const int N = parameters_.segments;
@@ -370,10 +370,10 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // one (the matrix omits only small terms): measured on the reference
     // lines, largest first corrections 1.8e-6 (lab chain, 1 ms) and 7.5e-6
     // (OC4, 0.1 s) of a segment, second ones 2e-9, third 2.5e-12. A
-    // correction below 1e-5 of a segment ends the iteration, so those lines
-    // take one solve per step: the tension harmonic then equals that of
-    // Newton iterated to 1e-10 of a segment within 5e-8 (lab) and 3e-6
-    // (OC4) of itself.
+    // correction below 1e-5 of a segment ends the iteration: one solve per
+    // step, and the tension harmonic equals that of Newton iterated to
+    // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
+    // first correction above largestMiss segments rejects the step.
     for (int iteration = 0; iteration < 10; ++iteration) {
         nodeForces(parameters_, weight_, w.r, w.v, zb, w.f);
         if (iteration == 0) {
@@ -401,6 +401,10 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         if (!finite) {
             break;
         }
+        if (iteration == 0 && largest > largestMiss * l) {
+            ++trapezoidStatistics_.errorTestFailures;
+            return false;
+        }
         if (largest <= 1e-5 * l) {
             for (std::size_t i = 1; i < n; ++i) {
                 double* y = nodes.data() + 6 * (i - 1);
@@ -415,6 +419,36 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     }
     ++trapezoidStatistics_.convergenceFailures;
     return false;
+}
+
+void MooringLine::trapezoidInterval(std::vector<double>& nodes, double s0,
+                                    double s1, int depth)
+{
+    // The predictor's miss (Newton's first correction) is about three
+    // times the step's local error, h^3/12 times the third derivative of
+    // the positions. Above 1e-5 of a segment the interval is halved, so
+    // that every step takes one Newton solve (that correction ends
+    // trapezoidStep's iteration). The reference lines miss by at most
+    // 1.8e-6 (lab chain, 1 ms) and 7.5e-6 (OC4, N = 20, 0.1 s): one step
+    // per coupling step. A snap (the lab chain pulled to 0.9997 of its
+    // length) is resolved in shorter steps: its energy balance closes to
+    // 1e-4 of the work done (at 1e-4 of a segment: 0.27, no better than
+    // 0.1 ms steps throughout; bench/mooringLine). At the tenth halving
+    // Newton iterates to 1e-5 of a segment, whatever the first correction.
+    constexpr int deepest = 10;
+    if (trapezoidStep(
+            nodes, s0, s1,
+            depth < deepest ? 1e-5 : std::numeric_limits<double>::infinity())) {
+        return;
+    }
+    if (depth == deepest) {
+        throw std::runtime_error(
+            "Newton did not converge in the trapezoidal step, not even at "
+            "1/1024 of the coupling step");
+    }
+    const double middle = 0.5 * (s0 + s1);
+    trapezoidInterval(nodes, s0, middle, depth + 1);
+    trapezoidInterval(nodes, middle, s1, depth + 1);
 }
 
 void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
@@ -443,39 +477,25 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     ends_.t0 = state.time;
     ends_.h = h;
     std::vector<double> y(state.nodes);
-    if (integrator_) {
-        try {
+    try {
+        if (integrator_) {
             integrator_->restart(state.time, state.nodes.data());
             integrator_->advance(state.time + h, y.data());
-        } catch (const std::runtime_error& e) {
-            throw UndefinedStateError(std::string("mooringLine: step from t = ")
-                                      + formatValue(state.time) + " s by "
-                                      + formatValue(h)
-                                      + " s failed: " + e.what());
-        }
-    } else {
-        // Equal substeps no longer than maxStep; where Newton fails, twice
-        // as many, down to 1/1024 of the coupling step
-        const int first = parameters_.maxStep > 0.0
-            ? int(std::min(std::ceil(h / parameters_.maxStep - 1e-9), 1e6))
-            : 1;
-        for (int substeps = std::max(first, 1), done = 0; !done;
-             substeps *= 2) {
-            if (substeps > 1024 * std::max(first, 1)) {
-                throw UndefinedStateError(
-                    "mooringLine: step from t = " + formatValue(state.time)
-                    + " s by " + formatValue(h)
-                    + " s failed: Newton did not converge in the "
-                      "trapezoidal step, not even in "
-                    + std::to_string(substeps / 2) + " substeps");
-            }
-            y = state.nodes;
-            done = 1;
-            for (int k = 0; k < substeps && done; ++k) {
-                done = trapezoidStep(y, double(k) / substeps,
-                                     double(k + 1) / substeps);
+        } else {
+            // Equal substeps no longer than maxStep, each halved where it
+            // fails (trapezoidInterval)
+            const int substeps = parameters_.maxStep > 0.0
+                ? int(std::min(std::ceil(h / parameters_.maxStep - 1e-9), 1e6))
+                : 1;
+            for (int k = 0; k < substeps; ++k) {
+                trapezoidInterval(y, double(k) / substeps,
+                                  double(k + 1) / substeps, 0);
             }
         }
+    } catch (const std::runtime_error& e) {
+        throw UndefinedStateError(std::string("mooringLine: step from t = ")
+                                  + formatValue(state.time) + " s by "
+                                  + formatValue(h) + " s failed: " + e.what());
     }
     state.nodes = std::move(y);
     state.time += h;

@@ -157,8 +157,15 @@ private:
     void endsAt(double s, Vector3& rQ, Vector3& vQ, Vector3& rP,
                 Vector3& vP) const;
     //- One trapezoidal step of `nodes` from the fraction s0 of the
-    //  coupling step to s1; false when Newton did not converge
-    bool trapezoidStep(std::vector<double>& nodes, double s0, double s1);
+    //  coupling step to s1; false (nodes unchanged) when Newton's first
+    //  correction exceeds largestMiss segment lengths or Newton did not
+    //  converge
+    bool trapezoidStep(std::vector<double>& nodes, double s0, double s1,
+                       double largestMiss);
+    //- Trapezoidal steps over [s0, s1], halved where a step fails, down to
+    //  1/1024 (depth: halvings so far); throws UndefinedStateError there
+    void trapezoidInterval(std::vector<double>& nodes, double s0, double s1,
+                           int depth);
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
     Vector3 attachmentVelocity(const BodyKinematics& body,
                                const Vector3& p) const;

@@ -191,8 +191,10 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     // (lab) and 0.08 pp (OC4) of the fine step. CVODE at tolerance 1e-8
     // was 0.15 to 0.8 pp off at 1 ms (bench/mooringLine). One Newton
     // solve per step: two force evaluations (the start's acceleration and
-    // the predictor's residual); OC4 at N = 40 needs a second solve on
-    // some steps (measured 2.8 evaluations per step).
+    // the predictor's residual), one step per coupling step, except OC4 at
+    // N = 40, whose predictor misses by more than 1e-5 of a segment on
+    // some steps, which are halved (measured 1.7 steps, 4.7 evaluations
+    // per coupling step; its difference then 0.025 %).
     for (const int N : {10, 20, 40}) {
         const ReferenceLine r = lab(N);
         double forces = 0.0;
@@ -217,7 +219,7 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
                   << " force evaluations per step), " << fine
                   << " N at 1e-3 s (" << difference << " %)\n";
         EXPECT_LT(std::abs(difference), 0.2) << N; // the goal: 1
-        EXPECT_LE(forces, 3.0) << N;
+        EXPECT_LE(forces, N < 40 ? 2.0 : 6.0) << N;
     }
 
     // CVODE (tolerance 1e-10, error control on its own internal steps)
@@ -239,6 +241,7 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     // kinks of the path at every step shake the stiff axial modes. The
     // trapezoidal rule sees the ends only at the step's ends, with the
     // step's mean velocity instead of the given ones (measured -0.002 %).
+    r.p.relativeTolerance = r.p.absoluteTolerance = 1e-9;
     r.p.hermiteEnds = false;
     const double straightCvode = tensionHarmonic(r, 0.01, 1.0, 2, 1e-3);
     EXPECT_GT(100.0 * (straightCvode / trapezoid - 1.0), 50.0) << straightCvode;
