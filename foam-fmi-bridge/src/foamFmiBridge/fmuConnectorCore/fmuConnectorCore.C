@@ -126,7 +126,7 @@ void Foam::fmuConnectorCore::checkEntries
             FatalIOErrorInFunction(dict)
                 << "restraint " << restraintName << ": unknown entry '"
                 << e.keyword() << "'; the entries of an fmuConnector"
-                << " restraint are " << flatOutput(keywords)
+                << " restraint are " << listed(keywords).c_str()
                 << exit(FatalIOError);
         }
     }
@@ -146,6 +146,17 @@ void Foam::fmuConnectorCore::checkEntries
             << "restraint " << restraintName << ": body and bodyB are the"
             << " same body " << bodyB << exit(FatalIOError);
     }
+}
+
+
+Foam::string Foam::fmuConnectorCore::listed(const wordList& words)
+{
+    string text;
+    forAll(words, i)
+    {
+        text += (i ? ", " : "") + words[i];
+    }
+    return text;
 }
 
 

@@ -16,11 +16,11 @@ Description
 #include "error.H"
 #include "OStringStream.H"
 #include "Switch.H"
+#include "Map.H"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <map>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -163,7 +163,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
         FatalIOErrorInFunction(parameters)
             << where().c_str() << "parameter '" << key.c_str()
             << "' is not declared by the FMU; its parameters are "
-            << names << exit(FatalIOError);
+            << listed(names).c_str() << exit(FatalIOError);
     }
 
     // The elements key[1..n], or key[1..3,1..3]: Real parameters
@@ -176,7 +176,12 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
             fmuImport::connector::Shape::matrix
         );
     }
-    for (label i = 1; !isMatrix && fmu_->hasVariable(key + "[" + std::to_string(i) + "]"); ++i)
+    for
+    (
+        label i = 1;
+        !isMatrix && fmu_->hasVariable(key + "[" + std::to_string(i) + "]");
+        ++i
+    )
     {
         elements.push_back(key + "[" + std::to_string(i) + "]");
     }
@@ -241,7 +246,7 @@ void Foam::fmuConnectorCore::setParameters
 {
     // Each FMU variable is set by one entry only: 'A.p (...)' and
     // 'A.p[1] ...' together would leave the result to the entries' order
-    std::map<unsigned int, word> setBy;
+    Map<word> setBy;
 
     for (const entry& e : parameters)
     {
@@ -251,8 +256,8 @@ void Foam::fmuConnectorCore::setParameters
 
         for (const unsigned int ref : refs)
         {
-            const auto previous = setBy.find(ref);
-            if (previous != setBy.end())
+            const auto previous = setBy.cfind(label(ref));
+            if (previous.found())
             {
                 std::string variable;
                 for (const auto& var : fmu_->modelDescription().variables)
@@ -267,13 +272,13 @@ void Foam::fmuConnectorCore::setParameters
                     }
                 }
                 FatalIOErrorInFunction(parameters)
-                    << where().c_str() << "entries '" << previous->second
+                    << where().c_str() << "entries '" << *previous
                     << "' and '" << e.keyword() << "' both set the FMU"
                     << " parameter " << variable.c_str() << "; give each"
                     << " parameter once, as a vector or by element"
                     << exit(FatalIOError);
             }
-            setBy.emplace(ref, e.keyword());
+            setBy.insert(label(ref), e.keyword());
         }
 
         const fmuImport::Variable* var =
@@ -344,7 +349,10 @@ void Foam::fmuConnectorCore::checkParameters
         if
         (
             var.causality != fmuImport::Causality::parameter
-         || !(namesParameter(refusal, var.name) || namesParameter(refusal, base))
+         || !(
+                namesParameter(refusal, var.name)
+             || namesParameter(refusal, base)
+            )
         )
         {
             continue;

@@ -86,7 +86,8 @@ const Foam::dictionary& checkBody
             FatalIOError<< " is missing";
         }
         FatalIOError
-            << "; the model's bodies are " << bodies << exit(FatalIOError);
+            << "; the model's bodies are "
+            << fmuConnectorCore::listed(bodies).c_str() << exit(FatalIOError);
     }
 
     return dict;

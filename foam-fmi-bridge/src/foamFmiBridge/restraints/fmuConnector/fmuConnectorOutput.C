@@ -10,6 +10,7 @@ License
 #include "fmuConnectorOutput.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include "DynamicList.H"
 
 #include <algorithm>
 #include <charconv>
@@ -35,9 +36,9 @@ const std::string::size_type bufferLimit = 1 << 16;
 //- The outputs that exist: a FatalError ends the process with exit(), which
 //  destroys no restraint, so an exit handler writes their completed rows.
 //  Never destroyed, as the handler may run after static destructors.
-std::vector<Foam::fmuConnectorOutput*>& liveOutputs()
+Foam::DynamicList<Foam::fmuConnectorOutput*>& liveOutputs()
 {
-    static auto* live = new std::vector<Foam::fmuConnectorOutput*>;
+    static auto* live = new Foam::DynamicList<Foam::fmuConnectorOutput*>;
     return *live;
 }
 
@@ -157,7 +158,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
             << " may lose the rows of " << path << " since the last write"
             << " time" << endl;
     }
-    liveOutputs().push_back(this);
+    liveOutputs().append(this);
 }
 
 
@@ -165,8 +166,12 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
 
 Foam::fmuConnectorOutput::~fmuConnectorOutput()
 {
-    std::vector<fmuConnectorOutput*>& live = liveOutputs();
-    live.erase(std::remove(live.begin(), live.end(), this), live.end());
+    DynamicList<fmuConnectorOutput*>& live = liveOutputs();
+    const label i = live.find(this);
+    if (i >= 0)
+    {
+        live.remove(i);
+    }
 
     flush(true);
 }
