@@ -1,0 +1,147 @@
+"""OpenFOAM's floatingObject tutorial (interFoam/RAS) as a light-body case.
+
+The tutorial's box (0.3 x 0.2 x 0.5 m, sway Py and pitch Ry) with a chosen
+density, coupled to the fluid either by OpenFOAM's own rigidBodyMotion
+(Newmark, a constant accelerationRelaxation, a fixed number of outer
+correctors) or by the project's addedMassRigidBodyMotion (no relaxation,
+the outer correctors ended by the coupling residual). Used by
+tests/floatingStability/lightBody.py and bench/lightBodies/run.py.
+"""
+
+import os
+import re
+import shutil
+import subprocess
+
+TUTORIAL = os.path.join(
+    os.environ.get("FOAM_TUTORIALS", "/usr/share/doc/openfoam-examples/examples"),
+    "multiphase/interFoam/RAS/floatingObject")
+
+LOCK = "/tmp/foamfmi-cfd.lock"
+
+
+def sub(path, pattern, replacement, count=1):
+    """Replace pattern in the file at path; fail if it is not there."""
+    with open(path) as f:
+        text = f.read()
+    new, n = re.subn(pattern, replacement, text, count=count, flags=re.M)
+    if n == 0:
+        raise RuntimeError(f"{path}: no match for {pattern!r}")
+    with open(path, "w") as f:
+        f.write(new)
+
+
+def run(case, *command):
+    log = os.path.join(case, "log." + os.path.basename(command[0]))
+    with open(log, "w") as out:
+        return subprocess.run(command, cwd=case, stdout=out,
+                              stderr=subprocess.STDOUT).returncode
+
+
+def mesh(base):
+    """The tutorial's mesh and initial fields in base (made once)."""
+    if os.path.isdir(os.path.join(base, "constant", "polyMesh")):
+        return base
+    shutil.rmtree(base, ignore_errors=True)
+    os.makedirs(base)
+    for d in ("system", "constant"):
+        shutil.copytree(os.path.join(TUTORIAL, d), os.path.join(base, d))
+    shutil.copytree(os.path.join(TUTORIAL, "0.orig"), os.path.join(base, "0"))
+    for command in (["blockMesh"], ["topoSet"],
+                    ["subsetMesh", "-overwrite", "c0", "-patch",
+                     "floatingObject"], ["setFields"]):
+        if run(base, *command) != 0:
+            raise RuntimeError(f"{command[0]} failed in {base}")
+    return base
+
+
+def make(base, case, density, end_time, coupling, relaxation=0.7,
+         outer=3, tolerance=1e-2, max_outer=10):
+    """A copy of the meshed tutorial in case.
+
+    coupling: "stock" (rigidBodyMotion, accelerationRelaxation relaxation,
+    outer correctors) or "addedMass" (addedMassRigidBodyMotion, at most
+    max_outer correctors, ended at a coupling residual below tolerance;
+    with tolerance None, outer correctors each step).
+    """
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(base, case, ignore=shutil.ignore_patterns("log.*"))
+    dyn = os.path.join(case, "constant", "dynamicMeshDict")
+    sub(dyn, r"^(\s*rho\s+)500;", rf"\g<1>{density};")
+    fvs = os.path.join(case, "system", "fvSolution")
+    if coupling == "stock":
+        sub(dyn, r"accelerationRelaxation\s+[0-9.]+;",
+            f"accelerationRelaxation {relaxation};")
+        sub(fvs, r"nOuterCorrectors\s+\d+;", f"nOuterCorrectors    {outer};")
+    elif coupling == "addedMass":
+        sub(dyn, r"motionSolverLibs\s+\(rigidBodyMeshMotion\);",
+            "motionSolverLibs   (rigidBodyMeshMotion foamFmiRigidBodyCoupling);")
+        sub(dyn, r"motionSolver\s+rigidBodyMotion;",
+            "motionSolver       addedMassRigidBodyMotion;")
+        sub(dyn, r"rigidBodyMotionCoeffs", "addedMassRigidBodyMotionCoeffs")
+        sub(dyn, r"^\s*accelerationRelaxation\s+[0-9.]+;\n", "")
+        if tolerance is None:
+            sub(fvs, r"nOuterCorrectors\s+\d+;",
+                f"nOuterCorrectors    {outer};")
+        else:
+            sub(fvs, r"nOuterCorrectors\s+\d+;",
+                f"nOuterCorrectors    {max_outer};\n"
+                "    residualControl\n    {\n"
+                f"        rigidBodyCoupling {{ tolerance {tolerance};"
+                " relTol 0; }\n    }")
+    else:
+        raise ValueError(coupling)
+    cd = os.path.join(case, "system", "controlDict")
+    sub(cd, r"^endTime\s+[0-9.]+;", f"endTime         {end_time};")
+    sub(cd, r"^writeInterval\s+[0-9.]+;", f"writeInterval   {end_time};")
+    return case
+
+
+def solve(case, solver="interFoamAliasSafe"):
+    """Run the solver (one CFD job at a time on this machine); never raises
+    on a failed run: the log tells how far it got."""
+    env = dict(os.environ, FOAM_SIGFPE="true")
+    with open(os.path.join(case, "log.solver"), "w") as out:
+        subprocess.run(["flock", LOCK, solver], cwd=case, stdout=out,
+                       stderr=subprocess.STDOUT, env=env)
+    return parse(os.path.join(case, "log.solver"))
+
+
+def parse(log):
+    """What a run's log says: steps, outer correctors, end, CPU, motion."""
+    times, ys, pitches = [], [], []
+    steps = correctors = 0
+    cpu = 0.0
+    ended = False
+    residuals = []   # per step: the coupling residuals of its correctors
+    converged = []   # per step: PIMPLE ended it by residualControl
+    with open(log) as f:
+        for line in f:
+            if line.startswith("Time = "):
+                steps += 1
+                times.append(float(line.split()[2]))
+                residuals.append([])
+                converged.append(False)
+                ys.append(None)
+                pitches.append(None)
+            elif line.startswith("Rigid-body motion of the"):
+                correctors += 1
+            elif "coupling residual" in line:
+                residuals[-1].append(float(re.search(
+                    r"coupling residual ([-+0-9.eE]+)", line).group(1)))
+            elif line.startswith("PIMPLE: converged in"):
+                converged[-1] = True
+            elif line.strip().startswith("Centre of rotation:"):
+                # the step's last solve: sway y [m]
+                ys[-1] = float(line.split("(")[1].split()[1])
+            elif line.strip().startswith("Orientation:"):
+                # sine of the pitch: the (0, 2) entry of the rotation tensor
+                pitches[-1] = float(line.split("(")[1].split()[2])
+            elif line.startswith("ExecutionTime"):
+                cpu = float(line.split()[2])
+            elif line.strip() == "End":
+                ended = True
+    return {"steps": steps, "correctors": correctors, "time": times[-1]
+            if times else 0.0, "cpu": cpu, "ended": ended, "y": ys,
+            "pitch": pitches, "residuals": residuals, "converged": converged,
+            "times": times}
