@@ -36,7 +36,6 @@
 #include <vector>
 
 #include "MooringLineReferences.hpp"
-#include "mooringLine/LineForces.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace {
@@ -200,18 +199,11 @@ void workPrecision(const Case& c, const std::vector<double>& steps,
     }
 }
 
-//- Snap: the lab chain's fairlead pulled in surge by a over 0.5 s (smooth
-//  start and stop) to 0.9997 of the line length from the anchor, then held
-//  to t = 2 s. Peak fairlead tension and its time, tension at the end,
-//  energy balance (work done on the line against its change of potential
-//  and kinetic energy plus the dissipated energy; trapezoidal sums)
-struct Snap {
-    double peak = 0.0, peakTime = 0.0, final = 0.0, imbalance = 0.0,
-           throughput = 0.0, cpu = 0.0;
-    bool finite = true;
-};
-
-Snap snap(int N, double h, bool addedMass, double tolerance = 0.0)
+//- The snap (references::pullTaut) of the lab chain at N, h, with or
+//  without added mass, by the trapezoidal rule or CVODE at `tolerance`;
+//  cpu: CPU time of the run [s]
+references::Snap snap(int N, double h, bool addedMass, double tolerance,
+                      double& cpu)
 {
     references::ReferenceLine line = references::lab(N);
     MooringLineParameters& p = line.p;
@@ -222,78 +214,9 @@ Snap snap(int N, double h, bool addedMass, double tolerance = 0.0)
         p.integrator = MooringLineParameters::Integrator::cvode;
         p.relativeTolerance = p.absoluteTolerance = tolerance;
     }
-    const Vector3 span = line.fairlead - line.anchor;
-    // surge a such that |span + a x^| = 0.9997 L
-    const double reach = 0.9997 * p.length;
-    const double a
-        = std::sqrt(reach * reach - span[1] * span[1] - span[2] * span[2])
-        - span[0];
-    const double pull = 0.5;
-    const auto fairlead = [&](double t) {
-        const double u = std::min(t / pull, 1.0);
-        BodyKinematics A;
-        A.p_WBo_W = line.fairlead
-            + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
-        A.v_WBo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
-                                     : 0.0,
-                            0.0, 0.0);
-        return A;
-    };
-    MooringLine law(p);
-    BodyKinematics B;
-    B.p_WBo_W = line.anchor;
-    const double l = p.length / N;
-    const double area = 0.25 * pi * p.diameter * p.diameter;
-    const double mn
-        = (p.massPerLength + p.normalAddedMass * p.waterDensity * area) * l;
-    const double mt
-        = (p.massPerLength + p.tangentialAddedMass * p.waterDensity * area) * l;
-    const auto energy = [&](const MooringLineState& s,
-                            const MooringLineOutput& out) {
-        // kinetic energy v' M v / 2 with the added mass about the tangent
-        std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
-        unpack(s.nodes, N, r, v);
-        r[0] = s.Q;
-        r[std::size_t(N)] = s.P;
-        double kinetic = 0.0;
-        for (int i = 1; i < N; ++i) {
-            const Vector3 t
-                = (r[std::size_t(i + 1)] - r[std::size_t(i - 1)]).normalized();
-            const Vector3& vi = v[std::size_t(i)];
-            const double along = vi.dot(t);
-            kinetic += 0.5
-                * (mn * (vi.squaredNorm() - along * along)
-                   + mt * along * along);
-        }
-        return out.loads.potentialEnergy + kinetic;
-    };
-    Snap result;
-    MooringLineState s = law.initialState(fairlead(0.0), B, 0.0);
-    MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
-    const double energy0 = energy(s, out);
-    double power = 0.0, dissipation = out.loads.dissipatedPower;
-    double work = 0.0, dissipated = 0.0;
-    const double cpuStart = cpuSeconds();
-    const int steps = int(std::lround(2.0 / h));
-    for (int k = 1; k <= steps; ++k) {
-        const BodyKinematics A = fairlead(k * h);
-        law.advance(s, A, B, h);
-        out = law.evaluate(s, A, B, 0);
-        const double newPower = -out.loads.A.f_W.dot(A.v_WBo_W);
-        work += 0.5 * h * (power + newPower);
-        result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
-        dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);
-        power = newPower;
-        dissipation = out.loads.dissipatedPower;
-        result.finite = result.finite && std::isfinite(out.fairleadTension);
-        if (out.fairleadTension > result.peak) {
-            result.peak = out.fairleadTension;
-            result.peakTime = k * h;
-        }
-    }
-    result.cpu = cpuSeconds() - cpuStart;
-    result.final = out.fairleadTension;
-    result.imbalance = work - (energy(s, out) - energy0) - dissipated;
+    const double start = cpuSeconds();
+    const references::Snap result = references::pullTaut(line, h, 2.0);
+    cpu = cpuSeconds() - start;
     return result;
 }
 
@@ -305,13 +228,14 @@ void snapTable()
                 "integrator", "added mass", "peak [N]", "at [s]",
                 "imbalance [J]", "of [J]", "CPU [s]");
     const auto row = [](int N, double h, bool addedMass, double tolerance) {
-        const Snap r = snap(N, h, addedMass, tolerance);
+        double cpu = 0.0;
+        const references::Snap r = snap(N, h, addedMass, tolerance, cpu);
         char integrator[32];
         std::snprintf(integrator, sizeof integrator,
                       tolerance > 0.0 ? "CVODE %g" : "trapezoid", tolerance);
         std::printf("%4d %7g %15s %11s %9.4g %11.4f %15.3g %10.3g %9.3g%s\n", N,
                     h, integrator, addedMass ? "yes" : "no", r.peak, r.peakTime,
-                    r.imbalance, r.throughput, r.cpu,
+                    r.imbalance, r.throughput, cpu,
                     r.finite ? "" : " (not finite)");
         std::fflush(stdout);
     };
@@ -329,12 +253,13 @@ void snapTable()
 int main(int argc, char** argv)
 {
     if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol
-        const Snap r = snap(std::atoi(argv[2]), std::atof(argv[3]), true,
-                            std::atof(argv[4]));
+        double cpu = 0.0;
+        const references::Snap r = snap(std::atoi(argv[2]), std::atof(argv[3]),
+                                        true, std::atof(argv[4]), cpu);
         std::printf("snap N = %s h = %s tolerance %s: peak %.6g N at %.5g s, "
                     "imbalance %.3g J of %.3g J, CPU %.3g s, final %.6g N\n",
                     argv[2], argv[3], argv[4], r.peak, r.peakTime, r.imbalance,
-                    r.throughput, r.cpu, r.final);
+                    r.throughput, cpu, r.final);
         return 0;
     }
     if (argc == 4 || argc == 5) { // one run: lab|oc4 N h [tolerance]

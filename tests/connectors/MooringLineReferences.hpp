@@ -1,10 +1,16 @@
 // The two reference lines of issue 15, for the dynamic line's tests and
 // bench/mooringLine: a lab chain (1.2 m in 0.5 m of water) and the OC4
 // semi-submersible's line (835.5 m in 200 m), with the fairlead and
-// anchor positions [m] of the measurements.
+// anchor positions [m] of the measurements; and a snap (a line pulled to
+// 0.9997 of its length) with its energy balance.
 #ifndef TESTS_CONNECTORS_MOORINGLINEREFERENCES_HPP
 #define TESTS_CONNECTORS_MOORINGLINEREFERENCES_HPP
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mooringLine/LineForces.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace connectors {
@@ -60,6 +66,98 @@ inline ReferenceLine oc4(int segments)
     p.seabedDamping = 3e5;
     p.segments = segments;
     return r;
+}
+
+//- Snap: the fairlead of `line` pulled in surge over 0.5 s (smooth start
+//  and stop) to 0.9997 of the line's length from the anchor, then held,
+//  for `duration` s at coupling step h. Peak fairlead tension and its
+//  time, tension at the end, and the energy balance: the work done on the
+//  line by the fairlead against the change of its potential and kinetic
+//  energy (v' M v / 2, added mass about the node's tangent) plus the
+//  dissipated energy, power integrals by the trapezoidal rule.
+struct Snap {
+    double peak = 0.0, peakTime = 0.0, final = 0.0;
+    //- work - energy change - dissipated energy; the energy that flowed
+    //  through the fairlead (integral of |power|) [J]
+    double imbalance = 0.0, throughput = 0.0;
+    bool finite = true;
+};
+
+inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const MooringLineParameters& p = line.p;
+    const int N = p.segments;
+    const Vector3 span = line.fairlead - line.anchor;
+    // surge a such that |span + a x^| = 0.9997 L
+    const double reach = 0.9997 * p.length;
+    const double a
+        = std::sqrt(reach * reach - span[1] * span[1] - span[2] * span[2])
+        - span[0];
+    const double pull = 0.5;
+    const auto fairlead = [&](double t) {
+        const double u = std::min(t / pull, 1.0);
+        BodyKinematics A;
+        A.p_WBo_W = line.fairlead
+            + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
+        A.v_WBo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
+                                     : 0.0,
+                            0.0, 0.0);
+        return A;
+    };
+    MooringLine law(p);
+    BodyKinematics B;
+    B.p_WBo_W = line.anchor;
+    const double l = p.length / N;
+    const double area = 0.25 * pi * p.diameter * p.diameter;
+    const double mn
+        = (p.massPerLength + p.normalAddedMass * p.waterDensity * area) * l;
+    const double mt
+        = (p.massPerLength + p.tangentialAddedMass * p.waterDensity * area) * l;
+    const auto energy = [&](const MooringLineState& s,
+                            const MooringLineOutput& out) {
+        std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+        unpack(s.nodes, N, r, v);
+        r[0] = s.Q;
+        r[std::size_t(N)] = s.P;
+        double kinetic = 0.0;
+        for (int i = 1; i < N; ++i) {
+            const Vector3 t
+                = (r[std::size_t(i + 1)] - r[std::size_t(i - 1)]).normalized();
+            const Vector3& vi = v[std::size_t(i)];
+            const double along = vi.dot(t);
+            kinetic += 0.5
+                * (mn * (vi.squaredNorm() - along * along)
+                   + mt * along * along);
+        }
+        return out.loads.potentialEnergy + kinetic;
+    };
+    Snap result;
+    MooringLineState s = law.initialState(fairlead(0.0), B, 0.0);
+    MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
+    const double energy0 = energy(s, out);
+    double power = 0.0, dissipation = out.loads.dissipatedPower;
+    double work = 0.0, dissipated = 0.0;
+    const int steps = int(std::lround(duration / h));
+    for (int k = 1; k <= steps; ++k) {
+        const BodyKinematics A = fairlead(k * h);
+        law.advance(s, A, B, h);
+        out = law.evaluate(s, A, B, 0);
+        const double newPower = -out.loads.A.f_W.dot(A.v_WBo_W);
+        work += 0.5 * h * (power + newPower);
+        result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
+        dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);
+        power = newPower;
+        dissipation = out.loads.dissipatedPower;
+        result.finite = result.finite && std::isfinite(out.fairleadTension);
+        if (out.fairleadTension > result.peak) {
+            result.peak = out.fairleadTension;
+            result.peakTime = k * h;
+        }
+    }
+    result.final = out.fairleadTension;
+    result.imbalance = work - (energy(s, out) - energy0) - dissipated;
+    return result;
 }
 
 } // namespace references
