@@ -53,18 +53,15 @@ void ConnectorFmuModel::declareOutputs(const OutputDependencies& d)
     const std::string& noun = wording_.noun;
     firstOutput_ = fmi2ValueReference(t.size());
     outputsDeclared_ = true;
-    t.output("A.F", Shape::vector3, "N",
-             "force of the " + noun + " on A, global frame", d.loads);
-    t.output("A.M", Shape::vector3, "N.m",
-             "moment of the " + noun
-                 + " on A about A's reference point, global frame",
-             d.loads);
-    t.output("B.F", Shape::vector3, "N",
-             "force of the " + noun + " on B, global frame", d.loads);
-    t.output("B.M", Shape::vector3, "N.m",
-             "moment of the " + noun
-                 + " on B about B's reference point, global frame",
-             d.loads);
+    for (const std::string body : {"A", "B"}) {
+        t.output(body + ".F", Shape::vector3, "N",
+                 "force of the " + noun + " on " + body + ", global frame",
+                 d.loads);
+        t.output(body + ".M", Shape::vector3, "N.m",
+                 "moment of the " + noun + " on " + body + " about " + body
+                     + "'s reference point, global frame",
+                 d.loads);
+    }
     t.output("length", Shape::scalar, "m", wording_.length, d.length);
     t.output("lengthRate", Shape::scalar, "m/s", wording_.lengthRate,
              d.lengthRate);
