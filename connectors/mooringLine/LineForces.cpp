@@ -96,8 +96,9 @@ void nodeForces(const MooringLineParameters& p, double w,
         t = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
         f.tangent[i] = t;
         const Vector3 vRel = -v[i]; // still water
-        const Vector3 vt = vRel.dot(t) * t, vn = vRel - vt;
-        const Vector3 drag = cn * vn.norm() * vn + ct * vt.norm() * vt;
+        const double along = vRel.dot(t); // |vt| (t is a unit vector or 0)
+        const Vector3 vt = along * t, vn = vRel - vt;
+        const Vector3 drag = cn * vn.norm() * vn + ct * std::abs(along) * vt;
         F += drag;
         f.F[i] = F;
         f.dissipatedPower += -drag.dot(v[i]);
