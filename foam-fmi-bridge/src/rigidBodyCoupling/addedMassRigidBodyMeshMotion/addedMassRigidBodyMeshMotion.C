@@ -111,7 +111,9 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     residualName_("rigidBodyCoupling"),
     maxIter_(10),
     tolerance_(1e-9),
-    corrector_(0)
+    addedMassInterval_(10),
+    corrector_(0),
+    newEstimate_(false)
 {
     readCoupling();
 
@@ -159,6 +161,23 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
                     bodyDict
                 )
             );
+        }
+    }
+
+    {
+        IOobject io
+        (
+            "rigidBodyMotionState",
+            mesh.time().timeName(),
+            "uniform",
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (io.typeHeaderOk<IOdictionary>(true))
+        {
+            IOdictionary(io).readIfPresent("addedMass", M_);
         }
     }
 
@@ -302,9 +321,17 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
 
             if (addedMass_)
             {
-                if (corrector_ == 1 || M_.m() == 0)
+                if
+                (
+                    M_.m() == 0
+                 || (
+                        corrector_ == 1
+                     && t.timeIndex() % addedMassInterval_ == 0
+                    )
+                )
                 {
                     M_ = addedMassEstimate_->matrix(origins_);
+                    newEstimate_ = true;
                 }
                 nNewton = coupledSolve(fx, ramp, c0, newtonResidual);
             }
@@ -391,6 +418,13 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
     );
 
     model_.state().write(dict);
+
+    // The added mass in use, so that a restart between two estimates
+    // goes on with it
+    if (addedMass_ && M_.m())
+    {
+        dict.add("addedMass", M_);
+    }
     // Force ascii writing
     return dict.regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
 }

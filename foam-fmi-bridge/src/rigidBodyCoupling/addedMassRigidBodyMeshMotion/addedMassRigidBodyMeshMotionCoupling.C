@@ -25,6 +25,7 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
     pName_ = dict.lookupOrDefault<word>("pressure", "p_rgh");
     residualName_ = dict.lookupOrDefault<word>("residual", "rigidBodyCoupling");
     maxIter_ = dict.lookupOrDefault<label>("maxIter", 10);
+    addedMassInterval_ = dict.lookupOrDefault<label>("addedMassInterval", 10);
     tolerance_ = dict.lookupOrDefault<scalar>("tolerance", 1e-9);
 
     if (maxIter_ < 1)
@@ -32,6 +33,13 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
         FatalIOErrorInFunction(dict)
             << "maxIter = " << maxIter_ << ": at least one Newton iteration"
             << " per outer corrector is needed" << exit(FatalIOError);
+    }
+    if (addedMassInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "addedMassInterval = " << addedMassInterval_ << ": the"
+            << " number of time steps between two added-mass estimates must"
+            << " be at least 1" << exit(FatalIOError);
     }
     if (!(tolerance_ > 0 && tolerance_ < 1))
     {
@@ -342,8 +350,9 @@ void Foam::addedMassRigidBodyMeshMotion::reportResidual
         {
             Info<< ", Newton iterations " << nIter
                 << " (residual " << newtonResidual << ")";
-            if (corrector_ == 1)
+            if (newEstimate_)
             {
+                newEstimate_ = false;
                 // The added masses of this step, body by body
                 forAll(bodyMeshes_, bi)
                 {

@@ -90,12 +90,13 @@ Foam::rigidBodyAddedMass::faceDensity() const
 
 void Foam::rigidBodyAddedMass::setUnitAcceleration
 (
+    volScalarField& p,
     const label b,
     const label k,
     const vector& c
 )
 {
-    volScalarField::Boundary& pbf = pUnit_->boundaryFieldRef();
+    volScalarField::Boundary& pbf = p.boundaryFieldRef();
 
     forAll(bodyPatches_, bi)
     {
@@ -173,7 +174,9 @@ Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
     const List<vector>& origins
 )
 {
-    if (!pUnit_.valid())
+    const label nBodies = bodyPatches_.size();
+
+    if (pUnit_.empty())
     {
         if (!mesh_.foundObject<volScalarField>(pName_))
         {
@@ -185,30 +188,34 @@ Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
                 << exit(FatalError);
         }
 
-        pUnit_.reset
-        (
-            new volScalarField
+        const wordList types(patchTypes());
+        pUnit_.setSize(6*nBodies);
+        forAll(pUnit_, i)
+        {
+            pUnit_.set
             (
-                IOobject
+                i,
+                new volScalarField
                 (
-                    "rigidBodyAddedMass.p",
-                    mesh_.time().timeName(),
+                    IOobject
+                    (
+                        "rigidBodyAddedMass.p" + Foam::name(i),
+                        mesh_.time().timeName(),
+                        mesh_,
+                        IOobject::NO_READ,
+                        IOobject::NO_WRITE,
+                        false
+                    ),
                     mesh_,
-                    IOobject::NO_READ,
-                    IOobject::NO_WRITE,
-                    false
-                ),
-                mesh_,
-                dimensionedScalar("zero", dimMass/sqr(dimLength), Zero),
-                patchTypes()
-            )
-        );
+                    dimensionedScalar("zero", dimMass/sqr(dimLength), Zero),
+                    types
+                )
+            );
+        }
     }
 
-    volScalarField& p = pUnit_.ref();
     const surfaceScalarField rAf(1/faceDensity());
 
-    const label nBodies = bodyPatches_.size();
     scalarSquareMatrix M(6*nBodies, Zero);
 
     // The Poisson solves print nothing: six a body each time step
@@ -219,11 +226,12 @@ Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
     {
         for (label k = 0; k < 6; ++k)
         {
-            setUnitAcceleration(b, k, origins[b]);
+            volScalarField& p = pUnit_[6*b + k];
+            setUnitAcceleration(p, b, k, origins[b]);
 
             fvScalarMatrix pEqn(fvm::laplacian(rAf, p));
             pEqn.setReference(Pstream::master() ? 0 : -1, 0);
-            pEqn.solve(mesh_.solverDict(pName_ + "Final"));
+            pEqn.solve(mesh_.solverDict(pName_));
 
             // Loads on every body about its origin: moments and forces
             for (label i = 0; i < nBodies; ++i)
