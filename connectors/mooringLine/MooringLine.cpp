@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,14 @@ void requirePositive(const char* name, double value, const char* unit)
     if (!(std::isfinite(value) && value > 0.0)) {
         throw ParameterError(lawName, name, value, unit, "finite and > 0");
     }
+}
+
+//- Whether a and b hold the same doubles to the bit (-0 differs from 0)
+static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 is 3 doubles");
+bool sameBits(const std::vector<Vector3>& a, const std::vector<Vector3>& b)
+{
+    return a.size() == b.size()
+        && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vector3)) == 0;
 }
 
 //- Potential energy of the line held still: strain, seabed, weight [J]
@@ -347,9 +356,17 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     unpack(nodes, N, w.r0, w.v0);
     endsAt(s0, w.r0[0], w.v0[0], w.r0[n], w.v0[n]);
     const double zb = w.r0[0][2];
-    nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f);
-    ++trapezoidStatistics_.rhsEvaluations;
-    w.a0 = w.f.a;
+    // The start's accelerations: those `evaluate` found at the same node
+    // positions and velocities (the end of the previous step, as the FMU
+    // reports its outputs), else a force evaluation; the same function of
+    // the same numbers either way
+    if (sameBits(lastEvaluated_.r, w.r0) && sameBits(lastEvaluated_.v, w.v0)) {
+        w.a0 = lastEvaluated_.a;
+    } else {
+        nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f);
+        ++trapezoidStatistics_.rhsEvaluations;
+        w.a0 = w.f.a;
+    }
     // Predictor: the start acceleration held over the step
     w.r = w.r0;
     w.v = w.v0;
@@ -525,6 +542,9 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     v[0] = attachmentVelocity(B, p.p_BoQ_B);
     v[N] = attachmentVelocity(A, p.p_AoP_A);
     const NodeForces f = nodeForces(p, weight_, r, v, r[0][2]);
+    lastEvaluated_.r = r;
+    lastEvaluated_.v = v;
+    lastEvaluated_.a = f.a;
     const double l = p.length / N;
 
     MooringLineOutput out;

@@ -235,6 +235,43 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
     }
 }
 
+TEST(MooringLine, LoadsBetweenStepsDoNotChangeTheSteps)
+{
+    // The trapezoidal rule takes the start's accelerations from the last
+    // `evaluate` when the nodes are exactly where it found them (the FMU
+    // reports its loads after every step): the steps must be the same to
+    // the bit as without those calls, and a rollback in between (other
+    // inputs evaluated, then the saved state) must not reuse stale ones
+    MooringLine quiet(chain(10)), reporting(chain(10));
+    MooringLineState a = quiet.initialState(fairlead, anchor, 0.0);
+    MooringLineState b = a;
+    for (int step = 1; step <= 20; ++step) {
+        const BodyKinematics A = body(
+            fairlead.p_WBo_W
+            + Vector3(0.3 * std::sin(0.5 * step), 0.0, 0.1 * std::cos(step)));
+        quiet.advance(a, A, anchor, 0.1);
+        reporting.advance(b, A, anchor, 0.1);
+        reporting.evaluate(b, A, anchor, 0);
+        if (step % 5 == 0) { // a trial step that is rolled back
+            MooringLineState trial = b;
+            reporting.advance(trial, fairlead, anchor, 0.1);
+            reporting.evaluate(trial, fairlead, anchor, 0);
+        }
+        ASSERT_EQ(a.serialize(), b.serialize()) << step;
+    }
+    // and the force evaluation is saved: a step held still takes two
+    // (start and predictor), one after `evaluate`
+    MooringLine still(chain(10));
+    MooringLineState s = still.initialState(fairlead, anchor, 0.0);
+    const long n0 = still.statistics().rhsEvaluations;
+    still.advance(s, fairlead, anchor, 0.1);
+    const long n1 = still.statistics().rhsEvaluations;
+    still.evaluate(s, fairlead, anchor, 0);
+    still.advance(s, fairlead, anchor, 0.1);
+    EXPECT_EQ(n1 - n0, 2);
+    EXPECT_EQ(still.statistics().rhsEvaluations - n1, 1);
+}
+
 TEST(MooringLine, EnergyBalance)
 {
     // Work done by the bodies on the line = change of its potential and
