@@ -35,6 +35,29 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The state file of a time, uniform/rigidBodyMotionState, read if present
+Foam::IOobject stateIO(const Foam::polyMesh& mesh)
+{
+    return Foam::IOobject
+    (
+        "rigidBodyMotionState",
+        mesh.time().timeName(),
+        "uniform",
+        mesh,
+        Foam::IOobject::READ_IF_PRESENT,
+        Foam::IOobject::NO_WRITE,
+        false
+    );
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::addedMassRigidBodyMeshMotion::bodyMesh::bodyMesh
@@ -79,26 +102,8 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     (
         mesh.time(),
         coeffDict(),
-        IOobject
-        (
-            "rigidBodyMotionState",
-            mesh.time().timeName(),
-            "uniform",
-            mesh
-        ).typeHeaderOk<IOdictionary>(true)
-      ? IOdictionary
-        (
-            IOobject
-            (
-                "rigidBodyMotionState",
-                mesh.time().timeName(),
-                "uniform",
-                mesh,
-                IOobject::READ_IF_PRESENT,
-                IOobject::NO_WRITE,
-                false
-            )
-        )
+        stateIO(mesh).typeHeaderOk<IOdictionary>(true)
+      ? IOdictionary(stateIO(mesh))
       : coeffDict()
     ),
     test_(coeffDict().lookupOrDefault("test", false)),
@@ -164,21 +169,9 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
         }
     }
 
+    if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
     {
-        IOobject io
-        (
-            "rigidBodyMotionState",
-            mesh.time().timeName(),
-            "uniform",
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        );
-        if (io.typeHeaderOk<IOdictionary>(true))
-        {
-            IOdictionary(io).readIfPresent("addedMass", M_);
-        }
+        IOdictionary(stateIO(mesh)).readIfPresent("addedMass", M_);
     }
 
     List<labelHashSet> bodyPatches(bodyMeshes_.size());
