@@ -125,6 +125,12 @@ TEST(MooringLineStart, UnusableParametersAreNamed)
         "mooringLine: parameter unstretchedLength = -1.2 m is out of range (allowed: "
         "finite and > 0)");
     p = r.p;
+    p.maxStep = -1e-3;
+    expectThrowWithMessage<connectors::ParameterError>(
+        [&] { MooringLine line(p); },
+        "mooringLine: parameter maxStep = -0.001 s is out of range (allowed: "
+        "finite and >= 0)");
+    p = r.p;
     p.segments = 0;
     expectThrowWithMessage<connectors::ConnectorError>(
         [&] { MooringLine line(p); },
