@@ -15,6 +15,7 @@
 #define FMU_EXPORT_CONNECTORFMUMODEL_HPP
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "BodyInputs.hpp"
@@ -44,6 +45,7 @@ struct ConnectorWording {
 //- What one evaluation gives the outputs: the law's loads and diagnostics,
 //  then the values of the model's extra outputs in declaration order
 struct ConnectorOutputs {
+    //- Implicit: a model without extra outputs returns its law's result
     ConnectorOutputs(const connectors::ConnectorResult& result,
                      std::vector<double> extraValues = {})
         : loads(result), extra(std::move(extraValues))
