@@ -144,8 +144,9 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
         const Vector3& t = f.tangent[k];
         // mass mn (I - t t') + mt t t'; drag c |u| u of u = -v_n, -v_t:
         // -dF/dv = c (|u| P + u u'/|u|)
-        const Vector3 vt = v[k].dot(t) * t, vn = v[k] - vt;
-        const double un = vn.norm(), ut = vt.norm();
+        const double along = v[k].dot(t); // t is a unit vector or 0
+        const Vector3 vn = v[k] - along * t;
+        const double un = vn.norm(), ut = std::abs(along);
         Matrix3& b = J.diagonal[k - 1];
         b.diagonal().array() += mn + cn * un;
         b += (mt - mn - cn * un + 2.0 * ct * ut) * t * t.transpose();

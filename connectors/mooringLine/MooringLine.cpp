@@ -361,7 +361,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // reports its outputs), else a force evaluation; the same function of
     // the same numbers either way
     if (sameBits(lastEvaluated_.r, w.r0) && sameBits(lastEvaluated_.v, w.v0)) {
-        w.a0 = lastEvaluated_.a;
+        w.a0 = lastEvaluated_.f.a;
     } else {
         nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f);
         ++trapezoidStatistics_.rhsEvaluations;
@@ -535,16 +535,18 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
         throw std::invalid_argument("mooringLine: state does not fit the line");
     }
     const AxialGeometry g = axialGeometry(A, B, p.p_AoP_A, p.p_BoQ_B);
-    std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
+    // into lastEvaluated_ (storage kept from call to call)
+    std::vector<Vector3>& r = lastEvaluated_.r;
+    std::vector<Vector3>& v = lastEvaluated_.v;
+    r.resize(std::size_t(N + 1));
+    v.resize(std::size_t(N + 1));
     unpack(state.nodes, N, r, v);
     r[0] = attachment(B, p.p_BoQ_B);
     r[N] = attachment(A, p.p_AoP_A);
     v[0] = attachmentVelocity(B, p.p_BoQ_B);
     v[N] = attachmentVelocity(A, p.p_AoP_A);
-    const NodeForces f = nodeForces(p, weight_, r, v, r[0][2]);
-    lastEvaluated_.r = r;
-    lastEvaluated_.v = v;
-    lastEvaluated_.a = f.a;
+    NodeForces& f = lastEvaluated_.f;
+    nodeForces(p, weight_, r, v, r[0][2], f);
     const double l = p.length / N;
 
     MooringLineOutput out;

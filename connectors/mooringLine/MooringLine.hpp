@@ -175,11 +175,12 @@ private:
     Ends ends_;
     std::unique_ptr<CvodeBdf> integrator_; // with Integrator::cvode
     CvodeBdf::Statistics trapezoidStatistics_;
-    //- Node positions, velocities (ends included) and accelerations of the
-    //  last `evaluate`, which trapezoidStep takes as its start's when it
-    //  starts from exactly those positions and velocities
+    //- Node positions, velocities (ends included) and forces of the last
+    //  `evaluate`, whose accelerations trapezoidStep takes as its start's
+    //  when it starts from exactly those positions and velocities
     mutable struct {
-        std::vector<Vector3> r, v, a;
+        std::vector<Vector3> r, v;
+        NodeForces f;
     } lastEvaluated_;
     //- Storage of trapezoidStep, overwritten by every step
     struct Workspace {
