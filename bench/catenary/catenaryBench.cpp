@@ -79,7 +79,7 @@ void quasiStatic()
         CatenaryGuess guess {};
         for (const auto& [x, z] : path) {
             BodyKinematics A;
-            A.p_WBo_W = Vector3(x, 0.0, z);
+            A.p_WKo_W = Vector3(x, 0.0, z);
             const CatenaryOutput o = law.evaluate(
                 A, BodyKinematics(), guess.H > 0.0 ? &guess : nullptr, 11);
             guess = {o.solution.H, o.solution.V};
@@ -111,8 +111,8 @@ BodyKinematics fairlead(double t)
         = t < ramp ? 0.5 * pi / ramp * std::sin(pi * t / ramp) : 0.0;
     const double sx = 3.0 * std::sin(0.4 * t), sz = std::sin(0.8 * t);
     BodyKinematics A;
-    A.p_WBo_W = Vector3(80.0 + r * sx, 0.0, 40.0 + r * sz);
-    A.v_WBo_W = Vector3(dr * sx + r * 1.2 * std::cos(0.4 * t), 0.0,
+    A.p_WKo_W = Vector3(80.0 + r * sx, 0.0, 40.0 + r * sz);
+    A.v_WKo_W = Vector3(dr * sx + r * 1.2 * std::cos(0.4 * t), 0.0,
                         dr * sz + r * 0.8 * std::cos(0.8 * t));
     return A;
 }

@@ -110,16 +110,16 @@ int main(int argc, char** argv)
     p.restLength = 0.7;
     p.damping = 15.0;
     connectors::BodyKinematics A, B;
-    A.p_WBo_W = {0.2, -0.4, 1.1};
-    A.R_WB = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, -2, 0.5).normalized())
+    A.p_WKo_W = {0.2, -0.4, 1.1};
+    A.R_WK = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, -2, 0.5).normalized())
                  .toRotationMatrix();
-    A.v_WBo_W = {0.3, 0.1, -0.2};
-    A.w_WB_W = {0.05, -0.3, 0.2};
-    B.p_WBo_W = {1.9, 0.7, 0.4};
-    B.R_WB = Eigen::AngleAxisd(-1.3, Eigen::Vector3d(0.2, 1, 1).normalized())
+    A.v_WKo_W = {0.3, 0.1, -0.2};
+    A.w_WK_W = {0.05, -0.3, 0.2};
+    B.p_WKo_W = {1.9, 0.7, 0.4};
+    B.R_WK = Eigen::AngleAxisd(-1.3, Eigen::Vector3d(0.2, 1, 1).normalized())
                  .toRotationMatrix();
-    B.v_WBo_W = {-0.6, 0.4, 0.25};
-    B.w_WB_W = {-0.1, 0.2, 0.4};
+    B.v_WKo_W = {-0.6, 0.4, 0.25};
+    B.w_WK_W = {-0.1, 0.2, 0.4};
 
     fmi2CallbackFunctions callbacks {quietLogger, nullptr, nullptr, nullptr,
                                      nullptr};
@@ -144,14 +144,14 @@ int main(int argc, char** argv)
     // B...)
     std::vector<double> inputs;
     for (const connectors::BodyKinematics* k : {&A, &B}) {
-        inputs.insert(inputs.end(), k->p_WBo_W.data(), k->p_WBo_W.data() + 3);
+        inputs.insert(inputs.end(), k->p_WKo_W.data(), k->p_WKo_W.data() + 3);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
-                inputs.push_back(k->R_WB(i, j));
+                inputs.push_back(k->R_WK(i, j));
             }
         }
-        inputs.insert(inputs.end(), k->v_WBo_W.data(), k->v_WBo_W.data() + 3);
-        inputs.insert(inputs.end(), k->w_WB_W.data(), k->w_WB_W.data() + 3);
+        inputs.insert(inputs.end(), k->v_WKo_W.data(), k->v_WKo_W.data() + 3);
+        inputs.insert(inputs.end(), k->w_WK_W.data(), k->w_WK_W.data() + 3);
     }
     if (inputs.size() != in.size() || inputNames.front() != "A.r[1]") {
         std::fprintf(stderr, "fmuOverhead: unexpected input layout\n");
@@ -175,7 +175,7 @@ int main(int argc, char** argv)
     };
     const connectors::LinearSpring law(p);
     const auto lawCycle = [&](int i) {
-        B.p_WBo_W[0] = 1.9 + 1e-7 * i;
+        B.p_WKo_W[0] = 1.9 + 1e-7 * i;
         const connectors::ConnectorResult r = law.evaluate(A, B);
         checksum += r.A.f_W[0];
     };

@@ -81,9 +81,9 @@ BodyKinematics fairleadAt(const Case& c, double t)
         ? 0.5 * pi / c.period * std::sin(pi * t / c.period)
         : 0.0;
     BodyKinematics A;
-    A.p_WBo_W = c.line.fairlead
+    A.p_WKo_W = c.line.fairlead
         + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
-    A.v_WBo_W = Vector3(c.amplitude
+    A.v_WKo_W = Vector3(c.amplitude
                             * (dr * std::sin(w * t) + r * w * std::cos(w * t)),
                         0.0, 0.0);
     return A;
@@ -108,7 +108,7 @@ Result run(const Case& c, int N, double h, double tolerance = 0.0)
     }
     MooringLine line(p);
     BodyKinematics B;
-    B.p_WBo_W = c.line.anchor;
+    B.p_WKo_W = c.line.anchor;
     const int perPeriod = int(std::lround(c.period / h));
     MooringLineState s = line.initialState(fairleadAt(c, 0.0), B, 0.0);
     const auto start = Clock::now();

@@ -57,7 +57,7 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
 
     // Profile plane: origin Q, e_h horizontal towards P, z up
     const Vector3 p_QP_W = -g.p_PQ_W;
-    const Vector3 p_WQ_W = B.p_WBo_W + g.p_BoQ_W;
+    const Vector3 p_WQ_W = B.p_WKo_W + g.p_BoQ_W;
     const Vector3 zHat = Vector3::UnitZ();
     const Vector3 horizontal(p_QP_W[0], p_QP_W[1], 0.0);
     const double x = horizontal.norm();
@@ -71,8 +71,8 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     ConnectorResult& r = out.loads;
     r.A.f_W = -s.H * eH - s.V * zHat;
     r.B.f_W = s.HA * eH + s.VA * zHat;
-    r.A.m_Bo_W = g.p_AoP_W.cross(r.A.f_W);
-    r.B.m_Bo_W = g.p_BoQ_W.cross(r.B.f_W);
+    r.A.m_Ko_W = g.p_AoP_W.cross(r.A.f_W);
+    r.B.m_Ko_W = g.p_BoQ_W.cross(r.B.f_W);
     r.length = g.length;
     r.lengthRate = g.lengthRate;
     out.fairleadTension = std::hypot(s.H, s.V);

@@ -8,12 +8,12 @@ AxialGeometry axialGeometry(const BodyKinematics& A, const BodyKinematics& B,
                             const Vector3& p_AoP_A, const Vector3& p_BoQ_B)
 {
     AxialGeometry g;
-    g.p_AoP_W = A.R_WB * p_AoP_A;
-    g.p_BoQ_W = B.R_WB * p_BoQ_B;
-    g.p_PQ_W = (B.p_WBo_W + g.p_BoQ_W) - (A.p_WBo_W + g.p_AoP_W);
+    g.p_AoP_W = A.R_WK * p_AoP_A;
+    g.p_BoQ_W = B.R_WK * p_BoQ_B;
+    g.p_PQ_W = (B.p_WKo_W + g.p_BoQ_W) - (A.p_WKo_W + g.p_AoP_W);
 
-    const Vector3 v_WP_W = A.v_WBo_W + A.w_WB_W.cross(g.p_AoP_W);
-    const Vector3 v_WQ_W = B.v_WBo_W + B.w_WB_W.cross(g.p_BoQ_W);
+    const Vector3 v_WP_W = A.v_WKo_W + A.w_WK_W.cross(g.p_AoP_W);
+    const Vector3 v_WQ_W = B.v_WKo_W + B.w_WK_W.cross(g.p_BoQ_W);
     g.v_PQ_W = v_WQ_W - v_WP_W;
 
     g.length = g.p_PQ_W.norm();
@@ -29,9 +29,9 @@ void applyPointForce(const AxialGeometry& geometry, const Vector3& f_A_W,
                      ConnectorResult& result)
 {
     result.A.f_W = f_A_W;
-    result.A.m_Bo_W = geometry.p_AoP_W.cross(f_A_W);
+    result.A.m_Ko_W = geometry.p_AoP_W.cross(f_A_W);
     result.B.f_W = -f_A_W;
-    result.B.m_Bo_W = geometry.p_BoQ_W.cross(-f_A_W);
+    result.B.m_Ko_W = geometry.p_BoQ_W.cross(-f_A_W);
 }
 
 } // namespace connectors

@@ -75,20 +75,20 @@ void checkVector(const char* law, const char* body, const char* name,
 void requireFiniteInputs(const char* law, const char* body,
                          const BodyKinematics& kinematics)
 {
-    checkVector(law, body, "r", kinematics.p_WBo_W);
+    checkVector(law, body, "r", kinematics.p_WKo_W);
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-            if (!std::isfinite(kinematics.R_WB(i, j))) {
+            if (!std::isfinite(kinematics.R_WK(i, j))) {
                 throw InputError(law,
                                  std::string(body) + ".R["
                                      + std::to_string(i + 1) + ","
                                      + std::to_string(j + 1) + "]",
-                                 kinematics.R_WB(i, j));
+                                 kinematics.R_WK(i, j));
             }
         }
     }
-    checkVector(law, body, "v", kinematics.v_WBo_W);
-    checkVector(law, body, "omega", kinematics.w_WB_W);
+    checkVector(law, body, "v", kinematics.v_WKo_W);
+    checkVector(law, body, "omega", kinematics.w_WK_W);
 }
 
 } // namespace connectors

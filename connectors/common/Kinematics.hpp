@@ -4,7 +4,9 @@
 //   W      the global (inertial) frame and its origin,
 //   A, B   the body-fixed frames of the two bodies,
 //   Ao, Bo the reference points of A and B (origins of their frames),
-//   P      the attachment point on A, Q the attachment point on B.
+//   P      the attachment point on A, Q the attachment point on B,
+//   K, Ko  whichever body a BodyKinematics or BodyLoads describes (A or
+//          B) and its reference point.
 // p_XY_Z is the position of point Y from point X expressed in frame Z,
 // v_XY_Z a velocity, w_XY_Z an angular velocity, R_XY a rotation matrix
 // taking vectors in frame Y to frame X. Everything is in SI units.
@@ -20,22 +22,22 @@ using Matrix3 = Eigen::Matrix3d;
 
 //- Kinematics of one rigid body (FMU inputs r, R, v, omega)
 struct BodyKinematics {
-    //- Position of the body's reference point Bo from W, global frame [m]
-    Vector3 p_WBo_W = Vector3::Zero();
-    //- Orientation, body frame to global frame: x_W = p_WBo_W + R_WB x_B [-]
-    Matrix3 R_WB = Matrix3::Identity();
-    //- Velocity of the reference point Bo in W, global frame [m/s]
-    Vector3 v_WBo_W = Vector3::Zero();
+    //- Position of the body's reference point Ko from W, global frame [m]
+    Vector3 p_WKo_W = Vector3::Zero();
+    //- Orientation, body frame to global frame: x_W = p_WKo_W + R_WK x_K [-]
+    Matrix3 R_WK = Matrix3::Identity();
+    //- Velocity of the reference point Ko in W, global frame [m/s]
+    Vector3 v_WKo_W = Vector3::Zero();
     //- Angular velocity of the body in W, global frame [rad/s]
-    Vector3 w_WB_W = Vector3::Zero();
+    Vector3 w_WK_W = Vector3::Zero();
 };
 
 //- Load of the connector on one body (FMU outputs F, M)
 struct BodyLoads {
     //- Force on the body, global frame [N]
     Vector3 f_W = Vector3::Zero();
-    //- Moment on the body about its reference point Bo, global frame [N.m]
-    Vector3 m_Bo_W = Vector3::Zero();
+    //- Moment on the body about its reference point Ko, global frame [N.m]
+    Vector3 m_Ko_W = Vector3::Zero();
 };
 
 //- Everything a law returns: loads on both bodies and the diagnostics

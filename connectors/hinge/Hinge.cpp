@@ -119,19 +119,19 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
     const Vector3 half_W = 0.5 * g.p_PQ_W;
     const Vector3 p_AoM_W = g.p_AoP_W + half_W;
     const Vector3 p_BoM_W = g.p_BoQ_W - half_W;
-    const Vector3 v_M_W = (B.v_WBo_W + B.w_WB_W.cross(p_BoM_W))
-        - (A.v_WBo_W + A.w_WB_W.cross(p_AoM_W));
+    const Vector3 v_M_W = (B.v_WKo_W + B.w_WK_W.cross(p_BoM_W))
+        - (A.v_WKo_W + A.w_WK_W.cross(p_AoM_W));
     const Vector3 f_A_W = p.stiffness * g.p_PQ_W + p.damping * v_M_W;
     r.A.f_W = f_A_W;
-    r.A.m_Bo_W = p_AoM_W.cross(f_A_W);
+    r.A.m_Ko_W = p_AoM_W.cross(f_A_W);
     r.B.f_W = -f_A_W;
-    r.B.m_Bo_W = p_BoM_W.cross(-f_A_W);
+    r.B.m_Ko_W = p_BoM_W.cross(-f_A_W);
 
     // Alignment: turns a_B towards a_A about n = (a_B x a_A)/|a_B x a_A|.
-    const Vector3 a_A_W = A.R_WB * axis_A_;
-    const Vector3 a_B_W = B.R_WB * axis_B_;
-    const Vector3 e_A_W = A.R_WB * ref_A_;
-    const Vector3 e_B_W = B.R_WB * ref_B_;
+    const Vector3 a_A_W = A.R_WK * axis_A_;
+    const Vector3 a_B_W = B.R_WK * axis_B_;
+    const Vector3 e_A_W = A.R_WK * ref_A_;
+    const Vector3 e_B_W = B.R_WK * ref_B_;
     const Vector3 u_W = a_B_W.cross(a_A_W);
     const double sine = u_W.norm();
     const double cosine = a_A_W.dot(a_B_W);
@@ -146,7 +146,7 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
         const double ratio = sine > 0.0 ? theta / sine : 1.0;
         align_B_W = p.rotationalStiffness * ratio * u_W;
     }
-    const Vector3 w_AB_W = B.w_WB_W - A.w_WB_W;
+    const Vector3 w_AB_W = B.w_WK_W - A.w_WK_W;
     const double angleRate = w_AB_W.dot(a_A_W);
     const Vector3 wPerp_W = w_AB_W - angleRate * a_A_W;
 
@@ -159,8 +159,8 @@ HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
 
     const Vector3 m_B_W
         = align_B_W - p.rotationalDamping * wPerp_W - tau * a_A_W;
-    r.B.m_Bo_W += m_B_W;
-    r.A.m_Bo_W -= m_B_W;
+    r.B.m_Ko_W += m_B_W;
+    r.A.m_Ko_W -= m_B_W;
 
     r.length = g.length;
     r.lengthRate = g.lengthRate;

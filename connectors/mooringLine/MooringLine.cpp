@@ -216,13 +216,13 @@ MooringLine::~MooringLine() = default;
 Vector3 MooringLine::attachment(const BodyKinematics& body,
                                 const Vector3& p) const
 {
-    return body.p_WBo_W + body.R_WB * p;
+    return body.p_WKo_W + body.R_WK * p;
 }
 
 Vector3 MooringLine::attachmentVelocity(const BodyKinematics& body,
                                         const Vector3& p) const
 {
-    return body.v_WBo_W + body.w_WB_W.cross(body.R_WB * p);
+    return body.v_WKo_W + body.w_WK_W.cross(body.R_WK * p);
 }
 
 MooringLineState MooringLine::initialState(const BodyKinematics& A,
@@ -554,8 +554,8 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     res.A.f_W = -f.T[N - 1] * f.q[N - 1] - 0.5 * weight_ * l * zHat;
     res.B.f_W
         = f.T[0] * f.q[0] - (p.seabedContact ? 0.0 : 0.5 * weight_ * l) * zHat;
-    res.A.m_Bo_W = g.p_AoP_W.cross(res.A.f_W);
-    res.B.m_Bo_W = g.p_BoQ_W.cross(res.B.f_W);
+    res.A.m_Ko_W = g.p_AoP_W.cross(res.A.f_W);
+    res.B.m_Ko_W = g.p_BoQ_W.cross(res.B.f_W);
     res.length = g.length;
     res.lengthRate = g.lengthRate;
     out.fairleadTension = res.A.f_W.norm();

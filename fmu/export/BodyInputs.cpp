@@ -32,14 +32,14 @@ connectors::BodyKinematics bodyKinematics(const double* values,
                                           const BodyInputs& body)
 {
     connectors::BodyKinematics k;
-    k.p_WBo_W = blockVector3(values, body.r);
+    k.p_WKo_W = blockVector3(values, body.r);
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-            k.R_WB(i, j) = values[body.R.first + 3 * i + j];
+            k.R_WK(i, j) = values[body.R.first + 3 * i + j];
         }
     }
-    k.v_WBo_W = blockVector3(values, body.v);
-    k.w_WB_W = blockVector3(values, body.omega);
+    k.v_WKo_W = blockVector3(values, body.v);
+    k.w_WK_W = blockVector3(values, body.omega);
     return k;
 }
 

@@ -135,9 +135,9 @@ void ConnectorFmuModel::writeOutputs(double* values,
     }
     const connectors::ConnectorResult& r = outputs.loads;
     const double interface[interfaceOutputCount]
-        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-           r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
-           r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Ko_W[0],
+           r.A.m_Ko_W[1],    r.A.m_Ko_W[2], r.B.f_W[0],    r.B.f_W[1],
+           r.B.f_W[2],       r.B.m_Ko_W[0], r.B.m_Ko_W[1], r.B.m_Ko_W[2],
            r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
            r.dissipatedPower};
     const auto value = [&](std::size_t i) {

@@ -38,21 +38,21 @@ inline HingeParameters genericHinge()
 inline BodyKinematics hingedBody(const Hinge& hinge, const BodyKinematics& A,
                                  double angle, double angleRate)
 {
-    const Vector3 a_W = A.R_WB * hinge.axisA();
-    const Vector3 e_W = rotation(angle, a_W) * (A.R_WB * hinge.referenceA());
+    const Vector3 a_W = A.R_WK * hinge.axisA();
+    const Vector3 e_W = rotation(angle, a_W) * (A.R_WK * hinge.referenceA());
     Matrix3 target, body;
     target << e_W, a_W.cross(e_W), a_W;
     body << hinge.referenceB(), hinge.axisB().cross(hinge.referenceB()),
         hinge.axisB();
     BodyKinematics B;
-    B.R_WB = target * body.transpose();
-    const Vector3 lever_A_W = A.R_WB * hinge.parameters().p_AoP_A;
-    const Vector3 lever_B_W = B.R_WB * hinge.parameters().p_BoQ_B;
-    const Vector3 p_WP = A.p_WBo_W + lever_A_W;
-    B.p_WBo_W = p_WP - lever_B_W;
-    B.w_WB_W = A.w_WB_W + angleRate * a_W;
-    const Vector3 v_WP = A.v_WBo_W + A.w_WB_W.cross(lever_A_W);
-    B.v_WBo_W = v_WP - B.w_WB_W.cross(lever_B_W);
+    B.R_WK = target * body.transpose();
+    const Vector3 lever_A_W = A.R_WK * hinge.parameters().p_AoP_A;
+    const Vector3 lever_B_W = B.R_WK * hinge.parameters().p_BoQ_B;
+    const Vector3 p_WP = A.p_WKo_W + lever_A_W;
+    B.p_WKo_W = p_WP - lever_B_W;
+    B.w_WK_W = A.w_WK_W + angleRate * a_W;
+    const Vector3 v_WP = A.v_WKo_W + A.w_WK_W.cross(lever_A_W);
+    B.v_WKo_W = v_WP - B.w_WK_W.cross(lever_B_W);
     return B;
 }
 
@@ -60,10 +60,10 @@ inline BodyKinematics hingedBody(const Hinge& hinge, const BodyKinematics& A,
 inline BodyKinematics advanced(const BodyKinematics& k, double dt)
 {
     BodyKinematics m = k;
-    m.p_WBo_W += dt * k.v_WBo_W;
-    const double w = k.w_WB_W.norm();
+    m.p_WKo_W += dt * k.v_WKo_W;
+    const double w = k.w_WK_W.norm();
     if (w > 0.0) {
-        m.R_WB = rotation(w * dt, k.w_WB_W) * k.R_WB;
+        m.R_WK = rotation(w * dt, k.w_WK_W) * k.R_WK;
     }
     return m;
 }

@@ -28,10 +28,10 @@ inline BodyKinematics body(const Vector3& r,
                            const Vector3& omega = Vector3::Zero())
 {
     BodyKinematics k;
-    k.p_WBo_W = r;
-    k.R_WB = R;
-    k.v_WBo_W = v;
-    k.w_WB_W = omega;
+    k.p_WKo_W = r;
+    k.R_WK = R;
+    k.v_WKo_W = v;
+    k.w_WK_W = omega;
     return k;
 }
 
@@ -50,8 +50,8 @@ inline BodyKinematics randomBody(std::mt19937& rng)
 inline double powerIntoBodies(const ConnectorResult& r, const BodyKinematics& A,
                               const BodyKinematics& B)
 {
-    return r.A.f_W.dot(A.v_WBo_W) + r.A.m_Bo_W.dot(A.w_WB_W)
-        + r.B.f_W.dot(B.v_WBo_W) + r.B.m_Bo_W.dot(B.w_WB_W);
+    return r.A.f_W.dot(A.v_WKo_W) + r.A.m_Ko_W.dot(A.w_WK_W)
+        + r.B.f_W.dot(B.v_WKo_W) + r.B.m_Ko_W.dot(B.w_WK_W);
 }
 
 //- Total moment of the loads on A and B about the global origin [N.m]
@@ -59,8 +59,8 @@ inline Vector3 totalMomentAboutOrigin(const ConnectorResult& r,
                                       const BodyKinematics& A,
                                       const BodyKinematics& B)
 {
-    return A.p_WBo_W.cross(r.A.f_W) + r.A.m_Bo_W + B.p_WBo_W.cross(r.B.f_W)
-        + r.B.m_Bo_W;
+    return A.p_WKo_W.cross(r.A.f_W) + r.A.m_Ko_W + B.p_WKo_W.cross(r.B.f_W)
+        + r.B.m_Ko_W;
 }
 
 inline void expectVectorNear(const Vector3& actual, const Vector3& expected,
@@ -73,8 +73,8 @@ inline void expectVectorNear(const Vector3& actual, const Vector3& expected,
 
 inline void expectAllFinite(const ConnectorResult& r)
 {
-    EXPECT_TRUE(r.A.f_W.allFinite() && r.A.m_Bo_W.allFinite()
-                && r.B.f_W.allFinite() && r.B.m_Bo_W.allFinite());
+    EXPECT_TRUE(r.A.f_W.allFinite() && r.A.m_Ko_W.allFinite()
+                && r.B.f_W.allFinite() && r.B.m_Ko_W.allFinite());
     EXPECT_TRUE(std::isfinite(r.length) && std::isfinite(r.lengthRate)
                 && std::isfinite(r.tension) && std::isfinite(r.potentialEnergy)
                 && std::isfinite(r.dissipatedPower));

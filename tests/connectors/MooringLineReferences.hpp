@@ -98,16 +98,16 @@ inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
     const auto fairlead = [&](double t) {
         const double u = std::min(t / pull, 1.0);
         BodyKinematics A;
-        A.p_WBo_W = line.fairlead
+        A.p_WKo_W = line.fairlead
             + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
-        A.v_WBo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
+        A.v_WKo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
                                      : 0.0,
                             0.0, 0.0);
         return A;
     };
     MooringLine law(p);
     BodyKinematics B;
-    B.p_WBo_W = line.anchor;
+    B.p_WKo_W = line.anchor;
     const double l = p.length / N;
     const double area = 0.25 * pi * p.diameter * p.diameter;
     const double mn
@@ -143,7 +143,7 @@ inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
         const BodyKinematics A = fairlead(k * h);
         law.advance(s, A, B, h);
         out = law.evaluate(s, A, B, 0);
-        const double newPower = -out.loads.A.f_W.dot(A.v_WBo_W);
+        const double newPower = -out.loads.A.f_W.dot(A.v_WKo_W);
         work += 0.5 * h * (power + newPower);
         result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
         dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);

@@ -42,15 +42,15 @@ TEST(CatenaryLaw, AnchoredLineLoadsAndBalance)
     const double wSuspended = 700.0 * (100.0 - s.groundedLength);
     expectVectorNear(sum, -wSuspended * zHat, 1e-9 * out.fairleadTension);
     // The fairlead force points from P towards the anchor, horizontally
-    const Vector3 P = A.p_WBo_W + A.R_WB * Vector3(2, -1, -3);
+    const Vector3 P = A.p_WKo_W + A.R_WK * Vector3(2, -1, -3);
     const Vector3 Q(0.5, 0.2, 0.0);
     Vector3 toAnchor = Q - P;
     toAnchor[2] = 0;
     EXPECT_NEAR(out.loads.A.f_W.head<2>().normalized().dot(
                     toAnchor.head<2>().normalized()),
                 1.0, 1e-12);
-    expectVectorNear(out.loads.A.m_Bo_W,
-                     (A.R_WB * Vector3(2, -1, -3)).cross(out.loads.A.f_W),
+    expectVectorNear(out.loads.A.m_Ko_W,
+                     (A.R_WK * Vector3(2, -1, -3)).cross(out.loads.A.f_W),
                      1e-9 * out.fairleadTension);
     EXPECT_NEAR(out.fairleadTension, std::hypot(s.H, s.V),
                 1e-9 * out.fairleadTension);
@@ -105,16 +105,16 @@ TEST(CatenaryLaw, ForceIsMinusTheEnergyGradient)
         for (int i = 0; i < 3; ++i) {
             const double h = 1e-4;
             BodyKinematics plus = A, minus = A;
-            plus.p_WBo_W[i] += h;
-            minus.p_WBo_W[i] -= h;
+            plus.p_WKo_W[i] += h;
+            minus.p_WKo_W[i] -= h;
             const double dE = (law.evaluate(plus, B).potentialEnergy
                                - law.evaluate(minus, B).potentialEnergy)
                 / (2 * h);
             EXPECT_NEAR(-dE, out.loads.A.f_W[i], 1e-4 * out.fairleadTension)
                 << (seabed ? "seabed " : "free ") << i;
             BodyKinematics bp = B, bm = B;
-            bp.p_WBo_W[i] += h;
-            bm.p_WBo_W[i] -= h;
+            bp.p_WKo_W[i] += h;
+            bm.p_WKo_W[i] -= h;
             if (seabed && i == 2) {
                 continue; // the seabed moves with the anchor
             }
@@ -160,7 +160,7 @@ TEST(CatenaryLaw, ParametersAreChecked)
     EXPECT_THROW(Catenary {p}, connectors::ParameterError);
     const Catenary law(mooring(true));
     BodyKinematics A = body(Vector3(80, 0, 45));
-    A.v_WBo_W[1] = std::nan("");
+    A.v_WKo_W[1] = std::nan("");
     expectThrowWithMessage<connectors::InputError>(
         [&] { law.evaluate(A, BodyKinematics()); },
         "catenary: input A.v[2] = nan is not finite");

@@ -64,8 +64,8 @@ TEST(HingeLimits, OppositeAxesTurnBackAboutTheReferenceOfA)
     const HingeResult h = hinge.evaluate(A, B, 0.0);
     // sin(pi) = 1.2e-16 in the rotation: theta = pi to ~1e-16
     EXPECT_NEAR(h.misalignment, EIGEN_PI, 1e-15);
-    expectVectorNear(h.loads.B.m_Bo_W, Vector3(40 * EIGEN_PI, 0, 0), 1e-12);
-    expectVectorNear(h.loads.A.m_Bo_W, -h.loads.B.m_Bo_W, 0.0);
+    expectVectorNear(h.loads.B.m_Ko_W, Vector3(40 * EIGEN_PI, 0, 0), 1e-12);
+    expectVectorNear(h.loads.A.m_Ko_W, -h.loads.B.m_Ko_W, 0.0);
     EXPECT_NEAR(h.loads.potentialEnergy, 20 * EIGEN_PI * EIGEN_PI, 1e-12);
     expectAllFinite(h.loads);
     EXPECT_TRUE(std::isfinite(h.angle));
@@ -76,8 +76,8 @@ TEST(HingeLimits, OppositeAxesTurnBackAboutTheReferenceOfA)
         = body(Vector3::Zero(), rotation(EIGEN_PI - 1e-5, Vector3::UnitY()));
     const HingeResult hn = hinge.evaluate(A, near, 0.0);
     EXPECT_NEAR(hn.misalignment, EIGEN_PI - 1e-5, 1e-12);
-    EXPECT_NEAR(hn.loads.B.m_Bo_W.norm(), 40 * (EIGEN_PI - 1e-5), 1e-10);
-    expectVectorNear(hn.loads.B.m_Bo_W.normalized(), Vector3(0, -1, 0), 1e-9);
+    EXPECT_NEAR(hn.loads.B.m_Ko_W.norm(), 40 * (EIGEN_PI - 1e-5), 1e-10);
+    expectVectorNear(hn.loads.B.m_Ko_W.normalized(), Vector3(0, -1, 0), 1e-9);
 }
 
 TEST(HingeLimits, CoincidentBodiesAndZeroStiffness)
@@ -94,7 +94,7 @@ TEST(HingeLimits, CoincidentBodiesAndZeroStiffness)
         const HingeResult r = h.evaluate(A, A, 0.0);
         expectAllFinite(r.loads);
         EXPECT_EQ(r.loads.A.f_W, Vector3::Zero());
-        expectVectorNear(r.loads.A.m_Bo_W, Vector3::Zero(), 0.0);
+        expectVectorNear(r.loads.A.m_Ko_W, Vector3::Zero(), 0.0);
         EXPECT_EQ(r.gap, 0.0);
         EXPECT_EQ(r.loads.lengthRate, 0.0);
         EXPECT_EQ(r.loads.tension, 0.0);
@@ -105,8 +105,8 @@ TEST(HingeLimits, CoincidentBodiesAndZeroStiffness)
     std::mt19937 rng(11);
     const HingeResult r = hinge.evaluate(randomBody(rng), randomBody(rng), 0.0);
     EXPECT_EQ(r.loads.A.f_W, Vector3::Zero());
-    EXPECT_EQ(r.loads.A.m_Bo_W, Vector3::Zero());
-    EXPECT_EQ(r.loads.B.m_Bo_W, Vector3::Zero());
+    EXPECT_EQ(r.loads.A.m_Ko_W, Vector3::Zero());
+    EXPECT_EQ(r.loads.B.m_Ko_W, Vector3::Zero());
     EXPECT_EQ(r.loads.potentialEnergy, 0.0);
     EXPECT_GT(r.gap, 0.0);
 }
@@ -185,7 +185,7 @@ TEST(HingeLimits, NonFiniteInputIsNamed)
 {
     const Hinge hinge(genericHinge());
     BodyKinematics B = body(Vector3::Zero());
-    B.w_WB_W[2] = std::numeric_limits<double>::infinity();
+    B.w_WK_W[2] = std::numeric_limits<double>::infinity();
     expectThrowWithMessage<InputError>(
         [&] { hinge.evaluate(body(Vector3::Zero()), B, 0.0); },
         "hinge: input B.omega[3] = inf is not finite");

@@ -36,8 +36,8 @@ TEST(Hinge, NoLoadWhenTheConstraintHoldsAtAnyAngle)
         // a_B - a_A are round-off, ~1e-15; times k = 800 N/m, k_r = 300
         // N.m/rad and lever arms < 1 m: loads ~1e-12. 1e-10 leaves 100x.
         expectVectorNear(h.loads.A.f_W, Vector3::Zero(), 1e-10);
-        expectVectorNear(h.loads.A.m_Bo_W, Vector3::Zero(), 1e-10);
-        expectVectorNear(h.loads.B.m_Bo_W, Vector3::Zero(), 1e-10);
+        expectVectorNear(h.loads.A.m_Ko_W, Vector3::Zero(), 1e-10);
+        expectVectorNear(h.loads.B.m_Ko_W, Vector3::Zero(), 1e-10);
         EXPECT_NEAR(h.angle, angle, 1e-12) << angle;
         EXPECT_NEAR(h.angleRate, 1.7, 1e-12);
         EXPECT_NEAR(h.gap, 0.0, 1e-14);
@@ -59,7 +59,7 @@ TEST(Hinge, GapGivesASpringDamperForce)
     // 0.01 is not exact in binary; k 0.01 = 10 to ~2e-15.
     expectVectorNear(h.loads.A.f_W, Vector3(6, 0, 0), 1e-13);
     expectVectorNear(h.loads.B.f_W, Vector3(-6, 0, 0), 1e-13);
-    expectVectorNear(h.loads.A.m_Bo_W, Vector3::Zero(), 0.0);
+    expectVectorNear(h.loads.A.m_Ko_W, Vector3::Zero(), 0.0);
     EXPECT_NEAR(h.loads.tension, 6.0, 1e-13);
     EXPECT_NEAR(h.gap, 0.01, 1e-17);
     EXPECT_NEAR(h.loads.lengthRate, -0.2, 1e-16);
@@ -77,12 +77,12 @@ TEST(Hinge, MisalignmentGivesAnAligningMoment)
         body(Vector3::Zero(), rotation(0.2, Vector3::UnitX())), 0.0);
     // Tolerance: rotation matrix entries and atan2 to a few ulps of 1.
     EXPECT_NEAR(h.misalignment, 0.2, 1e-15);
-    expectVectorNear(h.loads.B.m_Bo_W, Vector3(-10, 0, 0), 1e-13);
-    expectVectorNear(h.loads.A.m_Bo_W, Vector3(10, 0, 0), 1e-13);
+    expectVectorNear(h.loads.B.m_Ko_W, Vector3(-10, 0, 0), 1e-13);
+    expectVectorNear(h.loads.A.m_Ko_W, Vector3(10, 0, 0), 1e-13);
     expectVectorNear(h.loads.A.f_W, Vector3::Zero(), 0.0);
     EXPECT_NEAR(h.loads.potentialEnergy, 0.5 * 50.0 * 0.04, 1e-14);
     // Static misalignment = moment / rotationalStiffness
-    EXPECT_NEAR(h.misalignment, h.loads.B.m_Bo_W.norm() / 50.0, 1e-15);
+    EXPECT_NEAR(h.misalignment, h.loads.B.m_Ko_W.norm() / 50.0, 1e-15);
 }
 
 TEST(Hinge, RotationalDampingActsAcrossTheAxisOnly)
@@ -94,8 +94,8 @@ TEST(Hinge, RotationalDampingActsAcrossTheAxisOnly)
     const BodyKinematics B = body(Vector3::Zero(), Matrix3::Identity(),
                                   Vector3::Zero(), Vector3(1, 0, 3));
     const HingeResult h = hinge.evaluate(A, B, 0.0);
-    EXPECT_EQ(h.loads.B.m_Bo_W, Vector3(-2, 0, 0));
-    EXPECT_EQ(h.loads.A.m_Bo_W, Vector3(2, 0, 0));
+    EXPECT_EQ(h.loads.B.m_Ko_W, Vector3(-2, 0, 0));
+    EXPECT_EQ(h.loads.A.m_Ko_W, Vector3(2, 0, 0));
     EXPECT_EQ(h.angleRate, 3.0);
     EXPECT_EQ(h.loads.dissipatedPower, 2.0);
 }
@@ -119,8 +119,8 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     EXPECT_NEAR(h.angle, 0.3, 1e-15);
     EXPECT_NEAR(h.ptoTorque, 10.0, 1e-14);
     EXPECT_NEAR(h.ptoPower, 20.0, 1e-13);
-    expectVectorNear(h.loads.B.m_Bo_W, Vector3(0, 0, -10), 1e-14);
-    expectVectorNear(h.loads.A.m_Bo_W, Vector3(0, 0, 10), 1e-14);
+    expectVectorNear(h.loads.B.m_Ko_W, Vector3(0, 0, -10), 1e-14);
+    expectVectorNear(h.loads.A.m_Ko_W, Vector3(0, 0, 10), 1e-14);
     EXPECT_NEAR(h.loads.potentialEnergy, 0.5 * 10.0 * 0.04, 1e-15);
     EXPECT_NEAR(h.loads.dissipatedPower, 4.0 * 4.0, 1e-15);
     // Power into the bodies from the PTO is minus the absorbed power.
@@ -128,7 +128,7 @@ TEST(Hinge, PtoTorqueAndPowerSigns)
     // Turning the other way at the same angle: the damper still absorbs,
     // the spring returns energy: tau = 2 - 8 = -6, ptoPower = 12 W > 0.
     const BodyKinematics Bback
-        = body(Vector3::Zero(), B.R_WB, Vector3::Zero(), Vector3(0, 0, -2));
+        = body(Vector3::Zero(), B.R_WK, Vector3::Zero(), Vector3(0, 0, -2));
     EXPECT_NEAR(hinge.evaluate(A, Bback, 0.0).ptoPower, 12.0, 1e-13);
 }
 
@@ -211,7 +211,7 @@ TEST(Hinge, SpringsAreConservative)
             << i;
 
         BodyKinematics Bh = hingedBody(withPto, A, 1.0 + 0.2 * i, -0.8);
-        Bh.p_WBo_W += Vector3(0.01, -0.02, 0.005);
+        Bh.p_WKo_W += Vector3(0.01, -0.02, 0.005);
         const HingeResult hp = withPto.evaluate(A, Bh, 0.0);
         const double rate = energyRate(withPto, A, Bh, hp.angle);
         EXPECT_NEAR(powerIntoBodies(hp.loads, A, Bh),

@@ -50,8 +50,8 @@ TEST(LinearDamper, AnalyticRotatedBodies)
     EXPECT_NEAR(r.tension, 6.0, tol);
     expectVectorNear(r.A.f_W, Vector3(0, 3.6, 4.8), tol);
     expectVectorNear(r.B.f_W, Vector3(0, -3.6, -4.8), tol);
-    expectVectorNear(r.A.m_Bo_W, Vector3(4.8, 0, 0), tol);
-    expectVectorNear(r.B.m_Bo_W, Vector3::Zero(), tol);
+    expectVectorNear(r.A.m_Ko_W, Vector3(4.8, 0, 0), tol);
+    expectVectorNear(r.B.m_Ko_W, Vector3::Zero(), tol);
     EXPECT_NEAR(r.dissipatedPower, 6.0, tol);
     EXPECT_EQ(r.potentialEnergy, 0.0);
 }
@@ -119,7 +119,7 @@ TEST(LinearDamperErrors, Messages)
         "finite)");
     const LinearDamper damper(damperParameters(1.0));
     BodyKinematics B = body(Vector3(1, 0, 0));
-    B.v_WBo_W[1] = std::numeric_limits<double>::quiet_NaN();
+    B.v_WKo_W[1] = std::numeric_limits<double>::quiet_NaN();
     expectThrowWithMessage<InputError>(
         [&] { damper.evaluate(body(Vector3::Zero()), B); },
         "linearDamper: input B.v[2] = nan is not finite");

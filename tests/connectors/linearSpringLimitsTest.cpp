@@ -81,17 +81,17 @@ TEST(LinearSpringErrors, NonFiniteInputs)
     const LinearSpring spring(valid());
     BodyKinematics A = body(Vector3::Zero());
     BodyKinematics B = body(Vector3(2, 0, 0));
-    A.R_WB(1, 2) = nan;
+    A.R_WK(1, 2) = nan;
     expectThrowWithMessage<InputError>(
         [&] { spring.evaluate(A, B); },
         "linearSpring: input A.R[2,3] = nan is not finite");
     A = body(Vector3::Zero());
-    B.w_WB_W[0] = -inf;
+    B.w_WK_W[0] = -inf;
     expectThrowWithMessage<InputError>(
         [&] { spring.evaluate(A, B); },
         "linearSpring: input B.omega[1] = -inf is not finite");
     B = body(Vector3(2, 0, 0));
-    B.p_WBo_W[2] = nan;
+    B.p_WKo_W[2] = nan;
     expectThrowWithMessage<InputError>(
         [&] { spring.evaluate(A, B); },
         "linearSpring: input B.r[3] = nan is not finite");

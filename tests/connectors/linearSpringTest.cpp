@@ -33,7 +33,7 @@ TEST(LinearSpring, ZeroForceAtRestLength)
         200.0, 1.5, 0.0, Vector3(0.1, -0.2, 0.3), Vector3(-0.4, 0.0, 0.2)));
     const BodyKinematics A
         = body(Vector3(1, 2, 3), rotation(0.7, Vector3(1, 1, 0)));
-    const Vector3 p_WP = A.p_WBo_W + A.R_WB * spring.parameters().p_AoP_A;
+    const Vector3 p_WP = A.p_WKo_W + A.R_WK * spring.parameters().p_AoP_A;
     const Vector3 e = Vector3(2, -1, 2) / 3.0;
     const Matrix3 R_B = rotation(-1.1, Vector3(0, 1, 1));
     const Vector3 p_WQ = p_WP + 1.5 * e;
@@ -46,7 +46,7 @@ TEST(LinearSpring, ZeroForceAtRestLength)
     EXPECT_NEAR(r.length, 1.5, 1e-14);
     expectVectorNear(r.A.f_W, Vector3::Zero(), 1e-11);
     expectVectorNear(r.B.f_W, Vector3::Zero(), 1e-11);
-    expectVectorNear(r.A.m_Bo_W, Vector3::Zero(), 1e-11);
+    expectVectorNear(r.A.m_Ko_W, Vector3::Zero(), 1e-11);
     EXPECT_NEAR(r.tension, 0.0, 1e-11);
     EXPECT_NEAR(r.potentialEnergy, 0.0, 1e-24);
 }
@@ -60,7 +60,7 @@ TEST(LinearSpring, StretchedAlongX)
         = spring.evaluate(body(Vector3::Zero()), body(Vector3(2, 0, 0)));
     EXPECT_EQ(r.A.f_W, Vector3(50, 0, 0));
     EXPECT_EQ(r.B.f_W, Vector3(-50, 0, 0));
-    EXPECT_EQ(r.A.m_Bo_W, Vector3::Zero());
+    EXPECT_EQ(r.A.m_Ko_W, Vector3::Zero());
     EXPECT_EQ(r.tension, 50.0);
     EXPECT_EQ(r.length, 2.0);
     EXPECT_EQ(r.potentialEnergy, 12.5);
@@ -90,8 +90,8 @@ TEST(LinearSpring, RotatedBodiesWithOffsetAttachments)
     EXPECT_NEAR(r.tension, 20.0, tol);
     expectVectorNear(r.A.f_W, Vector3(0, 12, 16), tol);
     expectVectorNear(r.B.f_W, Vector3(0, -12, -16), tol);
-    expectVectorNear(r.A.m_Bo_W, Vector3(16, 0, 0), tol);
-    expectVectorNear(r.B.m_Bo_W, Vector3(-12, 0, 0), tol);
+    expectVectorNear(r.A.m_Ko_W, Vector3(16, 0, 0), tol);
+    expectVectorNear(r.B.m_Ko_W, Vector3(-12, 0, 0), tol);
     EXPECT_NEAR(r.potentialEnergy, 20.0, tol);
 }
 
@@ -113,7 +113,7 @@ TEST(LinearSpring, DampingUsesTheVelocityOfTheAttachmentPoints)
     EXPECT_EQ(r.lengthRate, 3.0);
     EXPECT_EQ(r.tension, 32.0);
     EXPECT_EQ(r.A.f_W, Vector3(32, 0, 0));
-    EXPECT_EQ(r.A.m_Bo_W, Vector3(0, 0, -32));
+    EXPECT_EQ(r.A.m_Ko_W, Vector3(0, 0, -32));
     EXPECT_EQ(r.dissipatedPower, 36.0);
     EXPECT_EQ(r.potentialEnergy, 20.0); // 10/2 * (3 - 1)^2
 }

@@ -196,17 +196,17 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
         MooringLineState s = line.initialState(fairlead, anchor, 0.0);
         BodyKinematics moving = fairlead;
         for (int step = 0; step < 5; ++step) {
-            moving.p_WBo_W[0] += 0.05;
+            moving.p_WKo_W[0] += 0.05;
             line.advance(s, moving, anchor, 0.1);
         }
         // uninterrupted: two more steps
         MooringLineState straight = s;
         const MooringLineState saved = s;
         BodyKinematics next = moving;
-        next.p_WBo_W[2] += 0.1;
+        next.p_WKo_W[2] += 0.1;
         line.advance(straight, next, anchor, 0.1);
         const std::vector<double> afterOne = straight.serialize();
-        next.p_WBo_W[2] += 0.1;
+        next.p_WKo_W[2] += 0.1;
         line.advance(straight, next, anchor, 0.1);
         // restored: an unrelated step in between, then the same two steps
         MooringLineState other = saved;
@@ -214,10 +214,10 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
         MooringLineState restored = MooringLineState::deserialize(
             saved.serialize(), line.parameters().segments);
         next = moving;
-        next.p_WBo_W[2] += 0.1;
+        next.p_WKo_W[2] += 0.1;
         line.advance(restored, next, anchor, 0.1);
         EXPECT_EQ(restored.serialize(), afterOne) << cvode; // bit for bit
-        next.p_WBo_W[2] += 0.1;
+        next.p_WKo_W[2] += 0.1;
         line.advance(restored, next, anchor, 0.1);
         EXPECT_EQ(restored.serialize(), straight.serialize()) << cvode;
         const auto a = line.evaluate(restored, next, anchor, 11);
@@ -229,7 +229,7 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
         MooringLineState again = MooringLineState::deserialize(
             saved.serialize(), line.parameters().segments);
         next = moving;
-        next.p_WBo_W[2] += 0.1;
+        next.p_WKo_W[2] += 0.1;
         fresh.advance(again, next, anchor, 0.1);
         EXPECT_EQ(again.serialize(), afterOne) << cvode;
     }
@@ -247,7 +247,7 @@ TEST(MooringLine, LoadsBetweenStepsDoNotChangeTheSteps)
     MooringLineState b = a;
     for (int step = 1; step <= 20; ++step) {
         const BodyKinematics A = body(
-            fairlead.p_WBo_W
+            fairlead.p_WKo_W
             + Vector3(0.3 * std::sin(0.5 * step), 0.0, 0.1 * std::cos(step)));
         quiet.advance(a, A, anchor, 0.1);
         reporting.advance(b, A, anchor, 0.1);
@@ -314,7 +314,7 @@ TEST(MooringLine, EnergyBalance)
         MooringLineState s = line.initialState(fairleadAt(0.0), B, 0.0);
         auto out = line.evaluate(s, fairleadAt(0.0), B, 0);
         const double energy0 = out.loads.potentialEnergy + kinetic(s);
-        double power = -out.loads.A.f_W.dot(fairleadAt(0.0).v_WBo_W);
+        double power = -out.loads.A.f_W.dot(fairleadAt(0.0).v_WKo_W);
         double dissipation = out.loads.dissipatedPower;
         double work = 0.0, dissipated = 0.0, throughput = 0.0;
         const double h = 0.01;
@@ -322,7 +322,7 @@ TEST(MooringLine, EnergyBalance)
             const BodyKinematics A = fairleadAt(k * h);
             line.advance(s, A, B, h);
             out = line.evaluate(s, A, B, 0);
-            const double newPower = -out.loads.A.f_W.dot(A.v_WBo_W);
+            const double newPower = -out.loads.A.f_W.dot(A.v_WKo_W);
             work += 0.5 * h * (power + newPower); // trapezoid
             throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
             dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);
@@ -370,7 +370,7 @@ TEST(MooringLine, LoadsAndShapeAtTheStart)
     MooringLine line(chain(10));
     const MooringLineState s = line.initialState(fairlead, anchor, 0.0);
     const auto out = line.evaluate(s, fairlead, anchor, 11);
-    expectVectorNear(out.shape.front(), fairlead.p_WBo_W, 0.0);
+    expectVectorNear(out.shape.front(), fairlead.p_WKo_W, 0.0);
     expectVectorNear(out.shape.back(), Vector3::Zero(), 0.0);
     EXPECT_GT(out.groundedLength, 0.0);
     EXPECT_LT(out.loads.A.f_W[0], 0.0); // pulled towards the anchor

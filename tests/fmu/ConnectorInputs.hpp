@@ -36,14 +36,14 @@ inline std::map<std::string, double> inputs(const BodyKinematics& A,
     for (const auto& [prefix, k] :
          {std::pair<std::string, const BodyKinematics&> {"A", A},
           std::pair<std::string, const BodyKinematics&> {"B", B}}) {
-        addVector(m, prefix + ".r", k.p_WBo_W);
-        addVector(m, prefix + ".v", k.v_WBo_W);
-        addVector(m, prefix + ".omega", k.w_WB_W);
+        addVector(m, prefix + ".r", k.p_WKo_W);
+        addVector(m, prefix + ".v", k.v_WKo_W);
+        addVector(m, prefix + ".omega", k.w_WK_W);
         for (int i = 0; i < 3; ++i) {
             for (int j = 0; j < 3; ++j) {
                 m[prefix + ".R[" + std::to_string(i + 1) + ","
                   + std::to_string(j + 1) + "]"]
-                    = k.R_WB(i, j);
+                    = k.R_WK(i, j);
             }
         }
     }
@@ -55,10 +55,10 @@ inline BodyKinematics kinematics(const Vector3& r, double angle,
                                  const Vector3& omega)
 {
     BodyKinematics k;
-    k.p_WBo_W = r;
-    k.R_WB = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
-    k.v_WBo_W = v;
-    k.w_WB_W = omega;
+    k.p_WKo_W = r;
+    k.R_WK = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    k.v_WKo_W = v;
+    k.w_WK_W = omega;
     return k;
 }
 
@@ -95,9 +95,9 @@ inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
 //- The 17 interface outputs of a law result, in connectorOutputs() order
 inline std::vector<double> flatten(const connectors::ConnectorResult& r)
 {
-    return {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Bo_W[0],
-            r.A.m_Bo_W[1],    r.A.m_Bo_W[2], r.B.f_W[0],    r.B.f_W[1],
-            r.B.f_W[2],       r.B.m_Bo_W[0], r.B.m_Bo_W[1], r.B.m_Bo_W[2],
+    return {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Ko_W[0],
+            r.A.m_Ko_W[1],    r.A.m_Ko_W[2], r.B.f_W[0],    r.B.f_W[1],
+            r.B.f_W[2],       r.B.m_Ko_W[0], r.B.m_Ko_W[1], r.B.m_Ko_W[2],
             r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
             r.dissipatedPower};
 }

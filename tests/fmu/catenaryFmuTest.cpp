@@ -152,7 +152,7 @@ TEST(CatenaryFmu, ErrorsAreNamed)
     Instance in(fmu);
     ASSERT_EQ(in.initialize(mooringParameters), fmi2OK);
     BodyKinematics sunk = floater(0.0);
-    sunk.p_WBo_W[2] = -70.0;
+    sunk.p_WKo_W[2] = -70.0;
     ASSERT_EQ(in.set(inputs(sunk, BodyKinematics())), fmi2OK);
     EXPECT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2Error);
     EXPECT_EQ(

@@ -131,8 +131,8 @@ TEST(MooringLineFmu, RepeatedStepsEqualTheUninterruptedRun)
         ASSERT_EQ(fmu.api.GetFMUstate(repeated.c, &saved), fmi2OK);
         for (int corrector = 0; corrector < 2; ++corrector) {
             BodyKinematics guess = floater(t + h);
-            guess.p_WBo_W[0] += 0.2 * (corrector + 1);
-            guess.v_WBo_W[2]
+            guess.p_WKo_W[0] += 0.2 * (corrector + 1);
+            guess.v_WKo_W[2]
                 -= 0.5 * (corrector + 1); // the end velocity is state too
             ASSERT_EQ(repeated.set(inputs(guess, BodyKinematics())), fmi2OK);
             ASSERT_EQ(fmu.api.DoStep(repeated.c, t, h, fmi2True), fmi2OK);
