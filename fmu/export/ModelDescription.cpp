@@ -64,6 +64,7 @@ constexpr UnitDefinition unitDefinitions[] = {
     {"m", "m=\"1\""},
     {"kg", "kg=\"1\""},
     {"rad", "rad=\"1\""},
+    {"s", "s=\"1\""},
     {"m/s", "m=\"1\" s=\"-1\""},
     {"rad/s", "s=\"-1\" rad=\"1\""},
     {"N", "kg=\"1\" m=\"1\" s=\"-2\""},

@@ -1,12 +1,14 @@
 // mooringLine.fmu: connectors::MooringLine, a dynamic lumped-mass line
-// integrated by CVODE inside each fmi2DoStep, behind the connector FMU
-// interface. The variable table below is the only list of its variables.
+// integrated inside each fmi2DoStep (the implicit trapezoidal rule, or
+// CVODE), behind the connector FMU interface. The variable table below is
+// the only list of its variables.
 //
 // Internal state (Model::internalState): time, end positions and
 // velocities (the start of the next step's Hermite path) and the position
 // and velocity of every free node. It is saved, restored and
-// serialized with the FMU state; each step restarts CVODE from it, so a
-// step repeated after fmi2SetFMUstate gives the same outputs to the bit.
+// serialized with the FMU state; each step starts the integrator from it,
+// so a step repeated after fmi2SetFMUstate gives the same outputs to the
+// bit.
 #include <cmath>
 #include <optional>
 
@@ -32,20 +34,23 @@ node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 - w L/N z
 w = (massPerLength - waterDensity pi diameter^2/4) gravity
 A.F = -T_N-1 q_N-1 - w L/(2N) z,   B.F = T_0 q_0 - w L/(2N) z
 </pre>
-<p>Inside each fmi2DoStep the node states are integrated by SUNDIALS CVODE
-(BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
-<code>absoluteTolerance</code>), the ends moving along the cubic Hermite
-path through their positions and velocities at the start of the step
-(saved in the FMU state) and at its end (the inputs): set the inputs to the
-end-of-step positions and velocities before fmi2DoStep. CVODE is restarted at every step (its BDF
-history restarts at order 1), so a step repeated from a saved FMU state is
-identical to the uninterrupted one. The line starts at rest in the static
-equilibrium of its own discrete equations (found by Newton from the
-quasi-static catenary shape through the attachment points) at
-fmi2ExitInitializationMode. The binary links Debian 12's shared SUNDIALS 6
-libraries (package libsundials-dev, or its runtime libraries
-libsundials-cvode6, -nvecserial6, -sunmatrix4, -sunlinsol3): install them on
-the machine that runs the FMU. Details: connectors/mooringLine/README.md.</p>)";
+<p>Inside each fmi2DoStep the node states are integrated by the implicit
+trapezoidal rule (<code>integrator</code> = 0, the default: one step per
+coupling step, or substeps no longer than <code>maxStep</code>, each one
+Newton solve with the line's block-tridiagonal matrix, a step halved where
+its predictor misses) or by SUNDIALS CVODE (<code>integrator</code> = 1:
+BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
+<code>absoluteTolerance</code>, restarted at every step), the ends moving
+along the cubic Hermite path through their positions and velocities at the
+start of the step (saved in the FMU state) and at its end (the inputs): set
+the inputs to the end-of-step positions and velocities before fmi2DoStep.
+Either integrator starts each step from the node states alone, so a step
+repeated from a saved FMU state is identical to the uninterrupted one. The
+line starts at rest in the static equilibrium of its own discrete equations
+(found by Newton from the quasi-static catenary shape through the
+attachment points) at fmi2ExitInitializationMode. SUNDIALS is linked into
+the binary: the FMU needs nothing installed beside it. Details:
+connectors/mooringLine/README.md.</p>)";
 
 struct Scalar {
     const char* name;
@@ -81,12 +86,18 @@ const Scalar scalars[] = {
     {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
      3e5},
     {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},
-    {"relativeTolerance", "1", "CVODE relative tolerance, > 0", 1e-6},
-    {"absoluteTolerance", "1", "CVODE absolute tolerance (m, m/s), > 0", 1e-6},
+    {"relativeTolerance", "1", "CVODE relative tolerance, > 0 (integrator 1)",
+     1e-6},
+    {"absoluteTolerance", "1",
+     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6},
     {"hermiteEnds", "1",
      "1: within a step the ends follow the cubic Hermite curve through the positions "
      "and velocities at both ends; 0: straight lines between the positions",
      1.0},
+    {"integrator", "1",
+     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0},
+    {"maxStep", "s",
+     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -127,7 +138,7 @@ MooringLineModel::MooringLineModel()
     : LineFmuModel(
         {"mooringLine",
          "Dynamic lumped-mass mooring line between a body and a seabed "
-         "anchor, or between two bodies (SUNDIALS CVODE inside each step)",
+         "anchor, or between two bodies (integrated inside each step)",
          "1.0.0", lawHtml})
 {
     fmuExport::VariableTable& t = table();
@@ -194,6 +205,10 @@ MooringLineModel::parameters(const double* values) const
     p.relativeTolerance = s[15];
     p.absoluteTolerance = s[16];
     p.hermiteEnds = flag("hermiteEnds", s[17]);
+    p.integrator = flag("integrator", s[18])
+        ? connectors::MooringLineParameters::Integrator::cvode
+        : connectors::MooringLineParameters::Integrator::trapezoid;
+    p.maxStep = s[19];
     return p;
 }
 

@@ -65,11 +65,15 @@ std::vector<std::string> names()
 }
 
 //- Parameters, then the inputs at t = 0 (the start shape depends on them)
-fmi2Status initialise(const LoadedFmu& fmu, Instance& in)
+fmi2Status initialise(const LoadedFmu& fmu, Instance& in,
+                      const std::map<std::string, double>& extra = {})
 {
     fmi2Status s = fmu.api.EnterInitializationMode(in.c);
     if (s == fmi2OK) {
         s = in.set(chainParameters);
+    }
+    if (s == fmi2OK && !extra.empty()) {
+        s = in.set(extra);
     }
     if (s == fmi2OK) {
         s = in.set(inputs(floater(0.0), BodyKinematics()));
@@ -113,6 +117,53 @@ TEST(MooringLineFmu, OutputsEqualTheLaw)
         }
         EXPECT_NEAR(got[17], T, 1e-5 * T);
         EXPECT_NEAR(got[19], want.groundedLength, 1e-9);
+    }
+}
+
+// The integrator choice reaches the law: CVODE (integrator 1) and
+// trapezoidal substeps (maxStep 0.04 s: three a step, where the default's
+// halving makes two or four) give the law's answer with the same settings,
+// and differ from the default trapezoidal step per coupling step
+TEST(MooringLineFmu, IntegratorParametersReachTheLaw)
+{
+    using Integrator = connectors::MooringLineParameters::Integrator;
+    struct Case {
+        std::map<std::string, double> fmu;
+        Integrator integrator;
+        double maxStep;
+    };
+    const Case cases[] = {{{{"integrator", 1.0}}, Integrator::cvode, 0.0},
+                          {{{"maxStep", 0.04}}, Integrator::trapezoid, 0.04}};
+    for (const Case& c : cases) {
+        LoadedFmu fmu("mooringLine");
+        Instance in(fmu);
+        Instance byDefault(fmu);
+        ASSERT_EQ(initialise(fmu, in, c.fmu), fmi2OK) << in.lastMessage();
+        ASSERT_EQ(initialise(fmu, byDefault), fmi2OK);
+        connectors::MooringLineParameters p = lawParameters();
+        p.integrator = c.integrator;
+        p.maxStep = c.maxStep;
+        connectors::MooringLine law(p);
+        connectors::MooringLineState s
+            = law.initialState(floater(0.0), BodyKinematics(), 0.0);
+        const double h = 0.1;
+        double largestDifference = 0.0;
+        for (int k = 0; k < 20; ++k) {
+            const double t = k * h;
+            const std::vector<double> got = step(fmu, in, t, h);
+            const std::vector<double> other = step(fmu, byDefault, t, h);
+            law.advance(s, floater(t + h), BodyKinematics(), h);
+            const double T
+                = law.evaluate(s, floater(t + h), BodyKinematics(), 0)
+                      .fairleadTension;
+            // the same code and doubles in two binaries (see above)
+            EXPECT_NEAR(got[17], T, 1e-5 * T) << k;
+            largestDifference
+                = std::max(largestDifference, std::abs(got[17] - other[17]));
+        }
+        // the setting changes the answer: a wrong mapping (the parameter
+        // ignored) would give the default run's tensions to the bit
+        EXPECT_GT(largestDifference, 0.0);
     }
 }
 
