@@ -139,8 +139,11 @@ Foam::scalarField Foam::addedMassRigidBodyMeshMotion::solveWith
             spatialVector(moment + (origins_[bi] ^ force), force);
     }
 
+    // The restraints read the bodies' kinematics from the model's cache of
+    // the last solve, not from the state: bring both back to the start
     const Time& t = mesh().time();
     model_.state() = start;
+    model_.forwardDynamicsCorrection(start);
     model_.solve
     (
         t.value(),
