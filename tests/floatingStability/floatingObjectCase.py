@@ -55,20 +55,42 @@ def mesh(base):
     return base
 
 
+TETHER = """
+    // A soft horizontal tether from the body's centre of mass to a fixed
+    // anchor 0.15 m away in y: OpenFOAM's linearSpring restraint, unloaded
+    // at the start
+    restraints
+    {
+        tether
+        {
+            type            linearSpring;
+            body            floatingObject;
+            anchor          (0.5 0.3 0.35);
+            refAttachmentPt (0.5 0.45 0.35);
+            stiffness       20;
+            damping         1;
+            restLength      0.15;
+        }
+    }
+"""
+
+
 def make(base, case, density, end_time, coupling, relaxation=0.7,
-         outer=3, tolerance=1e-2, max_outer=10):
+         outer=3, tolerance=1e-2, max_outer=10, tether=False):
     """A copy of the meshed tutorial in case.
 
     coupling: "stock" (rigidBodyMotion, accelerationRelaxation relaxation,
     outer correctors) or "addedMass" (addedMassRigidBodyMotion, at most
     max_outer correctors, ended at a coupling residual below tolerance;
-    with tolerance None, outer correctors each step).
+    with tolerance None, outer correctors each step). tether: add TETHER.
     """
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(base, case, ignore=shutil.ignore_patterns("log.*"))
     dyn = os.path.join(case, "constant", "dynamicMeshDict")
     sub(dyn, r"^(\s*rho\s+)500;", rf"\g<1>{density};")
     fvs = os.path.join(case, "system", "fvSolution")
+    if tether:
+        sub(dyn, r"^(\s*bodies\s*\n)", TETHER + r"\n\1")
     if coupling == "stock":
         sub(dyn, r"accelerationRelaxation\s+[0-9.]+;",
             f"accelerationRelaxation {relaxation};")
@@ -114,6 +136,7 @@ def parse(log):
     cpu = 0.0
     ended = False
     residuals = []   # per step: the coupling residuals of its correctors
+    newton = []      # per corrector: Newton iterations and final residual
     converged = []   # per step: PIMPLE ended it by residualControl
     with open(log) as f:
         for line in f:
@@ -129,6 +152,10 @@ def parse(log):
             elif "coupling residual" in line:
                 residuals[-1].append(float(re.search(
                     r"coupling residual ([-+0-9.eE]+)", line).group(1)))
+                m = re.search(r"Newton iterations (\d+) \(residual"
+                              r" ([-+0-9.eE]+)\)", line)
+                if m:
+                    newton.append((int(m.group(1)), float(m.group(2))))
             elif line.startswith("PIMPLE: converged in"):
                 converged[-1] = True
             elif line.strip().startswith("Centre of rotation:"):
@@ -144,4 +171,5 @@ def parse(log):
     return {"steps": steps, "correctors": correctors, "time": times[-1]
             if times else 0.0, "cpu": cpu, "ended": ended, "y": ys,
             "pitch": pitches, "residuals": residuals, "converged": converged,
+            "newton": newton,
             "times": times}
