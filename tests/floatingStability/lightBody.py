@@ -15,7 +15,10 @@ sway added mass is about 25 times that, docs/floating-stability.md), to
     residualControl on the coupling residual (below 1e-2: the bodies'
     accelerations changed by less than 1 % in the last corrector), the
     box within 0.1 m and 0.3 rad of its start (it floats, slightly
-    disturbed: a blow-up goes far beyond).
+    disturbed: a blow-up goes far beyond);
+  - bad coupling entries (maxIter 0, tolerance 2, addedMassInterval 0, an
+    accelerationRelaxation with the added mass) stop the run at the start
+    with a FatalIOError naming the entry.
 
 Both runs carry a soft tether (OpenFOAM's linearSpring restraint): with a
 linear restraint the rigid-body solve is affine in the load, so the
@@ -90,6 +93,34 @@ def main():
         print(f"largest sway change {dy:.3g} m, pitch-sine change {dp:.3g}")
         if dy > 0.1 or dp > 0.3:
             fail(f"the body moved {dy} m / {dp} from its start: not afloat")
+        # Bad coupling entries stop the run when the motion solver is
+        # built, naming the entry and what was expected
+        for entry, value, expected in (
+                ("maxIter", "0", "at least one Newton iteration"),
+                ("tolerance", "2", "must be in (0, 1)"),
+                ("addedMassInterval", "0", "must be at least 1")):
+            case = foc.make(base, os.path.join(work, "bad" + entry), DENSITY,
+                            END_TIME, "addedMass", tolerance=TOLERANCE)
+            foc.sub(os.path.join(case, "constant", "dynamicMeshDict"),
+                    r"^(\s*report\s+on;)",
+                    rf"\1\n    coupling {{ {entry} {value}; }}")
+            bad = foc.solve(case)
+            log = open(os.path.join(case, "log.solver")).read()
+            if bad["steps"] or "FOAM FATAL IO ERROR" not in log \
+                    or f"{entry} = {value}" not in log or expected not in log:
+                fail(f"coupling {{ {entry} {value}; }} did not stop the run"
+                     f" with a FatalIOError naming it (log: {case})")
+        relaxed = foc.make(base, os.path.join(work, "badRelaxation"), DENSITY,
+                           END_TIME, "addedMass", tolerance=TOLERANCE)
+        foc.sub(os.path.join(relaxed, "constant", "dynamicMeshDict"),
+                r"^(\s*report\s+on;)", r"\1\n    accelerationRelaxation 0.5;")
+        foc.solve(relaxed)
+        log = open(os.path.join(relaxed, "log.solver")).read()
+        if "FOAM FATAL IO ERROR" not in log \
+                or "accelerationRelaxation 0.5" not in log:
+            fail("accelerationRelaxation with the added-mass coupling did not"
+                 f" stop the run naming it (log: {relaxed})")
+        print("bad coupling entries stop the run, each named")
         print("PASS [lightBody]")
     finally:
         if keep:
