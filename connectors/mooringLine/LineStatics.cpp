@@ -14,6 +14,17 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
+//- Potential energy of the line held still: strain, seabed, weight [J]
+double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r,
+                    double wl)
+{
+    double heights = 0.0;
+    for (std::size_t i = 1; i + 1 < r.size(); ++i) {
+        heights += r[i][2];
+    }
+    return f.strainEnergy + f.seabedEnergy + wl * heights;
+}
+
 } // namespace
 
 std::vector<Vector3>
@@ -160,6 +171,80 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
                     * d * l;
         }
     }
+}
+
+bool solveStatics(const MooringLineParameters& p, double w,
+                  std::vector<Vector3>& r, double zb)
+{
+    const int N = p.segments;
+    const double wl = w * p.length / N;
+    const std::vector<Vector3> still(std::size_t(N + 1), Vector3::Zero());
+    std::vector<Vector3> x(r), trial(r);
+    NodeForces f = nodeForces(p, w, x, still, zb);
+    double residual = largestForce(f), energy = staticEnergy(f, x, wl);
+    // Once below the tolerance, iterates on to the round-off floor (three
+    // steps without a smaller largest force): a force left on a node
+    // starts it moving
+    double extent = 0.0; // largest coordinate [m]
+    for (const Vector3& ri : r) {
+        extent = std::max(extent, ri.lpNorm<Eigen::Infinity>());
+    }
+    const double l = p.length / N;
+    const auto tolerance = [&](const NodeForces& forces) {
+        double tension = 0.0;
+        for (const double T : forces.T) {
+            tension = std::max(tension, std::abs(T));
+        }
+        // + the round-off of a tension from a strain: coordinates carry
+        // eps |r|, a segment's strain eps |r| / l
+        return 1e-11 * (std::abs(w) * p.length + tension)
+            + 16.0 * std::numeric_limits<double>::epsilon() * p.EA * extent / l;
+    };
+    int stalled = 0;
+    double best = residual, bestTolerance = tolerance(f);
+    for (int iteration = 0;
+         iteration < 200 && !(best <= bestTolerance && stalled >= 3);
+         ++iteration) {
+        const std::vector<Vector3> b(f.F.begin() + 1, f.F.end() - 1);
+        const std::vector<Vector3> dx = staticStiffness(p, w, x, zb).solve(b);
+        double slope = 0.0; // d energy / d alpha = -F . dx < 0
+        for (int i = 1; i < N; ++i) {
+            slope -= b[std::size_t(i - 1)].dot(dx[std::size_t(i - 1)]);
+        }
+        bool accepted = false;
+        for (double alpha = 1.0; alpha > 1e-12 && !accepted; alpha *= 0.5) {
+            for (int i = 1; i < N; ++i) {
+                trial[std::size_t(i)]
+                    = x[std::size_t(i)] + alpha * dx[std::size_t(i - 1)];
+            }
+            NodeForces next = nodeForces(p, w, trial, still, zb);
+            const double nextResidual = largestForce(next);
+            const double nextEnergy = staticEnergy(next, trial, wl);
+            if (!std::isfinite(nextResidual) || !std::isfinite(nextEnergy)) {
+                continue;
+            }
+            accepted = nextEnergy <= energy + 1e-4 * alpha * slope
+                || (alpha == 1.0 && nextResidual < residual);
+            if (accepted) {
+                x.swap(trial);
+                f = std::move(next);
+                residual = nextResidual;
+                energy = nextEnergy;
+            }
+        }
+        if (!accepted) {
+            break; // no descent left
+        }
+        if (residual < best) {
+            best = residual;
+            bestTolerance = tolerance(f);
+            r = x;
+            stalled = 0;
+        } else {
+            ++stalled;
+        }
+    }
+    return best <= bestTolerance;
 }
 
 } // namespace connectors

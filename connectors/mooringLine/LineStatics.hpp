@@ -58,6 +58,18 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
                      const std::vector<Vector3>& v, const NodeForces& f,
                      double zb, double h, BlockTridiagonal& J);
 
+//- Damped Newton on the static forces of the free nodes (no velocities),
+//  from r (ends r[0], r[N] held). The forces are minus the gradient of the
+//  potential energy and the Newton matrix is positive definite, so every
+//  Newton step descends: a step is halved until the energy decreases
+//  (Armijo), or taken whole when it reduces the largest node force (near
+//  the solution, where the energy's change is below its round-off).
+//  r becomes the iterate with the smallest largest node force; returns
+//  whether that fell below 1e-11 of the line's weight plus its largest
+//  tension (plus the round-off of a tension, 16 eps EA |r| / l).
+bool solveStatics(const MooringLineParameters& p, double w,
+                  std::vector<Vector3>& r, double zb);
+
 } // namespace connectors
 
 #endif
