@@ -17,18 +17,54 @@ const Vector3 zHat = Vector3::UnitZ();
 
 NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const std::vector<Vector3>& r,
-                      const std::vector<Vector3>& v, double zb)
+                      const std::vector<Vector3>& v, double zb,
+                      const WaterMotion* water)
 {
     NodeForces f;
-    nodeForces(p, w, r, v, zb, f);
+    nodeForces(p, w, r, v, zb, f, water);
     return f;
 }
 
+double submergedFraction(const MooringLineParameters& p, double z)
+{
+    if (!p.freeSurface) {
+        return 1.0;
+    }
+    const double l = p.length / p.segments;
+    return std::clamp((p.waterLevel + 0.5 * l - z) / l, 0.0, 1.0);
+}
+
+Vector3 currentAt(const MooringLineParameters& p, double z, double zb)
+{
+    const double depth = p.waterLevel - zb;
+    const double up
+        = depth > 0.0 ? std::clamp((z - zb) / depth, 0.0, 1.0) : 1.0;
+    return p.currentSeabed + up * (p.currentSurface - p.currentSeabed);
+}
+
+namespace {
+
+//- Integral of submergedFraction over height up to z (its derivative is
+//  the fraction): the buoyancy's potential is -rho g A l times it
+double submergedHeight(const MooringLineParameters& p, double z)
+{
+    if (!p.freeSurface) {
+        return z;
+    }
+    const double l = p.length / p.segments;
+    const double bottom = p.waterLevel - 0.5 * l;
+    const double u = std::clamp((z - bottom) / l, 0.0, 1.0);
+    return std::min(z, bottom) + l * (u - 0.5 * u * u);
+}
+
+} // namespace
+
 void nodeForces(const MooringLineParameters& p, double w,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f)
+                double zb, NodeForces& f, const WaterMotion* water)
 {
     const int N = p.segments;
+    const std::size_t n = std::size_t(N + 1);
     const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
     const double area = 0.25 * pi * d * d;
     // Penetration at which the seabed stiffness carries the submerged
@@ -41,22 +77,26 @@ void nodeForces(const MooringLineParameters& p, double w,
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
     f.stretched.resize(std::size_t(N));
-    f.tangent.assign(std::size_t(N + 1), Vector3::Zero());
-    f.a.assign(std::size_t(N + 1), Vector3::Zero());
-    f.F.assign(std::size_t(N + 1), Vector3::Zero());
-    f.strainEnergy = f.seabedEnergy = f.dissipatedPower = 0.0;
+    f.tangent.assign(n, Vector3::Zero());
+    f.a.assign(n, Vector3::Zero());
+    f.F.assign(n, Vector3::Zero());
+    f.external.assign(n, Vector3::Zero());
+    f.submerged.assign(n, 1.0);
+    f.normalDrag.assign(n, 0.0);
+    f.tangentialDrag.assign(n, 0.0);
+    f.friction.assign(n, 0.0);
+    f.relative.resize(n);
+    f.strainEnergy = f.seabedEnergy = f.dissipatedPower = f.gravityEnergy = 0.0;
     f.groundedSegments = 0;
     // the ends count as grounded with seabedContact
     const auto onSeabed = [&](int i) {
         return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
     };
     const double inverseL = 1.0 / l;
-    const double cn = 0.5 * rho * d * l * p.normalDrag;
-    const double ct = 0.5 * rho * pi * d * l * p.tangentialDrag;
-    const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
-    const double mt
-        = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
-    const double inverseMn = 1.0 / mn, inverseMt = 1.0 / mt;
+    const double cn = 0.5 * rho * d * p.normalDrag;
+    const double ct = 0.5 * rho * pi * d * p.tangentialDrag;
+    const double dryWeight = p.massPerLength * p.gravity;
+    const double buoyancy = rho * area * p.gravity; // per submerged length
     for (int j = 0; j < N; ++j) {
         const Vector3 dr = r[j + 1] - r[j];
         const double stretched = dr.norm();
@@ -74,36 +114,100 @@ void nodeForces(const MooringLineParameters& p, double w,
             += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
         f.dissipatedPower += p.axialDamping * strainRate * strainRate * l;
     }
-    for (int i = 1; i < N; ++i) {
-        Vector3 F = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] - w * l * zHat;
-        if (onSeabed(i)) {
+    // Every node carries the line around it: a segment (free nodes) or
+    // half a segment (the ends), of length `share` unstretched and
+    // `stretchedShare` stretched (drag acts on the stretched length)
+    for (int i = 0; i <= N; ++i) {
+        const bool end = i == 0 || i == N;
+        const double share = end ? 0.5 * l : l;
+        const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
+            : i == N                         ? 0.5 * f.stretched[N - 1]
+                     : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
+        const double phi = submergedFraction(p, r[i][2]);
+        f.submerged[i] = phi;
+        // With seabedContact the seabed carries the anchor's half segment
+        const bool carried = i == 0 && p.seabedContact;
+        Vector3 E = Vector3::Zero();
+        if (!carried) {
+            E[2] -= (dryWeight - buoyancy * phi) * share;
+        }
+        f.gravityEnergy += share
+            * (dryWeight * r[i][2]
+               - buoyancy
+                   * (p.freeSurface ? submergedHeight(p, r[i][2]) : r[i][2]));
+        if (onSeabed(i) && i != 0) {
             const double depth = zb - r[i][2];
             // The damping engages over the depth at which the stiffness
             // carries the line's weight, so that the force grows from zero
             // as a node lands: a force that jumped to cb d l |vz| at the
             // floor made CVODE's error test fail there
             const double damping
-                = p.seabedDamping * std::min(depth / restDepth, 1.0);
+                = p.seabedDamping * std::clamp(depth / restDepth, 0.0, 1.0);
             const double push = std::max(
-                (p.seabedStiffness * depth - damping * v[i][2]) * d * l, 0.0);
-            F[2] += push;
-            f.seabedEnergy += 0.5 * p.seabedStiffness * depth * depth * d * l;
-            f.dissipatedPower += std::min(damping * v[i][2] * v[i][2] * d * l,
-                                          std::abs(push * v[i][2]));
+                (p.seabedStiffness * depth - damping * v[i][2]) * d * share,
+                0.0);
+            E[2] += push;
+            if (depth > 0.0) {
+                f.seabedEnergy
+                    += 0.5 * p.seabedStiffness * depth * depth * d * share;
+            }
+            f.dissipatedPower
+                += std::min(damping * v[i][2] * v[i][2] * d * share,
+                            std::abs(push * v[i][2]));
+            // Coulomb friction on the horizontal velocity, regularised:
+            // mu push v / max(|v|, frictionVelocity)
+            if (p.seabedFriction > 0.0 && push > 0.0) {
+                const Vector3 vh(v[i][0], v[i][1], 0.0);
+                const double c = p.seabedFriction * push
+                    / std::max(vh.norm(), p.frictionVelocity);
+                f.friction[i] = c;
+                E -= c * vh;
+                f.dissipatedPower += c * vh.squaredNorm();
+            }
         }
-        Vector3 t = r[i + 1] - r[i - 1];
+        Vector3 t = i == 0 ? f.q[0]
+            : i == N       ? f.q[N - 1]
+                           : Vector3(r[i + 1] - r[i - 1]);
         const double tn = t.norm();
         t = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
         f.tangent[i] = t;
-        const Vector3 vRel = -v[i]; // still water
-        const double along = vRel.dot(t); // |vt| (t is a unit vector or 0)
-        const Vector3 vt = along * t, vn = vRel - vt;
-        const Vector3 drag = cn * vn.norm() * vn + ct * std::abs(along) * vt;
-        F += drag;
+        Vector3 u = -v[i]; // water velocity relative to the node
+        if (water) {
+            if (water->current) {
+                u += currentAt(p, r[i][2], zb);
+            }
+            if (!water->flow.empty()) {
+                u += water->flow[std::size_t(i)];
+            }
+        }
+        f.relative[i] = u;
+        const double along = u.dot(t); // |ut| (t is a unit vector or 0)
+        const Vector3 ut = along * t, un = u - ut;
+        const double wet = phi * stretchedShare;
+        f.normalDrag[i] = cn * wet * un.norm();
+        f.tangentialDrag[i] = ct * wet * std::abs(along);
+        const Vector3 drag = f.normalDrag[i] * un + f.tangentialDrag[i] * ut;
+        E += drag;
+        // power the drag takes from the line's motion relative to the water
+        f.dissipatedPower += drag.dot(u);
+        f.external[i] = E;
+    }
+    const double mass = p.massPerLength * l;
+    const double addedN = p.normalAddedMass * rho * area * l;
+    const double addedT = p.tangentialAddedMass * rho * area * l;
+    f.normalMass.assign(n, 0.0);
+    f.tangentialMass.assign(n, 0.0);
+    for (int i = 1; i < N; ++i) {
+        const Vector3 F
+            = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] + f.external[i];
         f.F[i] = F;
-        f.dissipatedPower += -drag.dot(v[i]);
+        const double mn = mass + addedN * f.submerged[i];
+        const double mt = mass + addedT * f.submerged[i];
+        f.normalMass[i] = mn;
+        f.tangentialMass[i] = mt;
+        const Vector3& t = f.tangent[i];
         // (mn (I - t t') + mt t t')^-1 F
-        f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
+        f.a[i] = F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t;
     }
     for (int j = 0; j < N; ++j) {
         f.groundedSegments += onSeabed(j) && onSeabed(j + 1);

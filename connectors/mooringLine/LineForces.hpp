@@ -13,6 +13,14 @@ namespace connectors {
 
 struct MooringLineParameters;
 
+//- The water's motion seen by the line: the current profile of the
+//  parameters (MooringLineParameters::currentSurface, currentSeabed) plus
+//  a flow velocity at every node 0..N (empty: none), global frame [m/s]
+struct WaterMotion {
+    bool current = false;
+    std::vector<Vector3> flow;
+};
+
 //- Forces on every node for given node positions and velocities
 struct NodeForces {
     //- Segment tensions [N] and unit vectors from node j to j+1
@@ -25,19 +33,44 @@ struct NodeForces {
     //- Net forces [N] and accelerations of the free nodes (index 1..N-1;
     //  0 and N unused)
     std::vector<Vector3> F, a;
+    //- Forces on every node 0..N other than the segment tensions (weight,
+    //  buoyancy, seabed, friction, drag) [N]; the end nodes' half segments
+    //  (the loads on the bodies take them)
+    std::vector<Vector3> external;
+    //- Per node 0..N: submerged fraction [-] (1 without freeSurface), the
+    //  water's velocity relative to the node [m/s], the normal and
+    //  tangential drag factors c |u| of the drag c |u| u [N.s/m], the
+    //  seabed friction's damping (friction force over horizontal speed)
+    //  [N.s/m], and the free nodes' normal and tangential mass with added
+    //  mass [kg]
+    std::vector<double> submerged, normalDrag, tangentialDrag, friction;
+    std::vector<double> normalMass, tangentialMass;
+    std::vector<Vector3> relative;
+    //- Potential of gravity and buoyancy of all nodes (the ends' half
+    //  segments), heights from z = 0 [J]
+    double gravityEnergy = 0.0;
     double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     int groundedSegments = 0;
 };
 
 //- Forces on the nodes at positions r and velocities v (0..N), for the
 //  submerged weight per length w [N/m] and the seabed at height zb [m]
+//  (also the current profile's lower end), in still water (water null)
+//  or the given water motion
 NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const std::vector<Vector3>& r,
-                      const std::vector<Vector3>& v, double zb);
+                      const std::vector<Vector3>& v, double zb,
+                      const WaterMotion* water = nullptr);
 //- The same into f, reusing its storage
 void nodeForces(const MooringLineParameters& p, double w,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f);
+                double zb, NodeForces& f, const WaterMotion* water = nullptr);
+
+//- Submerged fraction of a node at height z [m] (freeSurface): 1 below
+//  waterLevel - l/2, 0 above waterLevel + l/2, linear between
+double submergedFraction(const MooringLineParameters& p, double z);
+//- The current of the parameters at height z [m], seabed at zb [m]
+Vector3 currentAt(const MooringLineParameters& p, double z, double zb);
 
 //- Positions and velocities of the free nodes 1..N-1 from the state vector
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,

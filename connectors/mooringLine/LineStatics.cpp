@@ -14,15 +14,24 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-//- Potential energy of the line held still: strain, seabed, weight [J]
-double staticEnergy(const NodeForces& f, const std::vector<Vector3>& r,
-                    double wl)
+//- Potential energy of the line held still: strain, seabed, weight and
+//  buoyancy [J]
+double staticEnergy(const NodeForces& f)
 {
-    double heights = 0.0;
-    for (std::size_t i = 1; i + 1 < r.size(); ++i) {
-        heights += r[i][2];
+    return f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
+}
+
+//- -dF_z/dz of a node's buoyancy where it crosses the free surface
+//  (its submerged fraction falls by 1/l per m up there) [N/m]
+double surfaceStiffness(const MooringLineParameters& p, double z)
+{
+    if (!p.freeSurface) {
+        return 0.0;
     }
-    return f.strainEnergy + f.seabedEnergy + wl * heights;
+    const double phi = submergedFraction(p, z);
+    return phi > 0.0 && phi < 1.0
+        ? p.waterDensity * 0.25 * pi * p.diameter * p.diameter * p.gravity
+        : 0.0;
 }
 
 } // namespace
@@ -94,25 +103,23 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
             S.upper[std::size_t(j - 1)] -= k;
         }
     }
-    if (p.seabedContact) {
-        for (int i = 1; i < N; ++i) {
-            if (r[std::size_t(i)][2] <= zb) {
-                S.diagonal[std::size_t(i - 1)](2, 2)
-                    += p.seabedStiffness * p.diameter * l;
-            }
+    for (int i = 1; i < N; ++i) {
+        S.diagonal[std::size_t(i - 1)](2, 2)
+            += surfaceStiffness(p, r[std::size_t(i)][2]);
+        if (p.seabedContact && r[std::size_t(i)][2] <= zb) {
+            S.diagonal[std::size_t(i - 1)](2, 2)
+                += p.seabedStiffness * p.diameter * l;
         }
     }
     return S;
 }
 
 void trapezoidMatrix(const MooringLineParameters& p, double weight,
-                     const std::vector<Vector3>& r,
-                     const std::vector<Vector3>& v, const NodeForces& f,
+                     const std::vector<Vector3>& r, const NodeForces& f,
                      double zb, double h, BlockTridiagonal& J)
 {
     const int N = p.segments;
-    const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
-    const double area = 0.25 * pi * d * d;
+    const double l = p.length / N, d = p.diameter;
     const double stiffness = 0.25 * h * h, damping = 0.5 * h;
     J.diagonal.assign(std::size_t(N - 1), Matrix3::Zero());
     J.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
@@ -145,30 +152,32 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
     const double restDepth = support > 0.0 && weight > 0.0
         ? weight / support
         : std::numeric_limits<double>::min();
-    const double mn = p.massPerLength * l + p.normalAddedMass * rho * area * l;
-    const double mt
-        = p.massPerLength * l + p.tangentialAddedMass * rho * area * l;
-    const double cn = damping * 0.5 * rho * d * l * p.normalDrag;
-    const double ct = damping * 0.5 * rho * pi * d * l * p.tangentialDrag;
     for (int i = 1; i < N; ++i) {
         const std::size_t k = std::size_t(i);
         const Vector3& t = f.tangent[k];
-        // mass mn (I - t t') + mt t t'; drag c |u| u of u = -v_n, -v_t:
-        // -dF/dv = c (|u| P + u u'/|u|)
-        const double along = v[k].dot(t); // t is a unit vector or 0
-        const Vector3 vn = v[k] - along * t;
-        const double un = vn.norm(), ut = std::abs(along);
+        // mass mn (I - t t') + mt t t'; drag c |u| u of u = U - v (normal
+        // and tangential parts): -dF/dv = c (|u| P + u u'/|u|)
+        const Vector3& u = f.relative[k];
+        const Vector3 un = u - u.dot(t) * t; // t is a unit vector or 0
+        const double mn = f.normalMass[k], mt = f.tangentialMass[k];
+        const double cn = damping * f.normalDrag[k];
+        const double ct = damping * f.tangentialDrag[k];
         Matrix3& b = J.diagonal[k - 1];
-        b.diagonal().array() += mn + cn * un;
-        b += (mt - mn - cn * un + 2.0 * ct * ut) * t * t.transpose();
-        if (un > 0.0) {
-            b += (cn / un) * vn * vn.transpose();
+        b.diagonal().array() += mn + cn;
+        b += (mt - mn - cn + 2.0 * ct) * t * t.transpose();
+        const double un2 = un.squaredNorm();
+        if (un2 > 0.0) {
+            b += (cn / un2) * un * un.transpose();
         }
+        b(2, 2) += stiffness * surfaceStiffness(p, r[k][2]);
         if (p.seabedContact && r[k][2] <= zb) {
             const double depth = zb - r[k][2];
             b(2, 2) += stiffness * p.seabedStiffness * d * l
                 + damping * p.seabedDamping * std::min(depth / restDepth, 1.0)
                     * d * l;
+            // friction: its damping on the horizontal velocity
+            b(0, 0) += damping * f.friction[k];
+            b(1, 1) += damping * f.friction[k];
         }
     }
 }
@@ -177,11 +186,10 @@ bool solveStatics(const MooringLineParameters& p, double w,
                   std::vector<Vector3>& r, double zb)
 {
     const int N = p.segments;
-    const double wl = w * p.length / N;
     const std::vector<Vector3> still(std::size_t(N + 1), Vector3::Zero());
     std::vector<Vector3> x(r), trial(r);
     NodeForces f = nodeForces(p, w, x, still, zb);
-    double residual = largestForce(f), energy = staticEnergy(f, x, wl);
+    double residual = largestForce(f), energy = staticEnergy(f);
     // Once below the tolerance, iterates on to the round-off floor (three
     // steps without a smaller largest force): a force left on a node
     // starts it moving
@@ -219,7 +227,7 @@ bool solveStatics(const MooringLineParameters& p, double w,
             }
             NodeForces next = nodeForces(p, w, trial, still, zb);
             const double nextResidual = largestForce(next);
-            const double nextEnergy = staticEnergy(next, trial, wl);
+            const double nextEnergy = staticEnergy(next);
             if (!std::isfinite(nextResidual) || !std::isfinite(nextEnergy)) {
                 continue;
             }

@@ -46,16 +46,15 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
                                  const std::vector<Vector3>& r, double zb);
 
 //- Newton matrix of a trapezoidal step of h [s] in the positions at its
-//  end, M + h^2/4 S + h/2 D at node positions r and velocities v (0..N),
-//  with f = nodeForces there (its segment lengths and node tangents):
-//  M the nodes' mass with added mass, S = staticStiffness, D = -dF/dv of
-//  the axial damping (BA/l q q' per segment), the drag and the seabed
-//  damping. Symmetric positive definite; it omits the change of M, of the
+//  end, M + h^2/4 S + h/2 D at node positions r (0..N), with
+//  f = nodeForces there (its segment lengths, node tangents, masses, drag
+//  factors and relative velocities): M the nodes' mass with added mass,
+//  S = staticStiffness, D = -dF/dv of the axial damping (BA/l q q' per
+//  segment), the drag, the seabed damping and friction. Symmetric positive definite; it omits the change of M, of the
 //  drag's direction and of the damping force's direction with the
 //  positions, so Newton converges linearly (fast: these are small).
 void trapezoidMatrix(const MooringLineParameters& p, double weight,
-                     const std::vector<Vector3>& r,
-                     const std::vector<Vector3>& v, const NodeForces& f,
+                     const std::vector<Vector3>& r, const NodeForces& f,
                      double zb, double h, BlockTridiagonal& J);
 
 //- Damped Newton on the static forces of the free nodes (no velocities),

@@ -20,7 +20,6 @@ namespace {
 
 const char* const lawName = "mooringLine";
 constexpr double pi = 3.14159265358979323846;
-const Vector3 zHat = Vector3::UnitZ();
 
 void requirePositive(const char* name, double value, const char* unit)
 {
@@ -34,7 +33,9 @@ static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 is 3 doubles");
 bool sameBits(const std::vector<Vector3>& a, const std::vector<Vector3>& b)
 {
     return a.size() == b.size()
-        && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vector3)) == 0;
+        && (a.empty()
+            || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vector3))
+                == 0);
 }
 
 } // namespace
@@ -102,6 +103,14 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
         throw ParameterError(lawName, "maxStep", p.maxStep, "s",
                              "finite and >= 0");
     }
+    if (!std::isfinite(p.waterLevel)) {
+        throw ParameterError(lawName, "waterLevel", p.waterLevel, "m",
+                             "finite");
+    }
+    requireFinite(lawName, "current.surface", p.currentSurface, "m/s");
+    requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
+    requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
+    requirePositive("frictionVelocity", p.frictionVelocity, "m/s");
     weight_ = p.weight();
     if (p.integrator == MooringLineParameters::Integrator::cvode) {
         CvodeBdf::Options options;
@@ -235,7 +244,8 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
         r[i] = Vector3(yi[0], yi[1], yi[2]);
         v[i] = Vector3(yi[3], yi[4], yi[5]);
     }
-    const NodeForces forces = nodeForces(parameters_, weight_, r, v, r[0][2]);
+    const NodeForces forces
+        = nodeForces(parameters_, weight_, r, v, r[0][2], &water_);
     for (int i = 1; i < N; ++i) {
         double* d = ydot + 6 * (i - 1);
         for (int k = 0; k < 3; ++k) {
@@ -266,10 +276,11 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // positions and velocities (the end of the previous step, as the FMU
     // reports its outputs), else a force evaluation; the same function of
     // the same numbers either way
-    if (sameBits(lastEvaluated_.r, w.r0) && sameBits(lastEvaluated_.v, w.v0)) {
+    if (sameBits(lastEvaluated_.r, w.r0) && sameBits(lastEvaluated_.v, w.v0)
+        && sameBits(lastEvaluated_.water.flow, water_.flow)) {
         w.a0 = lastEvaluated_.f.a;
     } else {
-        nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f);
+        nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f, &water_);
         ++trapezoidStatistics_.rhsEvaluations;
         w.a0 = w.f.a;
     }
@@ -282,11 +293,6 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         w.v[i] = w.v0[i] + h * w.a0[i];
     }
     const double l = parameters_.length / N;
-    const double area = 0.25 * pi * parameters_.diameter * parameters_.diameter;
-    const double mn = parameters_.massPerLength * l
-        + parameters_.normalAddedMass * parameters_.waterDensity * area * l;
-    const double mt = parameters_.massPerLength * l
-        + parameters_.tangentialAddedMass * parameters_.waterDensity * area * l;
     // Newton on the end positions x (v = 2 (x - x0)/h - v0) with the
     // matrix of the predictor; the residual (v - v0)/h - (a0 + a(x, v))/2
     // is scaled by M h^2/2. Each correction is about 1e-3 of the previous
@@ -298,9 +304,9 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
     // first correction above largestMiss segments rejects the step.
     for (int iteration = 0; iteration < 10; ++iteration) {
-        nodeForces(parameters_, weight_, w.r, w.v, zb, w.f);
+        nodeForces(parameters_, weight_, w.r, w.v, zb, w.f, &water_);
         if (iteration == 0) {
-            trapezoidMatrix(parameters_, weight_, w.r, w.v, w.f, zb, h, w.J);
+            trapezoidMatrix(parameters_, weight_, w.r, w.f, zb, h, w.J);
             w.J.factorize();
             ++trapezoidStatistics_.jacobianEvaluations;
         }
@@ -310,6 +316,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
                 = (w.v[i] - w.v0[i]) / h - 0.5 * (w.a0[i] + w.f.a[i]);
             const Vector3& t = w.f.tangent[i];
             const double along = residual.dot(t);
+            const double mn = w.f.normalMass[i], mt = w.f.tangentialMass[i];
             w.b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
         }
         w.J.solveFactored(w.b);
@@ -374,8 +381,43 @@ void MooringLine::trapezoidInterval(std::vector<double>& nodes, double s0,
     trapezoidInterval(nodes, middle, s1, depth + 1);
 }
 
+void MooringLine::waterMotion(const std::vector<Vector3>& flow,
+                              WaterMotion& water) const
+{
+    const MooringLineParameters& p = parameters_;
+    water.current
+        = !p.currentSurface.isZero(0.0) || !p.currentSeabed.isZero(0.0);
+    if (flow.empty()) {
+        water.flow.clear();
+        return;
+    }
+    if (flow.size() < 2) {
+        throw std::invalid_argument(
+            "mooringLine: the flow needs 0 or at least 2 points");
+    }
+    for (std::size_t k = 0; k < flow.size(); ++k) {
+        if (!flow[k].allFinite()) {
+            throw UndefinedStateError(
+                "mooringLine: the flow velocity at shape point "
+                + std::to_string(k + 1) + " is not finite");
+        }
+    }
+    // node i is (N - i)/N of the line from P: between points k and k + 1
+    const int N = p.segments;
+    const int last = int(flow.size()) - 1;
+    water.flow.resize(std::size_t(N + 1));
+    for (int i = 0; i <= N; ++i) {
+        const double u = double(N - i) * last / N;
+        const int k = std::min(int(u), last - 1);
+        const double f01 = u - k;
+        water.flow[std::size_t(i)] = (1.0 - f01) * flow[std::size_t(k)]
+            + f01 * flow[std::size_t(k + 1)];
+    }
+}
+
 void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
-                          const BodyKinematics& B, double h)
+                          const BodyKinematics& B, double h,
+                          const std::vector<Vector3>& flow)
 {
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
@@ -399,6 +441,7 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     ends_.vP1 = attachmentVelocity(A, parameters_.p_AoP_A);
     ends_.t0 = state.time;
     ends_.h = h;
+    waterMotion(flow, water_);
     std::vector<double> y(state.nodes);
     try {
         if (integrator_) {
@@ -431,7 +474,8 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
 MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
                                         const BodyKinematics& A,
                                         const BodyKinematics& B,
-                                        int shapePoints) const
+                                        int shapePoints,
+                                        const std::vector<Vector3>& flow) const
 {
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
@@ -451,15 +495,18 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     r[N] = attachment(A, p.p_AoP_A);
     v[0] = attachmentVelocity(B, p.p_BoQ_B);
     v[N] = attachmentVelocity(A, p.p_AoP_A);
+    WaterMotion& water = lastEvaluated_.water;
+    waterMotion(flow, water);
     NodeForces& f = lastEvaluated_.f;
-    nodeForces(p, weight_, r, v, r[0][2], f);
+    nodeForces(p, weight_, r, v, r[0][2], f, &water);
     const double l = p.length / N;
 
     MooringLineOutput out;
     ConnectorResult& res = out.loads;
-    res.A.f_W = -f.T[N - 1] * f.q[N - 1] - 0.5 * weight_ * l * zHat;
-    res.B.f_W
-        = f.T[0] * f.q[0] - (p.seabedContact ? 0.0 : 0.5 * weight_ * l) * zHat;
+    // The end nodes' own forces (their half segments' weight, buoyancy,
+    // drag, seabed) act on the bodies
+    res.A.f_W = -f.T[N - 1] * f.q[N - 1] + f.external[N];
+    res.B.f_W = f.T[0] * f.q[0] + f.external[0];
     res.A.m_Ko_W = g.p_AoP_W.cross(res.A.f_W);
     res.B.m_Ko_W = g.p_BoQ_W.cross(res.B.f_W);
     res.length = g.length;
@@ -467,12 +514,7 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     out.fairleadTension = res.A.f_W.norm();
     out.anchorTension = res.B.f_W.norm();
     res.tension = out.fairleadTension;
-    double heights = 0.5 * (r[0][2] + r[N][2]);
-    for (int i = 1; i < N; ++i) {
-        heights += r[i][2];
-    }
-    res.potentialEnergy
-        = f.strainEnergy + f.seabedEnergy + weight_ * l * heights;
+    res.potentialEnergy = f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
     res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
     out.groundedLength = l * f.groundedSegments;
     out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
@@ -486,6 +528,20 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
         const int i = std::min(int(u), N - 1);
         const double f01 = u - i;
         out.shape.push_back((1.0 - f01) * r[i] + f01 * r[i + 1]);
+        // tension: anchorTension at node 0, T_j at u = j + 1/2,
+        // fairleadTension at node N, linear between
+        double T = 0.0;
+        if (u <= 0.5) {
+            T = out.anchorTension + 2.0 * u * (f.T[0] - out.anchorTension);
+        } else if (u >= N - 0.5) {
+            T = f.T[N - 1]
+                + 2.0 * (u - (N - 0.5)) * (out.fairleadTension - f.T[N - 1]);
+        } else {
+            const int j = std::min(int(u - 0.5), N - 2);
+            const double g = u - 0.5 - j;
+            T = (1.0 - g) * f.T[j] + g * f.T[j + 1];
+        }
+        out.shapeTension.push_back(T);
     }
     return out;
 }

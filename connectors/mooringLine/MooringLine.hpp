@@ -83,6 +83,20 @@ struct MooringLineParameters {
     //  positions and velocities at both ends (true), or straight lines
     //  between the positions at the step's mean velocity (false)
     bool hermiteEnds = true;
+    //- Free surface: no buoyancy, drag or added mass above the still water
+    //  level waterLevel [m] (global z), a node's submerged fraction ramping
+    //  from 1 at waterLevel - l/2 to 0 at waterLevel + l/2 (false: the
+    //  whole line is submerged)
+    bool freeSurface = false;
+    double waterLevel = 0.0;
+    //- Current [m/s], global frame: currentSurface at waterLevel,
+    //  currentSeabed at the seabed (the height of Q), linear in z between
+    //  them, constant beyond
+    Vector3 currentSurface = Vector3::Zero(), currentSeabed = Vector3::Zero();
+    //- Seabed Coulomb friction coefficient mu [-] (0: none) on the
+    //  horizontal velocity of nodes on the seabed, regularised below the
+    //  speed frictionVelocity [m/s]: F = -mu Fn v / max(|v|, frictionVelocity)
+    double seabedFriction = 0.0, frictionVelocity = 0.01;
 
     //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
     double weight() const;
@@ -110,8 +124,11 @@ struct MooringLineOutput {
     double fairleadTension = 0.0, anchorTension = 0.0, groundedLength = 0.0;
     //- Horizontal and (downward) vertical load of the line on A [N]
     double H = 0.0, V = 0.0;
-    //- Points from P to Q, equal steps of unstretched length [m]
+    //- Points from P to Q, equal steps of unstretched length [m], and the
+    //  effective tension there [N]: fairleadTension and anchorTension at
+    //  the ends, the segments' tensions at their middles, linear between
     std::vector<Vector3> shape;
+    std::vector<double> shapeTension;
 };
 
 class MooringLine {
@@ -132,14 +149,21 @@ public:
     //  attachment points of A and B (the kinematics at state.time + h).
     //  Throws UndefinedStateError (naming the integrator's failure) on
     //  failure, leaving `state` unchanged.
+    //  `flow`: the water's velocity [m/s] at points from P to Q at equal
+    //  steps of unstretched length (empty: none, else at least 2), held
+    //  over the step, interpolated linearly along the line to its nodes
+    //  and added to the current.
     void advance(MooringLineState& state, const BodyKinematics& A,
-                 const BodyKinematics& B, double h);
+                 const BodyKinematics& B, double h,
+                 const std::vector<Vector3>& flow = {});
 
     //- Loads and diagnostics of `state` with the ends at A's and B's
-    //  attachment points; shapePoints 0 or >= 2
+    //  attachment points, in the water's `flow` (as in advance);
+    //  shapePoints 0 or >= 2
     MooringLineOutput evaluate(const MooringLineState& state,
                                const BodyKinematics& A, const BodyKinematics& B,
-                               int shapePoints) const;
+                               int shapePoints,
+                               const std::vector<Vector3>& flow = {}) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
@@ -169,10 +193,15 @@ private:
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
     Vector3 attachmentVelocity(const BodyKinematics& body,
                                const Vector3& p) const;
+    //- The water's motion for `flow` (see advance) into `water`
+    void waterMotion(const std::vector<Vector3>& flow,
+                     WaterMotion& water) const;
 
     MooringLineParameters parameters_;
     double weight_ = 0.0;
     Ends ends_;
+    //- The water's motion over the step being taken
+    WaterMotion water_;
     std::unique_ptr<CvodeBdf> integrator_; // with Integrator::cvode
     CvodeBdf::Statistics trapezoidStatistics_;
     //- Node positions, velocities (ends included) and forces of the last
@@ -180,6 +209,7 @@ private:
     //  when it starts from exactly those positions and velocities
     mutable struct {
         std::vector<Vector3> r, v;
+        WaterMotion water;
         NodeForces f;
     } lastEvaluated_;
     //- Storage of trapezoidStep, overwritten by every step
