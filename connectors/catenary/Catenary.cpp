@@ -86,10 +86,12 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
         throw std::invalid_argument("catenary: shapePoints must be 0 or >= 2");
     }
     out.shape.resize(std::size_t(shapePoints));
+    out.shapeTension.resize(std::size_t(shapePoints));
     for (int i = 0; i < shapePoints; ++i) {
         const double sArc = line.length * (1.0 - double(i) / (shapePoints - 1));
         const Eigen::Vector2d p = catenaryPoint(line, s, x, z, sArc);
         out.shape[std::size_t(i)] = p_WQ_W + p[0] * eH + p[1] * zHat;
+        out.shapeTension[std::size_t(i)] = catenaryTension(line, s, sArc);
     }
     return out;
 }

@@ -47,6 +47,8 @@ struct CatenaryOutput {
     //- Points along the line from P (first) to Q (last), equally spaced in
     //  unstretched arc length, global frame [m]
     std::vector<Vector3> shape;
+    //- Effective tension at the shape points [N] (catenaryTension)
+    std::vector<double> shapeTension;
 };
 
 class Catenary final : public ConnectorLaw {

@@ -328,6 +328,30 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
             sl * a / (std::hypot(1.0, a) + 1.0) + 0.5 * w * sl * sl / EA};
 }
 
+double catenaryTension(const CatenaryLine& line, const CatenarySolution& sol,
+                       double s)
+{
+    const double w = line.weight, H = sol.H;
+    s = std::clamp(s, 0.0, line.length);
+    switch (sol.regime) {
+    case CatenaryRegime::slackWeightless:
+        return 0.0;
+    case CatenaryRegime::vertical:
+    case CatenaryRegime::folded:
+    case CatenaryRegime::suspended:
+        return std::hypot(H, sol.VA + w * s);
+    case CatenaryRegime::touchdown:
+    case CatenaryRegime::slackOnSeabed:
+        break;
+    }
+    const double Lb = sol.groundedLength;
+    if (s > Lb) {
+        return std::hypot(H, w * (s - Lb));
+    }
+    // on the seabed: the friction takes CB w per m from H towards the anchor
+    return std::max(H - line.seabedFriction * w * (Lb - s), 0.0);
+}
+
 double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
                       double x, double z)
 {

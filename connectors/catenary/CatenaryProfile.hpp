@@ -114,6 +114,14 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
                               const CatenarySolution& solution, double x,
                               double z, double s);
 
+//- Effective tension [N] at unstretched arc length s in [0, L] from the
+//  anchor: sqrt(H^2 + (VA + w s)^2) on a suspended line; on the seabed H,
+//  falling by CB w per m towards the anchor (never below 0), and
+//  sqrt(H^2 + (w (s - Lb))^2) above the touchdown point; the vertical
+//  regimes |VA + w s| (H = 0); 0 on a slack weightless line
+double catenaryTension(const CatenaryLine& line,
+                       const CatenarySolution& solution, double s);
+
 //- Strain energy plus the weight's potential energy relative to the
 //  anchor's height: integral of T^2/(2EA) + w z(s) over s [J]
 double catenaryEnergy(const CatenaryLine& line,

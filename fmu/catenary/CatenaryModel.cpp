@@ -131,6 +131,7 @@ CatenaryModel::evaluate(const double* values,
     o.H = c.solution.H;
     o.V = c.solution.V;
     o.shape = c.shape;
+    o.tension = c.shapeTension;
     return outputs(o);
 }
 

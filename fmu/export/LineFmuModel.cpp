@@ -57,14 +57,23 @@ void LineFmuModel::declareLineOutputs(const OutputDependencies& d)
                         d.loads);
         }
     }
+    for (int i = 1; i <= shapePoints; ++i) {
+        const std::string point = std::to_string(i);
+        extraOutput("shape.tension[" + point + "]", Shape::scalar, "N",
+                    "effective tension of the line at point " + point + " of "
+                        + n + " (shape.x, shape.y, shape.z)",
+                    d.loads);
+    }
 }
 
 ConnectorOutputs LineFmuModel::outputs(const LineOutputs& o) const
 {
-    if (o.shape.size() != std::size_t(shapePoints)) {
+    if (o.shape.size() != std::size_t(shapePoints)
+        || o.tension.size() != std::size_t(shapePoints)) {
         throw std::logic_error(
             identity().modelIdentifier + ": " + std::to_string(o.shape.size())
-            + " shape points, expected " + std::to_string(shapePoints));
+            + " shape points and " + std::to_string(o.tension.size())
+            + " tensions, expected " + std::to_string(shapePoints));
     }
     std::vector<double> extra
         = {o.fairleadTension, o.anchorTension, o.groundedLength, o.H, o.V};
@@ -73,6 +82,7 @@ ConnectorOutputs LineFmuModel::outputs(const LineOutputs& o) const
             extra.push_back(p[axis]);
         }
     }
+    extra.insert(extra.end(), o.tension.begin(), o.tension.end());
     return {o.loads, std::move(extra)};
 }
 

@@ -1,7 +1,8 @@
 // LineFmuModel: the connector FMU model of a mooring line (catenary.fmu,
 // mooringLine.fmu). Beyond the interface it words A.p as the fairlead and
 // B.p as the anchor, and adds the line's outputs: end tensions, grounded
-// length, H, V and a fixed number of points along the line.
+// length, H, V and a fixed number of points along the line with the
+// tension there.
 #ifndef FMU_EXPORT_LINEFMUMODEL_HPP
 #define FMU_EXPORT_LINEFMUMODEL_HPP
 
@@ -17,8 +18,9 @@ struct LineOutputs {
     double fairleadTension = 0.0, anchorTension = 0.0, groundedLength = 0.0;
     double H = 0.0, V = 0.0;
     //- LineFmuModel::shapePoints points from the fairlead P to Q, global
-    //  frame [m]
+    //  frame [m], and the line's effective tension there [N]
     std::vector<connectors::Vector3> shape;
+    std::vector<double> tension;
 };
 
 class LineFmuModel : public ConnectorFmuModel {
@@ -31,11 +33,11 @@ protected:
 
     //- The interface outputs, then fairleadTension, anchorTension,
     //  groundedLength, H, V (depending on `d.loads`), shape.x[1..N],
-    //  shape.y[1..N], shape.z[1..N]
+    //  shape.y[1..N], shape.z[1..N], shape.tension[1..N]
     void declareLineOutputs(const OutputDependencies& d);
 
     //- The outputs in declaration order; throws std::logic_error for a
-    //  shape of other than shapePoints points
+    //  shape or tension of other than shapePoints points
     ConnectorOutputs outputs(const LineOutputs& line) const;
 
     //- The H and V outputs (the solution of the previous evaluation)

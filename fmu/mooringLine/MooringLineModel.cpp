@@ -29,11 +29,19 @@ body. N = <code>segments</code> segments of unstretched length L/N; node 0 is
 Q, node N is P, the N-1 free nodes carry one segment's mass each:</p>
 <pre>
 segment tension  T = EA max(e, 0) + axialDamping de/dt,  e = strain
-node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 - w L/N z
-                 + seabed penalty + Morison drag in still water
-w = (massPerLength - waterDensity pi diameter^2/4) gravity
-A.F = -T_N-1 q_N-1 - w L/(2N) z,   B.F = T_0 q_0 - w L/(2N) z
+node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 + E_i
+E_i              = -(weight - buoyancy) + seabed penalty and friction
+                   + Morison drag relative to the water (current + flow)
+A.F = -T_N-1 q_N-1 + E_N,   B.F = T_0 q_0 + E_0   (the ends' half segments)
 </pre>
+<p>The water moves with the current profile (<code>current.surface</code>
+at <code>waterLevel</code>, <code>current.seabed</code> at the height of
+B.p, linear between) plus the inputs <code>shape.Ux/Uy/Uz[k]</code>: the
+water velocity at the points of the shape outputs of the previous step,
+held over the step and interpolated along the line.
+<code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
+<code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
+on the seabed, regularised below <code>frictionVelocity</code>.</p>
 <p>Inside each fmi2DoStep the node states are integrated by the implicit
 trapezoidal rule (<code>integrator</code> = 0, the default: one step per
 coupling step, or substeps no longer than <code>maxStep</code>, each one
@@ -98,6 +106,23 @@ const Scalar scalars[] = {
      "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0},
     {"maxStep", "s",
      "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0},
+    {"freeSurface", "1",
+     "1: no buoyancy, drag or added mass above waterLevel (a node's submerged "
+     "fraction ramps from 1 to 0 over one segment length around it); 0: the "
+     "whole line is submerged",
+     0.0},
+    {"waterLevel", "m",
+     "height (global z) of the still water surface: the free surface "
+     "(freeSurface = 1) and the top of the current profile",
+     0.0},
+    {"seabedFriction", "1",
+     "seabed Coulomb friction coefficient (axial and transverse), >= 0 "
+     "(0: none)",
+     0.0},
+    {"frictionVelocity", "m/s",
+     "speed below which the seabed friction is regularised (proportional to "
+     "the speed), > 0",
+     0.01},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -128,7 +153,13 @@ private:
     fmuExport::ConnectorOutputs
     lineOutputs(const connectors::MooringLineOutput& out) const;
 
+    //- The flow inputs as points from P to Q; empty when all are zero
+    std::vector<connectors::Vector3> flow(const double* values) const;
+
     Block first_; // first of the scalar parameters, in `scalars` order
+    Block currentSurface_, currentSeabed_;
+    //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..]
+    fmi2ValueReference flow_ = 0;
     std::unique_ptr<connectors::MooringLine> line_;
     std::vector<double> lineParameters_;
     std::optional<connectors::MooringLineState> state_;
@@ -149,12 +180,41 @@ MooringLineModel::MooringLineModel()
             first_ = b;
         }
     }
+    currentSurface_ = t.parameter(
+        "current.surface", Shape::vector3, "m/s",
+        "current at waterLevel, global frame (linear in z down to "
+        "current.seabed at the seabed, the height of B.p)",
+        {0.0, 0.0, 0.0});
+    currentSeabed_
+        = t.parameter("current.seabed", Shape::vector3, "m/s",
+                      "current at the seabed (the height of B.p), global frame",
+                      {0.0, 0.0, 0.0});
     declareBodies({1, 0, 0});
+    std::vector<Block> flowInputs;
+    const std::string n = std::to_string(shapePoints);
+    for (const char* axis : {"x", "y", "z"}) {
+        for (int i = 1; i <= shapePoints; ++i) {
+            const std::string point = std::to_string(i);
+            const Block b = t.input(
+                std::string("shape.U") + axis + "[" + point + "]",
+                Shape::scalar, "m/s",
+                std::string("water velocity, ") + axis
+                    + " (global frame), at point " + point + " of " + n
+                    + " of the shape outputs of the previous step, added to "
+                      "the current",
+                {0.0});
+            if (flowInputs.empty()) {
+                flow_ = b.first;
+            }
+            flowInputs.push_back(b);
+        }
+    }
     const std::vector<Block> positions = positionBlocks();
     const std::vector<Block> motion = join(positions, velocityBlocks());
     const Block all {first_.first, scalarCount};
     OutputDependencies d;
-    d.loads = join(motion, {all});
+    d.loads = join(join(motion, {all, currentSurface_, currentSeabed_}),
+                   flowInputs);
     d.length = positions;
     d.lengthRate = motion;
     d.tension = d.loads;
@@ -209,14 +269,39 @@ MooringLineModel::parameters(const double* values) const
         ? connectors::MooringLineParameters::Integrator::cvode
         : connectors::MooringLineParameters::Integrator::trapezoid;
     p.maxStep = s[19];
+    p.freeSurface = flag("freeSurface", s[20]);
+    p.waterLevel = s[21];
+    p.seabedFriction = s[22];
+    p.frictionVelocity = s[23];
+    p.currentSurface = vector3(values, currentSurface_);
+    p.currentSeabed = vector3(values, currentSeabed_);
     return p;
+}
+
+std::vector<connectors::Vector3>
+MooringLineModel::flow(const double* values) const
+{
+    std::vector<connectors::Vector3> points(
+        static_cast<std::size_t>(shapePoints), connectors::Vector3::Zero());
+    bool any = false;
+    for (int k = 0; k < shapePoints; ++k) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double u = values[flow_ + axis * shapePoints + k];
+            points[std::size_t(k)][axis] = u;
+            any = any || u != 0.0;
+        }
+    }
+    if (!any) {
+        points.clear();
+    }
+    return points;
 }
 
 connectors::MooringLine& MooringLineModel::line(const double* values)
 {
     std::vector<double> current(values + first_.first,
                                 values + first_.first + scalarCount);
-    for (const Block b : {A_p, B_p}) {
+    for (const Block b : {A_p, B_p, currentSurface_, currentSeabed_}) {
         current.insert(current.end(), values + b.first, values + b.first + 3);
     }
     if (!line_ || current != lineParameters_) {
@@ -237,6 +322,7 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     o.H = m.H;
     o.V = m.V;
     o.shape = m.shape;
+    o.tension = m.shapeTension;
     return outputs(o);
 }
 
@@ -246,12 +332,13 @@ MooringLineModel::evaluate(const double* values,
                            const connectors::BodyKinematics& B) const
 {
     if (state_ && line_) {
-        return lineOutputs(line_->evaluate(*state_, A, B, shapePoints));
+        return lineOutputs(
+            line_->evaluate(*state_, A, B, shapePoints, flow(values)));
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     const connectors::MooringLine law(parameters(values));
-    return lineOutputs(
-        law.evaluate(law.initialState(A, B, 0.0), A, B, shapePoints));
+    return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
+                                    shapePoints, flow(values)));
 }
 
 void MooringLineModel::initializeState(const double* values, double time)
@@ -272,10 +359,12 @@ void MooringLineModel::doStep(double* values, double, double h)
         = fmuExport::bodyKinematics(values, A);
     const connectors::BodyKinematics bodyB
         = fmuExport::bodyKinematics(values, B);
+    const std::vector<connectors::Vector3> water = flow(values);
     connectors::MooringLineState next = *state_;
-    law.advance(next, bodyA, bodyB, h);
-    writeOutputs(values,
-                 lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints)));
+    law.advance(next, bodyA, bodyB, h, water);
+    writeOutputs(
+        values,
+        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water)));
     state_ = std::move(next);
 }
 
