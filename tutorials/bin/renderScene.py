@@ -1,0 +1,758 @@
+"""renderScene [OPTIONS] [CASE]
+
+Renders a picture of a floating-body case (CASE, default .) without a
+display: the free surface, the floating bodies and the mooring lines at one
+written time, as PNG, or at every written time as an animation.
+
+  3D cases  the iso-surface alpha.water = 0.5 in translucent blue (the lines
+            and the bodies' wetted parts show through it), seen obliquely
+            from above, the tank's outline in black
+  2D cases  (a non-empty `empty` patch) the water (alpha.water >= 0.5) filled
+            in blue on the plane midway through the thin direction, seen from
+            the side, the tank in light grey
+  bodies    in orange: the patches that the mesh motion moves (`patches` in
+            constant/dynamicMeshDict, sixDoFRigidBodyDisplacement patches of
+            0.orig/ or 0/pointDisplacement), or those named by -bodies
+  lines     in dark grey: VTK/fmuConnectors/<name>.vtk.series (legacy VTK
+            polylines, one file per write time, written by the fmuConnector
+            restraints) or, when that folder is absent, the line shapes
+            (shape.x[i], shape.y[i], shape.z[i]) in
+            postProcessing/fmuConnectors/<startTime>/<name>.dat at the row of
+            the rendered time
+The case name and the time are printed in the top left corner. Cells that
+an overset mesh blanks (cellTypes 2, holes) are left out.
+
+Options:
+  -time T          the written time to render (default: the latest)
+  -output FILE     the picture (default CASE/plots/scene.png, with -time T
+                   CASE/plots/scene_T.png, with -animation
+                   CASE/plots/scene.gif)
+  -animation       a frame at every written time; encoded to FILE (GIF, or
+                   any format ffmpeg knows by FILE's extension) by ffmpeg or
+                   else ImageMagick's convert; with neither, the frames are
+                   kept in FILE's folder, <name>_frames/
+  -fps F           animation frames per second (default: real time, kept
+                   within 2-25)
+  -bodies "P ..."  the body patches (names or regular expressions); "none"
+                   for none
+  -lines "N ..."   the connectors to draw (default all that have a shape);
+                   "none" for none
+  -size WxH        picture size in pixels (default 1280 wide, 720 high in
+                   3D, the tank's aspect in 2D)
+  -help            print this help and exit
+
+Runs under ParaView's pvbatch (Debian packages paraview, python3-paraview;
+xvfb when there is no display): tutorials/bin/renderScene starts it.
+It prints the camera it used (position, focal point, view up, view angle or
+parallel scale), so that positions in the scene can be located in the
+picture.
+"""
+
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+WATER = (0.16, 0.42, 0.85)
+WATER_OPACITY = 0.55
+BODY = (0.96, 0.47, 0.08)
+LINE = (0.12, 0.12, 0.12)
+TANK_2D = (0.93, 0.93, 0.93)
+OUTLINE = (0.0, 0.0, 0.0)
+
+
+def fail(message):
+    sys.stderr.write("renderScene: %s\n" % message)
+    sys.exit(1)
+
+
+# ---------------------------------------------------------------- options
+
+def parse_options(argv):
+    opts = {"time": None, "output": None, "animation": False, "fps": None,
+            "bodies": None, "lines": None, "size": None, "case": "."}
+    takes_value = {"-time", "-output", "-fps", "-bodies", "-lines", "-size"}
+    i, positional = 0, []
+    while i < len(argv):
+        arg = argv[i]
+        if arg in ("-h", "-help", "--help"):
+            sys.stdout.write(__doc__)
+            sys.exit(0)
+        elif arg == "-animation":
+            opts["animation"] = True
+        elif arg in takes_value:
+            if i + 1 >= len(argv):
+                fail("%s needs a value" % arg)
+            i += 1
+            opts[arg[1:]] = argv[i]
+        elif arg.startswith("-"):
+            fail("unknown option %s (renderScene -help lists them)" % arg)
+        else:
+            positional.append(arg)
+        i += 1
+    if len(positional) > 1:
+        fail("one case directory expected, got: %s" % " ".join(positional))
+    if positional:
+        opts["case"] = positional[0]
+    if opts["time"] is not None and opts["animation"]:
+        fail("-time and -animation exclude each other")
+    if opts["time"] is not None and opts["time"] != "latest":
+        opts["time"] = positive_number("-time", opts["time"], allow_zero=True)
+    if opts["fps"] is not None:
+        opts["fps"] = positive_number("-fps", opts["fps"])
+    if opts["size"] is not None:
+        m = re.fullmatch(r"(\d+)x(\d+)", opts["size"])
+        if not m or int(m.group(1)) < 64 or int(m.group(2)) < 64:
+            fail("-size: expected WIDTHxHEIGHT in pixels, each at least 64,"
+                 " got '%s'" % opts["size"])
+        opts["size"] = (int(m.group(1)), int(m.group(2)))
+    for key in ("bodies", "lines"):
+        if opts[key] is not None:
+            opts[key] = [] if opts[key].strip() == "none" else opts[key].split()
+    return opts
+
+
+def positive_number(option, text, allow_zero=False):
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not (value > 0 or (allow_zero and value == 0)) or math.isinf(value):
+        fail("%s: expected a number %s 0, got '%s'"
+             % (option, ">=" if allow_zero else ">", text))
+    return value
+
+
+# ---------------------------------------------------- the case's dictionaries
+
+def read_dict_text(path):
+    """OpenFOAM dictionary text without comments ('' when absent)."""
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError:
+        return ""
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    return re.sub(r"//[^\n]*", " ", text)
+
+
+def read_boundary(case):
+    """[(name, type, nFaces)] of constant/polyMesh/boundary."""
+    for path in (os.path.join(case, "constant/polyMesh/boundary"),
+                 os.path.join(case, "processor0/constant/polyMesh/boundary")):
+        text = read_dict_text(path)
+        if text:
+            break
+    else:
+        fail("%s: no constant/polyMesh/boundary: not a meshed OpenFOAM case"
+             % case)
+    patches = []
+    for m in re.finditer(r"([A-Za-z_][\w.:-]*)\s*\{([^{}]*)\}", text):
+        if m.group(1) == "FoamFile":
+            continue
+        kind = re.search(r"\btype\s+(\w+)\s*;", m.group(2))
+        faces = re.search(r"\bnFaces\s+(\d+)\s*;", m.group(2))
+        patches.append((m.group(1), kind.group(1) if kind else "",
+                        int(faces.group(1)) if faces else 0))
+    return patches
+
+
+def moving_patch_names(case):
+    """Patch names (or quoted regular expressions) the mesh motion moves."""
+    names = []
+    text = read_dict_text(os.path.join(case, "constant/dynamicMeshDict"))
+    for m in re.finditer(r"\bpatches\s*\(([^)]*)\)", text):
+        names += m.group(1).split()
+    for folder in ("0.orig", "0"):
+        text = read_dict_text(os.path.join(case, folder, "pointDisplacement"))
+        names += re.findall(r"([A-Za-z_][\w.:-]*|\"[^\"]*\")\s*\{[^{}]*?"
+                            r"\btype\s+sixDoFRigidBodyDisplacement\s*;", text)
+    return names
+
+
+def select_patches(patterns, patches, option):
+    """The non-empty patches matching the names/regular expressions."""
+    chosen = []
+    for pattern in patterns:
+        regex = pattern.strip('"')
+        found = [p[0] for p in patches
+                 if re.fullmatch(regex, p[0]) and p[2] > 0]
+        if not found and option:
+            fail("%s: no patch with faces matches '%s'; patches: %s"
+                 % (option, pattern, " ".join(p[0] for p in patches)))
+        chosen += [name for name in found if name not in chosen]
+    return chosen
+
+
+def up_direction(case):
+    """Unit vector against gravity (constant/g), z by default."""
+    m = re.search(r"\bvalue\s*\(([^)]*)\)",
+                  read_dict_text(os.path.join(case, "constant/g")))
+    if m:
+        g = [float(v) for v in m.group(1).split()]
+        norm = math.sqrt(sum(v*v for v in g))
+        if len(g) == 3 and norm > 0:
+            return [-v/norm for v in g]
+    return [0.0, 0.0, 1.0]
+
+
+# ------------------------------------------------------------ mooring lines
+
+def near(a, b):
+    return abs(a - b) <= 1e-6*max(1.0, abs(a), abs(b))
+
+
+class VtkLines:
+    """Connector lines written by the bridge: VTK/fmuConnectors/*.vtk.series."""
+
+    def __init__(self, folder):
+        self.series = {}
+        for entry in sorted(os.listdir(folder)):
+            if not entry.endswith(".vtk.series"):
+                continue
+            path = os.path.join(folder, entry)
+            try:
+                with open(path) as f:
+                    files = json.load(f)["files"]
+                self.series[entry[:-len(".vtk.series")]] = [
+                    (float(item["time"]), os.path.join(folder, item["name"]))
+                    for item in files]
+            except (OSError, ValueError, KeyError, TypeError) as error:
+                fail("%s: not a ParaView series file (JSON with 'files', each"
+                     " with 'name' and 'time'): %s" % (path, error))
+
+    def names(self):
+        return list(self.series)
+
+    def polydata(self, name, time):
+        from vtkmodules.vtkIOLegacy import vtkPolyDataReader
+        for t, path in self.series[name]:
+            if near(t, time):
+                reader = vtkPolyDataReader()
+                reader.SetFileName(path)
+                reader.Update()
+                if reader.GetOutput().GetNumberOfPoints() < 2:
+                    fail("%s: no line in it (legacy VTK polydata with at"
+                         " least 2 POINTS expected)" % path)
+                return reader.GetOutput()
+        return None
+
+
+class DatLines:
+    """Line shapes from the connector outputs, postProcessing/fmuConnectors/
+    <startTime>/<name>.dat (columns shape.x[i], shape.y[i], shape.z[i])."""
+
+    def __init__(self, folder):
+        self.tables = {}   # name -> [(startTime, rows, columns of x, y, z)]
+        for start in os.listdir(folder):
+            try:
+                start_time = float(start)
+            except ValueError:
+                continue
+            for entry in os.listdir(os.path.join(folder, start)):
+                if entry.endswith(".dat"):
+                    self._read(os.path.join(folder, start, entry),
+                               entry[:-4], start_time)
+        for tables in self.tables.values():
+            tables.sort(key=lambda table: table[0])
+
+    def _read(self, path, name, start_time):
+        header, rows = None, []
+        with open(path) as f:
+            for line in f:
+                if line.startswith("#"):
+                    words = line[1:].split()
+                    if words and words[0] == "Time":
+                        header = words
+                elif line.strip():
+                    rows.append([float(v) for v in line.split()])
+        if header is None:
+            fail("%s: no '# Time ...' header line" % path)
+        xyz = []
+        for i in range(1, len(header) + 1):
+            cols = ["shape.%s[%d]" % (c, i) for c in "xyz"]
+            if not all(c in header for c in cols):
+                break
+            xyz.append([header.index(c) for c in cols])
+        if len(xyz) >= 2 and rows:
+            self.tables.setdefault(name, []).append((start_time, rows, xyz))
+
+    def names(self):
+        return sorted(self.tables)
+
+    def polydata(self, name, time):
+        """The shape in the row at `time`, from the latest start before it."""
+        tables = [t for t in self.tables[name] if t[0] <= time + 1e-9]
+        if not tables:
+            return None
+        _, rows, xyz = tables[-1]
+        row = min(rows, key=lambda r: abs(r[0] - time))
+        spacing = min((abs(r[0] - row[0]) for r in rows if r is not row),
+                      default=0.0)
+        if not (near(row[0], time) or abs(row[0] - time) <= 0.5*spacing):
+            return None
+        return polyline([[row[i] for i in cols] for cols in xyz])
+
+
+def polyline(points):
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    pts, cells = vtkPoints(), vtkCellArray()
+    cells.InsertNextCell(len(points))
+    for i, p in enumerate(points):
+        pts.InsertNextPoint(p)
+        cells.InsertCellPoint(i)
+    data = vtkPolyData()
+    data.SetPoints(pts)
+    data.SetLines(cells)
+    return data
+
+
+def connector_lines(case, wanted):
+    """The line source of the case and the names of the lines to draw."""
+    vtk_folder = os.path.join(case, "VTK/fmuConnectors")
+    dat_folder = os.path.join(case, "postProcessing/fmuConnectors")
+    if os.path.isdir(vtk_folder) and any(
+            e.endswith(".vtk.series") for e in os.listdir(vtk_folder)):
+        source = VtkLines(vtk_folder)
+    elif os.path.isdir(dat_folder):
+        source = DatLines(dat_folder)
+    else:
+        return None, []
+    names = source.names()
+    if wanted is None:
+        return source, names
+    for name in wanted:
+        if name not in names:
+            fail("-lines: no connector line '%s' in the case; lines: %s"
+                 % (name, " ".join(names) or "none"))
+    return source, wanted
+
+
+# ------------------------------------------------------------ the scene
+
+def load_vtk():
+    """ParaView's VTK modules, imported only once the options are checked
+    (-help and option errors need no ParaView)."""
+    from types import SimpleNamespace
+    import vtkmodules.vtkRenderingOpenGL2   # noqa: F401  the render window
+    import vtkmodules.vtkRenderingFreeType  # noqa: F401  the text
+    from vtkmodules.vtkCommonDataModel import (
+        vtkCompositeDataSet, vtkDataObject, vtkPlane)
+    from vtkmodules.vtkFiltersCore import (
+        vtkCellDataToPointData, vtkClipPolyData, vtkContourFilter, vtkCutter,
+        vtkPolyDataNormals, vtkThreshold, vtkTubeFilter)
+    from vtkmodules.vtkFiltersGeneral import vtkContourTriangulator
+    from vtkmodules.vtkFiltersModeling import vtkOutlineFilter
+    from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import (
+        vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
+        vtkTextActor, vtkWindowToImageFilter)
+    return SimpleNamespace(**locals())
+
+
+def cross(a, b):
+    return [a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2],
+            a[0]*b[1] - a[1]*b[0]]
+
+
+def unit(a):
+    norm = math.sqrt(sum(v*v for v in a))
+    return [v/norm for v in a]
+
+
+def axis(i):
+    return [1.0 if j == i else 0.0 for j in range(3)]
+
+
+class Scene:
+    """The case read by VTK's OpenFOAM reader, drawn by one render window."""
+
+    def __init__(self, case, bodies, two_d, up):
+        self.vtk = vtk = load_vtk()
+        self.case_name = os.path.basename(case)
+        self.bodies, self.two_d = bodies, two_d
+        reader = self.reader = vtk.vtkOpenFOAMReader()
+        reader.SetFileName(os.path.join(case, "system/controlDict"))
+        reader.SkipZeroTimeOff()
+        reader.CreateCellToPointOff()   # interpolated below, without holes
+        reader.DecomposePolyhedraOn()
+        reader.UpdateInformation()
+        if (reader.GetTimeValues() is None
+                and os.path.isdir(os.path.join(case, "processor0"))):
+            reader.SetCaseType(0)       # decomposed, not reconstructed
+            reader.UpdateInformation()
+        values = reader.GetTimeValues()
+        self.times = ([values.GetValue(i)
+                       for i in range(values.GetNumberOfTuples())]
+                      if values is not None else [])
+        reader.DisableAllPatchArrays()
+        reader.SetPatchArrayStatus("internalMesh", 1)
+        for body in bodies:
+            reader.SetPatchArrayStatus("patch/" + body, 1)
+        fields = [reader.GetCellArrayName(i)
+                  for i in range(reader.GetNumberOfCellArrays())]
+        if "alpha.water" not in fields:
+            fail("%s: no alpha.water field in the written times" % case)
+        reader.DisableAllCellArrays()
+        reader.DisableAllPointArrays()
+        reader.DisableAllLagrangianArrays()
+        reader.SetCellArrayStatus("alpha.water", 1)
+        # Overset meshes: cellTypes 2 marks the holes, whose alpha is stale
+        self.overset = "cellTypes" in fields
+        if self.overset:
+            reader.SetCellArrayStatus("cellTypes", 1)
+
+        self.up = up
+        self.renderer = vtk.vtkRenderer()
+        self.renderer.SetBackground(1.0, 1.0, 1.0)
+        # Translucent water in front of lines and bodies: depth peeling
+        self.renderer.SetUseDepthPeeling(1)
+        self.renderer.SetMaximumNumberOfPeels(8)
+        self.renderer.SetUseFXAA(True)
+        self.window = vtk.vtkRenderWindow()
+        self.window.SetOffScreenRendering(1)
+        self.window.SetAlphaBitPlanes(1)
+        self.window.SetMultiSamples(0)
+        self.window.AddRenderer(self.renderer)
+        self.size = None
+        self.camera_set = False
+
+    # -- geometry
+
+    def read(self, time):
+        """The internal mesh and the body patches at `time`."""
+        self.reader.UpdateTimeStep(time)
+        output = self.reader.GetOutput()
+        mesh, patches = None, {}
+        for i in range(output.GetNumberOfBlocks()):
+            name = output.GetMetaData(i).Get(self.vtk.vtkCompositeDataSet.NAME())
+            block = output.GetBlock(i)
+            if name == "internalMesh":
+                mesh = block
+            elif name == "boundary":
+                for j in range(block.GetNumberOfBlocks()):
+                    meta = block.GetMetaData(j)
+                    patches[meta.Get(self.vtk.vtkCompositeDataSet.NAME())] = \
+                        block.GetBlock(j)
+        if mesh is None or mesh.GetNumberOfCells() == 0:
+            fail("%s: no internal mesh read at t = %g" % (self.case_name, time))
+        return mesh, [patches[b] for b in self.bodies if b in patches]
+
+    def water_points(self, mesh):
+        """alpha.water on the points, from the cells the flow is solved in."""
+        vtk = self.vtk
+        source = mesh
+        if self.overset:
+            threshold = vtk.vtkThreshold()
+            threshold.SetInputData(mesh)
+            threshold.SetInputArrayToProcess(
+                0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_CELLS, "cellTypes")
+            threshold.SetLowerThreshold(-0.5)
+            threshold.SetUpperThreshold(1.5)
+            threshold.SetThresholdFunction(vtk.vtkThreshold.THRESHOLD_BETWEEN)
+            threshold.Update()
+            source = threshold.GetOutput()
+        to_points = vtk.vtkCellDataToPointData()
+        to_points.SetInputData(source)
+        to_points.Update()
+        data = to_points.GetOutput()
+        data.GetPointData().SetActiveScalars("alpha.water")
+        return data
+
+    def mid_plane(self, data):
+        """The plane midway through the thin direction of a 2D case."""
+        plane = self.vtk.vtkPlane()
+        plane.SetOrigin(self.centre)
+        plane.SetNormal(self.normal)
+        cut = self.vtk.vtkCutter()
+        cut.SetInputData(data)
+        cut.SetCutFunction(plane)
+        cut.Update()
+        return cut.GetOutput()
+
+    def add(self, data, colour, opacity=1.0, width=None, offset=0.0):
+        """An actor for polydata; offset: towards the camera in 2D views, in
+        units of the tank's size, so that the layers do not fight."""
+        mapper = self.vtk.vtkPolyDataMapper()
+        mapper.SetInputData(data)
+        mapper.ScalarVisibilityOff()
+        actor = self.vtk.vtkActor()
+        actor.SetMapper(mapper)
+        prop = actor.GetProperty()
+        prop.SetColor(colour)
+        prop.SetOpacity(opacity)
+        if width:
+            prop.SetLineWidth(width)
+        if offset:
+            actor.SetPosition([-v*offset*self.diagonal for v in self.normal])
+        self.renderer.AddActor(actor)
+        return prop
+
+    def build(self, time, lines):
+        vtk = self.vtk
+        self.renderer.RemoveAllViewProps()
+        mesh, bodies = self.read(time)
+        if not self.camera_set:
+            self.set_geometry(mesh.GetBounds())
+        water = self.water_points(mesh)
+        if self.two_d:
+            section = self.mid_plane(water)
+            self.add(section, TANK_2D, offset=-0.002)
+            clip = vtk.vtkClipPolyData()
+            clip.SetInputData(section)
+            clip.SetValue(0.5)          # keeps alpha.water >= 0.5
+            clip.Update()
+            self.add(clip.GetOutput(), WATER)
+            outline = vtk.vtkOutlineFilter()
+            outline.SetInputData(section)
+            outline.Update()
+            self.add(outline.GetOutput(), OUTLINE, width=2, offset=0.003)
+            for body in bodies:
+                loop = self.mid_plane(body)
+                fill = vtk.vtkContourTriangulator()
+                fill.SetInputData(loop)
+                fill.Update()
+                self.add(fill.GetOutput(), BODY, offset=0.001)
+                self.add(loop, [0.6*c for c in BODY], width=2, offset=0.0015)
+            for line in lines:
+                self.add(line, LINE, width=3, offset=0.002)
+        else:
+            contour = vtk.vtkContourFilter()
+            contour.SetInputData(water)
+            contour.SetInputArrayToProcess(
+                0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS,
+                "alpha.water")
+            contour.SetValue(0, 0.5)
+            normals = vtk.vtkPolyDataNormals()
+            normals.SetInputConnection(contour.GetOutputPort())
+            normals.SplittingOff()
+            normals.Update()
+            prop = self.add(normals.GetOutput(), WATER, opacity=WATER_OPACITY)
+            prop.SetSpecular(0.3)
+            prop.SetSpecularPower(30)
+            outline = vtk.vtkOutlineFilter()
+            outline.SetInputData(mesh)
+            outline.Update()
+            self.add(outline.GetOutput(), OUTLINE, width=2)
+            for body in bodies:
+                self.add(body, BODY)
+            for line in lines:
+                tube = vtk.vtkTubeFilter()
+                tube.SetInputData(line)
+                tube.SetRadius(0.003*self.diagonal)
+                tube.SetNumberOfSides(10)
+                tube.CappingOn()
+                tube.Update()
+                self.add(tube.GetOutput(), LINE)
+        text = vtk.vtkTextActor()
+        text.SetInput("%s    t = %g s" % (self.case_name, time))
+        font = max(14, int(min(0.017*self.size[0], 0.05*self.size[1])))
+        text.GetTextProperty().SetFontSize(font)
+        text.GetTextProperty().SetColor(0.0, 0.0, 0.0)
+        text.SetDisplayPosition(font//2, self.size[1] - font - font//2)
+        self.renderer.AddActor2D(text)
+
+    # -- camera and picture
+
+    def set_geometry(self, bounds):
+        """Tank size, view axes and, unless given, the picture size."""
+        self.bounds = bounds
+        lo, hi = bounds[0::2], bounds[1::2]
+        extent = [h - l for l, h in zip(lo, hi)]
+        self.centre = [(l + h)/2 for l, h in zip(lo, hi)]
+        self.diagonal = math.sqrt(sum(e*e for e in extent))
+        up_axis = max(range(3), key=lambda i: abs(self.up[i]))
+        horizontal = [i for i in range(3) if i != up_axis]
+        if self.two_d:
+            thin = min(horizontal, key=lambda i: extent[i])
+            along = [i for i in horizontal if i != thin][0]
+        else:
+            along = max(horizontal, key=lambda i: extent[i])
+        # Seen from the side where `along` points to the right
+        self.along = axis(along)
+        self.normal = unit(cross(self.up, self.along))
+        self.extent = (extent[along], extent[up_axis])
+        if self.size is None:
+            if self.two_d:
+                height = 1280*self.extent[1]/self.extent[0]*1.03/0.91
+                self.size = (1280, 2*int(min(1280, max(320, height))/2))
+            else:
+                self.size = (1280, 720)
+        self.window.SetSize(*self.size)
+
+    def set_size(self, size):
+        self.size = size
+
+    def set_camera(self):
+        camera = self.renderer.GetActiveCamera()
+        camera.SetFocalPoint(self.centre)
+        camera.SetViewUp(self.up)
+        if self.two_d:
+            # The tank fills the width, or the height less a band of 7 % at
+            # the top for the time and 2 % at the bottom
+            aspect = self.size[0]/self.size[1]
+            scale = max(1.03*self.extent[0]/2/aspect, self.extent[1]/2/0.91)
+            focus = [c + 0.05*scale*u for c, u in zip(self.centre, self.up)]
+            camera.ParallelProjectionOn()
+            camera.SetParallelScale(scale)
+            camera.SetFocalPoint(focus)
+            camera.SetPosition([c - 2*self.diagonal*n
+                                for c, n in zip(focus, self.normal)])
+        else:
+            # Obliquely from above, in front, a little from the generator side
+            direction = unit([-0.3*a - 1.0*n + 0.8*u for a, n, u
+                              in zip(self.along, self.normal, self.up)])
+            camera.SetPosition([c + self.diagonal*d
+                                for c, d in zip(self.centre, direction)])
+            self.renderer.ResetCamera()
+            camera.SetFocalPoint(self.centre)
+            camera.Zoom(0.92/self.largest_view_coordinate())
+        self.renderer.ResetCameraClippingRange()
+        self.camera_set = True
+
+    def largest_view_coordinate(self):
+        """The tank's corners' largest view coordinate (1: the picture's
+        edge)."""
+        largest = 0.0
+        for corner in range(8):
+            point = [self.bounds[2*i + (corner >> i & 1)] for i in range(3)]
+            self.renderer.SetWorldPoint(point + [1.0])
+            self.renderer.WorldToView()
+            view = self.renderer.GetViewPoint()
+            largest = max(largest, abs(view[0]), abs(view[1]))
+        return largest
+
+    def render(self, time, lines, png):
+        vtk = self.vtk
+        self.build(time, lines)
+        if not self.camera_set:
+            self.set_camera()
+        self.renderer.ResetCameraClippingRange()
+        self.window.Render()
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(self.window)
+        grab.SetInputBufferTypeToRGB()
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        writer = vtk.vtkPNGWriter()
+        writer.SetFileName(png)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
+        if writer.GetErrorCode():
+            fail("cannot write %s" % png)
+
+    def camera_text(self):
+        camera = self.renderer.GetActiveCamera()
+        return ("camera: position %s focalPoint %s viewUp %s viewAngle %.9g"
+                " parallelProjection %d parallelScale %.9g size %d %d"
+                % (" ".join("%.9g" % v for v in camera.GetPosition()),
+                   " ".join("%.9g" % v for v in camera.GetFocalPoint()),
+                   " ".join("%.9g" % v for v in camera.GetViewUp()),
+                   camera.GetViewAngle(), camera.GetParallelProjection(),
+                   camera.GetParallelScale(), self.size[0], self.size[1]))
+# --------------------------------------------------------------- main
+
+def main():
+    argv = sys.argv[1:]
+    if argv[:1] == ["--"]:      # the end of pvbatch's options
+        argv = argv[1:]
+    opts = parse_options(argv)
+    case = os.path.abspath(opts["case"])
+    if not os.path.isfile(os.path.join(case, "system/controlDict")):
+        fail("%s: not an OpenFOAM case (no system/controlDict)" % opts["case"])
+    patches = read_boundary(case)
+    if opts["bodies"] is None:
+        bodies = select_patches(moving_patch_names(case), patches, None)
+    else:
+        bodies = select_patches(opts["bodies"], patches, "-bodies")
+    lines, line_names = connector_lines(case, opts["lines"])
+    two_d = any(p[1] == "empty" and p[2] > 0 for p in patches)
+
+    scene = Scene(case, bodies, two_d, up_direction(case))
+    times = scene.times
+    if not times:
+        fail("%s: no written time" % opts["case"])
+    if opts["animation"]:
+        render_times = times
+    elif opts["time"] in (None, "latest"):
+        render_times = [times[-1]]
+    else:
+        render_times = [t for t in times if near(t, opts["time"])]
+        if not render_times:
+            fail("-time %g: not a written time of the case; written: %s"
+                 % (opts["time"], " ".join("%g" % t for t in times)))
+    output = opts["output"] or default_output(case, opts)
+    os.makedirs(os.path.dirname(os.path.abspath(output)), exist_ok=True)
+    scene.set_size(opts["size"])
+
+    def draw(time, png):
+        shapes = []
+        for name in line_names:
+            shape = lines.polydata(name, time)
+            if shape is not None:
+                shapes.append(shape)
+        scene.render(time, shapes, png)
+        return len(shapes)
+
+    if not opts["animation"]:
+        n = draw(render_times[0], output)
+        print("renderScene: wrote %s (t = %g s; bodies: %s; lines: %d of %d)"
+              % (output, render_times[0], " ".join(bodies) or "none", n,
+                 len(line_names)))
+    else:
+        animate(render_times, output, opts["fps"], draw)
+    print(scene.camera_text())
+
+
+def default_output(case, opts):
+    if opts["animation"]:
+        name = "scene.gif"
+    elif opts["time"] in (None, "latest"):
+        name = "scene.png"
+    else:
+        name = "scene_%g.png" % opts["time"]
+    return os.path.join(case, "plots", name)
+
+
+def animate(times, output, fps, draw):
+    """A frame per time into <output>_frames/, then encoded to output."""
+    base = os.path.splitext(output)[0]
+    frames = base + "_frames"
+    shutil.rmtree(frames, ignore_errors=True)
+    os.makedirs(frames)
+    for i, t in enumerate(times):
+        draw(t, os.path.join(frames, "frame_%04d.png" % i))
+    if fps is None:
+        steps = [b - a for a, b in zip(times, times[1:])]
+        real_time = 1.0/(sum(steps)/len(steps)) if steps else 2.0
+        fps = min(25.0, max(2.0, real_time))
+    pattern = os.path.join(frames, "frame_%04d.png")
+    if shutil.which("ffmpeg"):
+        # One palette for all frames: GIF has 256 colours
+        command = ["ffmpeg", "-loglevel", "error", "-y", "-framerate",
+                   "%g" % fps, "-i", pattern]
+        if output.lower().endswith(".gif"):
+            command += ["-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse"]
+        command.append(output)
+    elif shutil.which("convert"):
+        command = ["convert", "-delay", "%d" % round(100.0/fps), "-loop", "0"]
+        command += [os.path.join(frames, f) for f in sorted(os.listdir(frames))]
+        command.append(output)
+    else:
+        print("renderScene: %d frames in %s (neither ffmpeg nor ImageMagick's"
+              " convert found to encode them)" % (len(times), frames))
+        return
+    if subprocess.call(command) != 0:
+        fail("%s failed; the frames are kept in %s" % (command[0], frames))
+    shutil.rmtree(frames)
+    print("renderScene: wrote %s (%d frames, t = %g to %g s, %g frames/s)"
+          % (output, len(times), times[0], times[-1], fps))
+
+
+if __name__ == "__main__":
+    main()
