@@ -48,8 +48,9 @@ double MooringLineParameters::weight() const
 
 std::vector<double> MooringLineState::serialize() const
 {
-    std::vector<double> out = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1], P[2],
-                               vQ[0], vQ[1], vQ[2], vP[0], vP[1], vP[2]};
+    std::vector<double> out
+        = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],  vQ[0], vQ[1], vQ[2],
+           vP[0], vP[1], vP[2], aQ[0], aQ[1], aQ[2], aP[0], aP[1], aP[2]};
     out.insert(out.end(), nodes.begin(), nodes.end());
     return out;
 }
@@ -57,7 +58,7 @@ std::vector<double> MooringLineState::serialize() const
 MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
                                                int segments)
 {
-    const std::size_t expected = 13 + 6 * std::size_t(segments - 1);
+    const std::size_t expected = 19 + 6 * std::size_t(segments - 1);
     if (data.size() != expected) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(data.size())
@@ -70,7 +71,9 @@ MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
     s.P = Vector3(data[4], data[5], data[6]);
     s.vQ = Vector3(data[7], data[8], data[9]);
     s.vP = Vector3(data[10], data[11], data[12]);
-    s.nodes.assign(data.begin() + 13, data.end());
+    s.aQ = Vector3(data[13], data[14], data[15]);
+    s.aP = Vector3(data[16], data[17], data[18]);
+    s.nodes.assign(data.begin() + 19, data.end());
     return s;
 }
 
@@ -469,6 +472,19 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     state.P = ends_.P1;
     state.vQ = ends_.vQ1;
     state.vP = ends_.vP1;
+    // The ends' acceleration at the step's end: the Hermite path's
+    // (6 (r0 - r1)/h^2 + (2 v0 + 4 v1)/h), which is (v1 - v0)/h for
+    // positions and velocities of the trapezoidal rule (implicit Newmark);
+    // the straight path's mean, (v1 - v0)/h
+    const auto acceleration = [this](const Vector3& r0, const Vector3& r1,
+                                     const Vector3& v0, const Vector3& v1) {
+        const double h = ends_.h;
+        return parameters_.hermiteEnds
+            ? Vector3(6.0 * (r0 - r1) / (h * h) + (2.0 * v0 + 4.0 * v1) / h)
+            : Vector3((v1 - v0) / h);
+    };
+    state.aQ = acceleration(ends_.Q0, ends_.Q1, ends_.vQ0, ends_.vQ1);
+    state.aP = acceleration(ends_.P0, ends_.P1, ends_.vP0, ends_.vP1);
 }
 
 MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
@@ -507,6 +523,22 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     // drag, seabed) act on the bodies
     res.A.f_W = -f.T[N - 1] * f.q[N - 1] + f.external[N];
     res.B.f_W = f.T[0] * f.q[0] + f.external[0];
+    if (p.endInertia) {
+        // and their inertia: half a segment's mass and added mass moving
+        // with the attachment point
+        const double area = 0.25 * pi * p.diameter * p.diameter;
+        const auto inertia = [&](int i, const Vector3& a) {
+            const double added
+                = 0.5 * l * p.waterDensity * area * f.submerged[std::size_t(i)];
+            const Vector3& t = f.tangent[std::size_t(i)];
+            const double along = a.dot(t);
+            return Vector3(0.5 * l * p.massPerLength * a
+                           + added * p.normalAddedMass * (a - along * t)
+                           + added * p.tangentialAddedMass * along * t);
+        };
+        res.A.f_W -= inertia(N, state.aP);
+        res.B.f_W -= inertia(0, state.aQ);
+    }
     res.A.m_Ko_W = g.p_AoP_W.cross(res.A.f_W);
     res.B.m_Ko_W = g.p_BoQ_W.cross(res.B.f_W);
     res.length = g.length;

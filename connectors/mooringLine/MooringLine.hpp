@@ -97,6 +97,9 @@ struct MooringLineParameters {
     //  horizontal velocity of nodes on the seabed, regularised below the
     //  speed frictionVelocity [m/s]: F = -mu Fn v / max(|v|, frictionVelocity)
     double seabedFriction = 0.0, frictionVelocity = 0.01;
+    //- The end nodes' inertia on the bodies: their half segment's mass and
+    //  added mass times the end's acceleration (true), or none (false)
+    bool endInertia = true;
 
     //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
     double weight() const;
@@ -110,6 +113,9 @@ struct MooringLineState {
     Vector3 Q = Vector3::Zero(), P = Vector3::Zero();
     //- End velocities of Q and P at `time` [m/s] (the Hermite path's start)
     Vector3 vQ = Vector3::Zero(), vP = Vector3::Zero();
+    //- End accelerations of Q and P at `time` [m/s2] (the end of the last
+    //  step's path; zero at the start)
+    Vector3 aQ = Vector3::Zero(), aP = Vector3::Zero();
     //- Free nodes 1..N-1: x, y, z, vx, vy, vz each [m, m/s]
     std::vector<double> nodes;
 

@@ -3,8 +3,9 @@
 // CVODE), behind the connector FMU interface. The variable table below is
 // the only list of its variables.
 //
-// Internal state (Model::internalState): time, end positions and
-// velocities (the start of the next step's Hermite path) and the position
+// Internal state (Model::internalState): time, end positions, velocities
+// (the start of the next step's Hermite path) and accelerations, and the
+// position
 // and velocity of every free node. It is saved, restored and
 // serialized with the FMU state; each step starts the integrator from it,
 // so a step repeated after fmi2SetFMUstate gives the same outputs to the
@@ -123,6 +124,11 @@ const Scalar scalars[] = {
      "speed below which the seabed friction is regularised (proportional to "
      "the speed), > 0",
      0.01},
+    {"endInertia", "1",
+     "1: the loads include the inertia of the end nodes' half segments "
+     "(mass and added mass times the attachment point's acceleration); 0: "
+     "not",
+     1.0},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -273,6 +279,7 @@ MooringLineModel::parameters(const double* values) const
     p.waterLevel = s[21];
     p.seabedFriction = s[22];
     p.frictionVelocity = s[23];
+    p.endInertia = flag("endInertia", s[24]);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);
     return p;
