@@ -160,6 +160,28 @@ Foam::string Foam::fmuConnectorCore::listed(const wordList& words)
 }
 
 
+Foam::HashTable<Foam::fmuConnectorCore*>& Foam::fmuConnectorCore::liveCores()
+{
+    static HashTable<fmuConnectorCore*> live;
+    return live;
+}
+
+
+Foam::fmuConnectorCore* Foam::fmuConnectorCore::find
+(
+    const word& restraintName
+)
+{
+    return liveCores().lookup(restraintName, nullptr);
+}
+
+
+Foam::wordList Foam::fmuConnectorCore::names()
+{
+    return liveCores().sortedToc();
+}
+
+
 Foam::fileName Foam::fmuConnectorCore::caseFile
 (
     const fileName& fmuFile,
@@ -263,6 +285,10 @@ Foam::fmuConnectorCore::fmuConnectorCore
             << exit(FatalIOError);
     }
 
+    // The first core of a name is the one found by name (the two
+    // restraints of a sixDoF connector share one core)
+    liveCores().insert(restraintName_, this);
+
     if (!canRollback_)
     {
         WarningInFunction
@@ -276,7 +302,14 @@ Foam::fmuConnectorCore::fmuConnectorCore
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
 Foam::fmuConnectorCore::~fmuConnectorCore()
-{}
+{
+    HashTable<fmuConnectorCore*>& live = liveCores();
+    const auto iter = live.cfind(restraintName_);
+    if (iter.found() && *iter == this)
+    {
+        live.erase(restraintName_);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -132,6 +132,82 @@ void Foam::fmuConnectorCore::lookupVariables()
     A_.Mout = positions("A.M");
     B_.Fout = positions("B.F");
     B_.Mout = positions("B.M");
+
+    lookupShape();
+}
+
+
+void Foam::fmuConnectorCore::lookupShape()
+{
+    auto indexed = [](const char* base, const label k)
+    {
+        return word(std::string(base) + '[' + std::to_string(k) + ']', false);
+    };
+
+    for (label k = 1; ; ++k)
+    {
+        const labelList xyz
+        ({
+            outputNames_.find(indexed("shape.x", k)),
+            outputNames_.find(indexed("shape.y", k)),
+            outputNames_.find(indexed("shape.z", k))
+        });
+        if (min(xyz) < 0)
+        {
+            break;
+        }
+        shapeOut_.append(xyz);
+    }
+    const label n = nShapePoints();
+
+    for (label k = 1; k <= n; ++k)
+    {
+        const label i = outputNames_.find(indexed("shape.tension", k));
+        if (i < 0)
+        {
+            tensionOut_.clear();
+            break;
+        }
+        tensionOut_.append(i);
+    }
+
+    // The water velocity inputs: all of them at every shape point, or none
+    const fmuImport::Fmu& fmu = fmu_();
+    wordList missing;
+    for (label k = 1; k <= max(n, label(1)); ++k)
+    {
+        for (const char* base : {"shape.Ux", "shape.Uy", "shape.Uz"})
+        {
+            const word name(indexed(base, k));
+            if
+            (
+                fmu.hasVariable(name)
+             && fmu.variable(name).causality == fmuImport::Causality::input
+             && fmu.variable(name).type == fmuImport::Type::Real
+            )
+            {
+                flowRefs_.push_back(fmu.variable(name).valueReference);
+            }
+            else
+            {
+                missing.append(name);
+            }
+        }
+    }
+    if (flowRefs_.empty())
+    {
+        return;
+    }
+    if (missing.size() || fmu.hasVariable(indexed("shape.Ux", n + 1)))
+    {
+        FatalErrorInFunction
+            << where().c_str() << "the FMU declares water velocity inputs"
+            << " shape.Ux/Uy/Uz but not as Real inputs at each of its " << n
+            << " shape points (outputs shape.x/y/z[1.." << n << "])"
+            << (missing.size() ? "; missing: " : "")
+            << listed(missing).c_str() << exit(FatalError);
+    }
+    flowValues_.assign(flowRefs_.size(), 0);
 }
 
 
@@ -164,6 +240,10 @@ void Foam::fmuConnectorCore::setInputs
     if (!massRefs_.empty())
     {
         instance_->setReal(massRefs_, massValues_);
+    }
+    if (!flowRefs_.empty())
+    {
+        instance_->setReal(flowRefs_, flowValues_);
     }
 }
 
@@ -241,6 +321,41 @@ Foam::scalar Foam::fmuConnectorCore::output
 {
     const label i = outputNames_.find(name);
     return i < 0 ? deflt : outputs_[i];
+}
+
+
+Foam::pointField Foam::fmuConnectorCore::shapePoints() const
+{
+    pointField points(nShapePoints());
+    forAll(points, k)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            points[k][d] = outputs_[shapeOut_[3*k + d]];
+        }
+    }
+    return points;
+}
+
+
+Foam::scalarField Foam::fmuConnectorCore::shapeTension() const
+{
+    return scalarField(outputs_, tensionOut_);
+}
+
+
+void Foam::fmuConnectorCore::setFlow(const vectorField& U)
+{
+    if (3*U.size() != label(flowRefs_.size()))
+    {
+        FatalErrorInFunction
+            << where().c_str() << U.size() << " water velocities given for "
+            << flowRefs_.size()/3 << " inputs" << abort(FatalError);
+    }
+    forAll(U, k)
+    {
+        std::copy(U[k].cdata(), U[k].cdata() + 3, &flowValues_[3*k]);
+    }
 }
 
 

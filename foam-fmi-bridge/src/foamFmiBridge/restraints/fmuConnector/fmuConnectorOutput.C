@@ -11,6 +11,8 @@ License
 #include "Time.H"
 #include "OSspecific.H"
 #include "DynamicList.H"
+#include "OFstream.H"
+#include "IFstream.H"
 
 #include <algorithm>
 #include <charconv>
@@ -224,7 +226,108 @@ bool Foam::fmuConnectorOutput::writeObject
 {
     // The time is written after the step's last solve: its row is final
     const_cast<fmuConnectorOutput&>(*this).flush(true);
+    writeShape();
     return file_.good();
+}
+
+
+void Foam::fmuConnectorOutput::writeShape() const
+{
+    const label n = fmu_.nShapePoints();
+    if (n < 2)
+    {
+        return;
+    }
+
+    const Time& runTime = time();
+    const fileName dir(runTime.globalPath()/"VTK"/"fmuConnectors");
+    mkDir(dir);
+    const word file
+    (
+        name_ + '_' + Foam::name(runTime.timeIndex()) + ".vtk"
+    );
+
+    {
+        OFstream os(dir/file);
+        os.precision(IOstream::defaultPrecision());
+        os  << "# vtk DataFile Version 2.0" << nl
+            << "connector " << name_ << " at t = " << runTime.timeName() << nl
+            << "ASCII" << nl
+            << "DATASET POLYDATA" << nl
+            << "POINTS " << n << " double" << nl;
+        for (const point& p : fmu_.shapePoints())
+        {
+            os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
+        }
+        os  << "LINES 1 " << n + 1 << nl << n;
+        for (label k = 0; k < n; ++k)
+        {
+            os  << ' ' << k;
+        }
+        os  << nl;
+
+        if (fmu_.reportsShapeTension())
+        {
+            os  << "POINT_DATA " << n << nl
+                << "SCALARS tension double 1" << nl
+                << "LOOKUP_TABLE default" << nl;
+            for (const scalar T : fmu_.shapeTension())
+            {
+                os  << T << nl;
+            }
+        }
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "connector " << name_ << ": cannot write " << os.name()
+                << exit(FatalError);
+        }
+    }
+
+    // The series: the entries of earlier times (a restarted run drops
+    // those from its start on), then this one; written to a temporary file
+    // and renamed, so that a reader never sees half a file
+    const fileName series(dir/(name_ + ".vtk.series"));
+    const scalar t = runTime.value();
+    std::string entries;
+    {
+        std::ifstream is(series);
+        std::string line;
+        while (std::getline(is, line))
+        {
+            const auto at = line.find("\"time\"");
+            if (line.find("\"name\"") == std::string::npos || at == line.npos)
+            {
+                continue;
+            }
+            const std::string rest(line.substr(line.find(':', at) + 1));
+            if (std::strtod(rest.c_str(), nullptr) < t - 0.5*runTime.deltaTValue())
+            {
+                entries += line.substr(0, line.find_last_not_of(", ") + 1);
+                entries += ",\n";
+            }
+        }
+    }
+    OStringStream entry;
+    entry.precision(IOstream::defaultPrecision());
+    entry
+        << "    { \"name\": \"" << file.c_str() << "\", \"time\": " << t
+        << " }\n";
+    entries += entry.str();
+
+    const fileName tmp(series + ".tmp");
+    {
+        std::ofstream os(tmp);
+        os  << "{\n  \"file-series-version\": \"1.0\",\n  \"files\": [\n"
+            << entries << "  ]\n}\n";
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "connector " << name_ << ": cannot write " << tmp
+                << exit(FatalError);
+        }
+    }
+    Foam::mv(tmp, series);
 }
 
 

@@ -1,0 +1,193 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fmuConnectorFlow.H"
+#include "fmuConnectorCore.H"
+#include "interpolation.H"
+#include "volFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(fmuConnectorFlow, 0);
+    addToRunTimeSelectionTable(functionObject, fmuConnectorFlow, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
+(
+    const label i
+)
+{
+    OFstream& os = files(i);
+    const fmuConnectorCore& core = *fmuConnectorCore::find(connectors_[i]);
+
+    writeHeader(os, "Water velocity at the shape points of " + connectors_[i]);
+    writeCommented(os, "Time");
+    for (label k = 1; k <= core.nShapePoints(); ++k)
+    {
+        for (const char* c : {"Ux", "Uy", "Uz"})
+        {
+            writeTabbed(os, word(c) + '[' + Foam::name(k) + ']');
+        }
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::fmuConnectorFlow::fmuConnectorFlow
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    logFiles(obr_, name)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+
+    connectors_ = dict.get<wordList>("connectors");
+    UName_ = dict.getOrDefault<word>("U", "U");
+    scheme_ = dict.getOrDefault<word>("interpolationScheme", "cellPoint");
+
+    if (connectors_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "function object " << name() << ": entry connectors is empty;"
+            << " expected the names of fmuConnector restraints whose FMUs"
+            << " take the water velocity" << exit(FatalIOError);
+    }
+
+    // The connectors run on the master process, which checks them
+    if (Pstream::master())
+    {
+        for (const word& connector : connectors_)
+        {
+            const fmuConnectorCore* core = fmuConnectorCore::find(connector);
+            if (!core)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "function object " << name() << ": entry connectors"
+                    << " names " << connector << ", which is not an"
+                    << " fmuConnector restraint of the case; the restraints"
+                    << " with a connector FMU are: "
+                    << fmuConnectorCore::listed(fmuConnectorCore::names())
+                       .c_str()
+                    << exit(FatalIOError);
+            }
+            if (!core->takesFlow())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "function object " << name() << ": entry connectors"
+                    << " names " << connector << ", whose FMU " << core->file()
+                    << " declares no water velocity inputs (shape.Ux/Uy/Uz[k]"
+                    << " at its shape points)" << exit(FatalIOError);
+            }
+        }
+    }
+
+    resetNames(connectors_);
+    if (Pstream::master())
+    {
+        forAll(connectors_, i)
+        {
+            writeFileHeader(i);
+        }
+    }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::fmuConnectorFlow::execute()
+{
+    const volVectorField& U = lookupObject<volVectorField>(UName_);
+
+    // The shape points of every connector, known on the master
+    List<pointField> points(connectors_.size());
+    if (Pstream::master())
+    {
+        forAll(connectors_, i)
+        {
+            points[i] = fmuConnectorCore::find(connectors_[i])->shapePoints();
+        }
+    }
+    Pstream::scatter(points);
+
+    // Each processor samples the points in its cells; a point on a
+    // processor boundary may be found by two, whose values are averaged
+    autoPtr<interpolation<vector>> interp
+    (
+        interpolation<vector>::New(scheme_, U)
+    );
+    List<vectorField> sums(points.size());
+    List<scalarField> counts(points.size());
+    forAll(points, i)
+    {
+        sums[i].setSize(points[i].size(), Zero);
+        counts[i].setSize(points[i].size(), Zero);
+        forAll(points[i], k)
+        {
+            const label celli = mesh_.findCell(points[i][k]);
+            if (celli >= 0)
+            {
+                sums[i][k] = interp->interpolate(points[i][k], celli);
+                counts[i][k] = 1;
+            }
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<vectorField>());
+    Pstream::listCombineGather(counts, plusEqOp<scalarField>());
+
+    if (Pstream::master())
+    {
+        forAll(connectors_, i)
+        {
+            const vectorField flow(sums[i]/max(counts[i], scalar(1)));
+            fmuConnectorCore::find(connectors_[i])->setFlow(flow);
+
+            OFstream& os = files(i);
+            writeCurrentTime(os);
+            for (const vector& u : flow)
+            {
+                os  << tab << u.x() << tab << u.y() << tab << u.z();
+            }
+            os  << endl;
+        }
+    }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::fmuConnectorFlow::write()
+{
+    return true;
+}
+
+
+// ************************************************************************* //
