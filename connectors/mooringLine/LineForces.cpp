@@ -85,6 +85,7 @@ void nodeForces(const MooringLineParameters& p, double w,
     f.normalDrag.assign(n, 0.0);
     f.tangentialDrag.assign(n, 0.0);
     f.friction.assign(n, 0.0);
+    f.sliding.assign(n, Vector3::Zero());
     f.relative.resize(n);
     f.strainEnergy = f.seabedEnergy = f.dissipatedPower = f.gravityEnergy = 0.0;
     f.groundedSegments = 0;
@@ -158,9 +159,13 @@ void nodeForces(const MooringLineParameters& p, double w,
             // mu push v / max(|v|, frictionVelocity)
             if (p.seabedFriction > 0.0 && push > 0.0) {
                 const Vector3 vh(v[i][0], v[i][1], 0.0);
+                const double speed = vh.norm();
                 const double c = p.seabedFriction * push
-                    / std::max(vh.norm(), p.frictionVelocity);
+                    / std::max(speed, p.frictionVelocity);
                 f.friction[i] = c;
+                if (speed > p.frictionVelocity) {
+                    f.sliding[i] = vh / speed;
+                }
                 E -= c * vh;
                 f.dissipatedPower += c * vh.squaredNorm();
             }

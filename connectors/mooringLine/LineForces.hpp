@@ -46,6 +46,10 @@ struct NodeForces {
     std::vector<double> submerged, normalDrag, tangentialDrag, friction;
     std::vector<double> normalMass, tangentialMass;
     std::vector<Vector3> relative;
+    //- Per node: the unit horizontal velocity where the seabed friction
+    //  is saturated (|v| above frictionVelocity; its magnitude then does
+    //  not change with the speed), else zero
+    std::vector<Vector3> sliding;
     //- Potential of gravity and buoyancy of all nodes (the ends' half
     //  segments), heights from z = 0 [J]
     double gravityEnergy = 0.0;

@@ -175,9 +175,14 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
             b(2, 2) += stiffness * p.seabedStiffness * d * l
                 + damping * p.seabedDamping * std::min(depth / restDepth, 1.0)
                     * d * l;
-            // friction: its damping on the horizontal velocity
-            b(0, 0) += damping * f.friction[k];
-            b(1, 1) += damping * f.friction[k];
+            // friction: c v below the regularisation speed, of constant
+            // magnitude above it (damping only across the sliding
+            // direction e: c (I - e e') in the horizontal plane)
+            const Vector3& e = f.sliding[k];
+            Matrix3 friction = Matrix3::Zero();
+            friction(0, 0) = friction(1, 1) = 1.0;
+            friction -= e * e.transpose();
+            b += damping * f.friction[k] * friction;
         }
     }
 }
