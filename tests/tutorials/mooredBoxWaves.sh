@@ -1,0 +1,174 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Smoke test of tutorials/mooredBoxWaves: the moored box of Wu et al. (2018)
+# (0.2 m x 0.2 m x 0.132 m, 3.148 kg) on four quasi-static catenary lines
+# (catenary.fmu, fmuConnector restraints, implicitNewmark) in Stokes II
+# waves (H = 0.12 m, T = 2 s), at the default mesh (7680 cells) to 9 s: the
+# ramp (2 s), the waves' arrival at the box (3.7 s) and 2.5 periods (about
+# 3 minutes). Checks:
+#  - the solver reaches 9 s; implicitNewmark converged in every solve;
+#  - hydrostatics and line pretension: before the waves reach the box
+#    (t <= 1.2 s) it floats at the draught where buoyancy carries its weight
+#    and the lines' vertical pull, solved independently
+#    (tutorials/mooredBoxWaves/mooringStatics: elastic catenary with
+#    touchdown), and does not drift or tilt;
+#  - every row of every line: the fairlead tension is that of the
+#    independent elastic catenary for the fairlead position the line logged
+#    (shape point 1) and its anchor;
+#  - the box responds at the wave period: its heave's up-crossings from 4 s
+#    (after the waves' arrival) are T apart within 10 %, over a range above
+#    H/3;
+#  - raoAnalysis writes its summary and the plots are written.
+# Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so,
+# libimplicitRigidBodySolvers.so and build/fmus/catenary.fmu. Exits non-zero
+# on the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+. "$(dirname "$0")/connectorTestFunctions"
+
+endTime=9
+wavePeriod=2
+waveHeight=0.12
+restEnd=1.2
+statics=$FOAMFMI_DIR/tutorials/mooredBoxWaves/mooringStatics
+
+requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
+    "the bridge library (build it: ./Allwmake)"
+requireFile "$FOAM_USER_LIBBIN/libimplicitRigidBodySolvers.so" \
+    "the implicit rigid-body solver library (build it: ./Allwmake)"
+requireFile "$FOAMFMI_FMU_DIR/catenary.fmu" \
+    "the catenary FMU (build it: cmake --build build)"
+
+makeWorkDir
+case=$workDir/mooredBoxWaves
+runTutorial mooredBoxWaves "$case" -end-time $endTime
+checkRanToEnd "$case" $endTime
+log=$(solverLog "$case")
+stats=$(grep '^Rigid-body solver implicitNewmark: [0-9]* solves' "$log") \
+    || fail "$log: no statistics line of implicitNewmark"
+if grep -q -i 'warning' "$log"
+then
+    grep -i -A 4 'warning' "$log" | head -n 20 1>&2
+    fail "$log: warnings (above)"
+fi
+pass "implicitNewmark, no warnings: ${stats#Rigid-body solver implicitNewmark: }"
+motion=$case/postProcessing/rigidBodyMotion/floatingObject.dat
+requireFile "$motion" "the box's motion"
+
+
+# --- At rest before the waves arrive -----------------------------------------
+# The analytic rest position: centre of mass at z = 0.48037 m, 83.23 mm
+# draught (78.84 mm from the mass alone, 4.39 mm from the lines' pull).
+# The mean height over t <= 1.2 s (the waves' first disturbance reaches the
+# box at about 1.5 s) must be within 1 mm of it: the flow's start (the
+# pressure builds up in the first steps) sets the box heaving by about
+# 2.3 mm at its own period (about 0.8 s), which the mean over 1.5 of its
+# periods leaves within 0.5 mm; a box that missed the lines' pull would sit
+# 4.4 mm higher. No heave away from it beyond 4 mm (twice that start-up
+# amplitude), no sway or surge beyond 1 mm, no tilt beyond 0.1 deg.
+zRest=$(python3 "$statics" -json | python3 -c 'import json, sys; print(json.load(sys.stdin)["centreOfMassZ"])') \
+    || fail "$statics failed"
+awk -v t1=$restEnd -v z0="$zRest" '
+function abs(x) { return x < 0 ? -x : x }
+/^#/ || $1 > t1 { next }
+{
+    n++; s += $4
+    if (abs($4 - z0) > dz) dz = abs($4 - z0)
+    h = sqrt($2^2 + $3^2); if (h > dh) dh = h
+    if ($5 > da) da = $5
+}
+END {
+    if (n < 20) { print "only " n " steps before t = " t1 " s" > "/dev/stderr"; exit 1 }
+    m = s/n
+    printf("mean centre of mass z = %.5f m over %d steps to %g s (analytic %.5f m, %+.2f mm); largest |dz| %.2f mm, horizontal %.3f mm, tilt %.3f deg\n", m, n, t1, z0, 1000*(m - z0), 1000*dz, 1000*dh, da)
+    exit !(abs(m - z0) < 1e-3 && dz < 4e-3 && dh < 1e-3 && da < 0.1)
+}' "$motion" > "$workDir/check.out" \
+    || fail "the box is not at rest at its draught before the waves: $(cat "$workDir/check.out")"
+pass "at rest: $(cat "$workDir/check.out")"
+
+
+# --- Line tensions against an independent catenary ---------------------------
+# Every row of every line: the fairlead tension against the elastic
+# catenary with touchdown of mooringStatics (Jonkman's closed form, Newton
+# to 1e-13 m; length, EA and submerged weight of the case's
+# constant/mooringLines) for the fairlead the line logged (shape.x/y/z[1])
+# and its anchor (shape.x/y/z[11]). Both solve the same equations; the tolerance, 1e-6 of the
+# tension, is far above their convergence and the 17 digits written, and
+# far below any change of the law (seabed friction, the stretch: EA = 29 N
+# stretches the line by 1.9 %).
+for n in 1 2 3 4
+do
+    dat=$(connectorFile "$case" line$n)
+    python3 - "$statics" "$dat" "$case/constant/mooringLines" > "$workDir/check.out" <<'PYTHON' || fail "$dat: $(cat "$workDir/check.out")"
+import sys
+from importlib.machinery import SourceFileLoader
+import re
+statics = SourceFileLoader("mooringStatics", sys.argv[1]).load_module()
+path = sys.argv[2]
+# The line of the case (constant/mooringLines, lineParameters)
+with open(sys.argv[3]) as f:
+    text = re.sub(r"//.*", "", f.read())
+par = {}
+for key in ("unstretchedLength", "EA", "weight"):
+    m = re.search(r"\b" + key + r"\s+([-+0-9.eE]+)\s*;", text)
+    if not m:
+        sys.exit("no %s in %s" % (key, sys.argv[3]))
+    par[key] = float(m.group(1))
+names, rows = None, []
+with open(path) as f:
+    for line in f:
+        if line.startswith("# Time"):
+            names = line[1:].split()
+        elif not line.startswith("#") and line.strip():
+            rows.append([float(v) for v in line.split()])
+if not names or not rows:
+    sys.exit("no rows")
+c = {k: names.index(k) for k in ("shape.x[1]", "shape.y[1]", "shape.z[1]",
+                                 "shape.x[11]", "shape.y[11]", "shape.z[11]",
+                                 "fairleadTension")}
+worst = (0.0, 0.0, 0.0)
+for r in rows:
+    fairlead = (r[c["shape.x[1]"]], r[c["shape.y[1]"]], r[c["shape.z[1]"]])
+    anchor = (r[c["shape.x[11]"]], r[c["shape.y[11]"]], r[c["shape.z[11]"]])
+    expected = statics.line_tension(fairlead, anchor, par["unstretchedLength"],
+                                    par["weight"], par["EA"])[0]
+    err = abs(r[c["fairleadTension"]] - expected) / expected
+    if err > worst[0]:
+        worst = (err, r[0], expected)
+    if err > 1e-6:
+        print("t = %g s: fairlead tension %.9g N, catenary %.9g N" % (r[0], r[c["fairleadTension"]], expected))
+        sys.exit(1)
+t = [r[c["fairleadTension"]] for r in rows]
+print("%d rows, fairlead tension %.3f-%.3f N, largest relative difference %.1e (t = %g s)"
+      % (len(rows), min(t), max(t), worst[0], worst[1]))
+PYTHON
+    pass "line$n: $(cat "$workDir/check.out")"
+done
+
+
+# --- The response has the wave period ----------------------------------------
+# Heave up-crossings of its mean from 4 s (the wave front reaches the box
+# at 3.7 s): the waves force the box at T = 2 s; left to itself it heaves at
+# about 0.8 s and sways at the lines' period, several seconds. 10 % of T
+# tells T from both and allows the start-up transient that shifts the
+# crossings. Range above H/3 in the last period: a box that follows a wave
+# 20 times its length heaves by about the wave height.
+awk -v t0=4 -v T=$wavePeriod -v H=$waveHeight -v tEnd=$endTime '
+/^#/ || $1 < t0 { next }
+{ n++; t[n] = $1; z[n] = $4; s += $4 }
+END {
+    m = s/n
+    for (i = 2; i <= n; i++)
+        if (z[i-1] < m && z[i] >= m) { c[++k] = t[i-1] + (m - z[i-1])/(z[i] - z[i-1])*(t[i] - t[i-1]) }
+    for (i = 1; i <= n; i++)
+        if (t[i] >= tEnd - T) { if (!lo || z[i] < zl) zl = z[i]; if (!lo || z[i] > zh) zh = z[i]; lo = 1 }
+    if (k < 2) { print "fewer than two up-crossings after " t0 " s"; exit 1 }
+    p = (c[k] - c[1])/(k - 1)
+    printf("heave period %.3f s (%d intervals from %g s, wave period %g s), range %.3f m in the last period\n", p, k - 1, t0, T, zh - zl)
+    exit !(p > 0.9*T && p < 1.1*T && zh - zl > H/3)
+}' "$motion" > "$workDir/check.out" \
+    || fail "the box does not respond at the wave period: $(cat "$workDir/check.out")"
+pass "$(cat "$workDir/check.out")"
+
+requireFile "$case/plots/rao.dat" "summary of raoAnalysis"
+checkPlots "$case" rao rotation displacement
