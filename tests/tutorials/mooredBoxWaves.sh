@@ -3,7 +3,7 @@
 # Smoke test of tutorials/mooredBoxWaves: the moored box of Wu et al. (2018)
 # (0.2 m x 0.2 m x 0.132 m, 3.148 kg) on four quasi-static catenary lines
 # (catenary.fmu, fmuConnector restraints, implicitNewmark) in Stokes II
-# waves (H = 0.12 m, T = 2 s), at the default mesh (7680 cells) to 9 s: the
+# waves (H = 0.04 m, T = 2 s), at the default mesh (7680 cells) to 9 s: the
 # ramp (2 s), the waves' arrival at the box (3.7 s) and 2.5 periods (about
 # 3 minutes). Checks:
 #  - the solver reaches 9 s; implicitNewmark converged in every solve;
@@ -28,7 +28,7 @@
 
 endTime=9
 wavePeriod=2
-waveHeight=0.12
+waveHeight=0.04
 restEnd=1.2
 statics=$FOAMFMI_DIR/tutorials/mooredBoxWaves/mooringStatics
 
