@@ -332,3 +332,50 @@ TEST(CatenaryProfile, SlackLineOnOneVerticalFolds)
 }
 
 } // namespace
+
+namespace {
+
+TEST(CatenaryProfile, TensionAlongTheLineMatchesItsStretchAndSlope)
+{
+    // The tension along the profile against the profile's own geometry:
+    // an elastic line stretches by 1 + T/EA, and the horizontal part of T
+    // is H wherever the line hangs (the seabed carries no horizontal
+    // load, only the friction). Central differences over 1 mm of arc:
+    // truncation (1 mm)^2/6 times the squared curvature (H/w ~ 30 m) is
+    // 1e-9 of the stretch, 0.05 N in EA; round-off of the 100 m
+    // coordinates over 2 mm, 1e-13 x EA = 5e-6 N
+    for (const double friction : {0.0, 0.5}) {
+        for (const bool seabed : {false, true}) {
+            const CatenaryLine l = chain(seabed, friction);
+            const double x = 85.0, z = 40.0;
+            const CatenarySolution s = solveCatenary(l, x, z);
+            // with the seabed a part lies on it (checked there too)
+            EXPECT_EQ(s.groundedLength > 5.0, seabed) << s.groundedLength;
+            const double ds = 1e-3;
+            for (const double arc : {3.0, 20.0, 51.0, 77.0, 99.0}) {
+                if (std::abs(arc - s.groundedLength) < 1.0) {
+                    continue; // the touchdown point's kink
+                }
+                const Eigen::Vector2d slope
+                    = (connectors::catenaryPoint(l, s, x, z, arc + ds)
+                       - connectors::catenaryPoint(l, s, x, z, arc - ds))
+                    / (2.0 * ds);
+                const double T = connectors::catenaryTension(l, s, arc);
+                EXPECT_NEAR(T, l.EA * (slope.norm() - 1.0), 0.1)
+                    << friction << " " << seabed << " " << arc;
+                if (arc > s.groundedLength) {
+                    // (with H ~ 2e4 N: round-off of the division)
+                    EXPECT_NEAR(T * slope[0] / slope.norm(), s.H, 1e-6 * T)
+                        << friction << " " << seabed << " " << arc;
+                }
+            }
+            // the ends: the end tensions of the solution
+            EXPECT_NEAR(connectors::catenaryTension(l, s, l.length),
+                        std::hypot(s.H, s.V), 1e-9 * std::hypot(s.H, s.V));
+            EXPECT_NEAR(connectors::catenaryTension(l, s, 0.0),
+                        std::hypot(s.HA, s.VA), 1e-9 * std::hypot(s.H, s.V));
+        }
+    }
+}
+
+} // namespace

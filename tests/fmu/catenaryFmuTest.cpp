@@ -62,6 +62,9 @@ std::vector<std::string> lineOutputs()
                             + std::to_string(i) + "]");
         }
     }
+    for (int i = 1; i <= 11; ++i) {
+        names.push_back("shape.tension[" + std::to_string(i) + "]");
+    }
     return names;
 }
 
@@ -101,7 +104,13 @@ TEST(CatenaryFmu, OutputsEqualTheLaw)
                 EXPECT_NEAR(got[std::size_t(22 + 11 * axis + i)],
                             c.shape[std::size_t(i)][axis], 1e-6);
             }
+            // the tension along the line (same warm/cold difference)
+            EXPECT_NEAR(got[std::size_t(55 + i)],
+                        c.shapeTension[std::size_t(i)], 1e-6 * T);
         }
+        // its ends are the end tensions (same code, warm/cold difference)
+        EXPECT_NEAR(got[55], got[17], 1e-6 * T);
+        EXPECT_NEAR(got[65], got[18], 1e-6 * T);
         EXPECT_GT(got[19], 0.0); // part of the line lies on the seabed
     }
 }
