@@ -15,7 +15,7 @@ written time, as PNG, or at every written time as an animation.
             0.orig/ or 0/pointDisplacement), or those named by -bodies
   lines     in dark grey: VTK/fmuConnectors/<name>.vtk.series (legacy VTK
             polylines, one file per write time, written by the fmuConnector
-            restraints) or, when that folder is absent, the line shapes
+            restraints) or, for a time it does not have, the line shapes
             (shape.x[i], shape.y[i], shape.z[i]) in
             postProcessing/fmuConnectors/<startTime>/<name>.dat at the row of
             the rendered time
@@ -57,7 +57,8 @@ import subprocess
 import sys
 
 WATER = (0.16, 0.42, 0.85)
-WATER_OPACITY = 0.55
+WATER_TROUGH, WATER_CREST = (0.04, 0.22, 0.62), (0.42, 0.66, 0.98)
+WATER_OPACITY = 0.65
 BODY = (0.96, 0.47, 0.08)
 LINE = (0.12, 0.12, 0.12)
 TANK_2D = (0.93, 0.93, 0.93)
@@ -311,25 +312,42 @@ def polyline(points):
     return data
 
 
+class ConnectorLines:
+    """The lines' shapes from the VTK files where they have the time, else
+    from the .dat files (the VTK files start at the first write time)."""
+
+    def __init__(self, case):
+        vtk_folder = os.path.join(case, "VTK/fmuConnectors")
+        dat_folder = os.path.join(case, "postProcessing/fmuConnectors")
+        self.sources = []
+        if os.path.isdir(vtk_folder):
+            self.sources.append(VtkLines(vtk_folder))
+        if os.path.isdir(dat_folder):
+            self.sources.append(DatLines(dat_folder))
+
+    def names(self):
+        return sorted(set(n for s in self.sources for n in s.names()))
+
+    def polydata(self, name, time):
+        for source in self.sources:
+            if name in source.names():
+                shape = source.polydata(name, time)
+                if shape is not None:
+                    return shape
+        return None
+
+
 def connector_lines(case, wanted):
-    """The line source of the case and the names of the lines to draw."""
-    vtk_folder = os.path.join(case, "VTK/fmuConnectors")
-    dat_folder = os.path.join(case, "postProcessing/fmuConnectors")
-    if os.path.isdir(vtk_folder) and any(
-            e.endswith(".vtk.series") for e in os.listdir(vtk_folder)):
-        source = VtkLines(vtk_folder)
-    elif os.path.isdir(dat_folder):
-        source = DatLines(dat_folder)
-    else:
-        return None, []
-    names = source.names()
+    """The lines of the case and the names of those to draw."""
+    lines = ConnectorLines(case)
+    names = lines.names()
     if wanted is None:
-        return source, names
+        return lines, names
     for name in wanted:
         if name not in names:
             fail("-lines: no connector line '%s' in the case; lines: %s"
                  % (name, " ".join(names) or "none"))
-    return source, wanted
+    return lines, wanted
 
 
 # ------------------------------------------------------------ the scene
@@ -340,19 +358,33 @@ def load_vtk():
     from types import SimpleNamespace
     import vtkmodules.vtkRenderingOpenGL2   # noqa: F401  the render window
     import vtkmodules.vtkRenderingFreeType  # noqa: F401  the text
+    from vtkmodules.vtkCommonCore import vtkLookupTable
     from vtkmodules.vtkCommonDataModel import (
         vtkCompositeDataSet, vtkDataObject, vtkPlane)
     from vtkmodules.vtkFiltersCore import (
         vtkCellDataToPointData, vtkClipPolyData, vtkContourFilter, vtkCutter,
-        vtkPolyDataNormals, vtkThreshold, vtkTubeFilter)
+        vtkElevationFilter, vtkPolyDataNormals, vtkThreshold, vtkTubeFilter)
     from vtkmodules.vtkFiltersGeneral import vtkContourTriangulator
     from vtkmodules.vtkFiltersModeling import vtkOutlineFilter
     from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
     from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkIOParallel import vtkPOpenFOAMReader
     from vtkmodules.vtkRenderingCore import (
-        vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
-        vtkTextActor, vtkWindowToImageFilter)
+        vtkActor, vtkLightKit, vtkPolyDataMapper, vtkRenderer,
+        vtkRenderWindow, vtkTextActor, vtkWindowToImageFilter)
     return SimpleNamespace(**locals())
+
+
+def latest_time(folder):
+    """The latest time folder's time in folder (-1 when none)."""
+    latest = -1.0
+    if os.path.isdir(folder):
+        for entry in os.listdir(folder):
+            try:
+                latest = max(latest, float(entry))
+            except ValueError:
+                pass
+    return latest
 
 
 def cross(a, b):
@@ -376,16 +408,18 @@ class Scene:
         self.vtk = vtk = load_vtk()
         self.case_name = os.path.basename(case)
         self.bodies, self.two_d = bodies, two_d
-        reader = self.reader = vtk.vtkOpenFOAMReader()
+        # A case run in parallel and not (yet) reconstructed: its processors'
+        if latest_time(os.path.join(case, "processor0")) > latest_time(case):
+            reader = vtk.vtkPOpenFOAMReader()
+            reader.SetCaseType(vtk.vtkPOpenFOAMReader.DECOMPOSED_CASE)
+        else:
+            reader = vtk.vtkOpenFOAMReader()
+        self.reader = reader
         reader.SetFileName(os.path.join(case, "system/controlDict"))
         reader.SkipZeroTimeOff()
         reader.CreateCellToPointOff()   # interpolated below, without holes
         reader.DecomposePolyhedraOn()
         reader.UpdateInformation()
-        if (reader.GetTimeValues() is None
-                and os.path.isdir(os.path.join(case, "processor0"))):
-            reader.SetCaseType(0)       # decomposed, not reconstructed
-            reader.UpdateInformation()
         values = reader.GetTimeValues()
         self.times = ([values.GetValue(i)
                        for i in range(values.GetNumberOfTuples())]
@@ -410,6 +444,8 @@ class Scene:
         self.up = up
         self.renderer = vtk.vtkRenderer()
         self.renderer.SetBackground(1.0, 1.0, 1.0)
+        # Key, fill and back lights: faces away from the camera keep shape
+        vtk.vtkLightKit().AddLightsToRenderer(self.renderer)
         # Translucent water in front of lines and bodies: depth peeling
         self.renderer.SetUseDepthPeeling(1)
         self.renderer.SetMaximumNumberOfPeels(8)
@@ -475,17 +511,30 @@ class Scene:
         cut.Update()
         return cut.GetOutput()
 
-    def add(self, data, colour, opacity=1.0, width=None, offset=0.0):
+    def add(self, data, colour, opacity=1.0, width=None, offset=0.0,
+            shades=None):
         """An actor for polydata; offset: towards the camera in 2D views, in
-        units of the tank's size, so that the layers do not fight."""
+        units of the tank's size, so that the layers do not fight; shades:
+        two colours between which the data's scalars, 0 to 1, are drawn."""
         mapper = self.vtk.vtkPolyDataMapper()
         mapper.SetInputData(data)
         mapper.ScalarVisibilityOff()
+        if shades:
+            table = self.vtk.vtkLookupTable()
+            table.SetNumberOfTableValues(64)
+            for i in range(64):
+                s = i/63.0
+                table.SetTableValue(i, *[(1 - s)*a + s*b
+                                         for a, b in zip(*shades)], 1.0)
+            mapper.SetLookupTable(table)
+            mapper.SetScalarRange(0.0, 1.0)
+            mapper.ScalarVisibilityOn()
         actor = self.vtk.vtkActor()
         actor.SetMapper(mapper)
         prop = actor.GetProperty()
         prop.SetColor(colour)
         prop.SetOpacity(opacity)
+        prop.SetAmbient(0.2)
         if width:
             prop.SetLineWidth(width)
         if offset:
@@ -532,7 +581,9 @@ class Scene:
             normals.SetInputConnection(contour.GetOutputPort())
             normals.SplittingOff()
             normals.Update()
-            prop = self.add(normals.GetOutput(), WATER, opacity=WATER_OPACITY)
+            prop = self.add(self.elevation(normals.GetOutput()), WATER,
+                            opacity=WATER_OPACITY,
+                            shades=(WATER_TROUGH, WATER_CREST))
             prop.SetSpecular(0.3)
             prop.SetSpecularPower(30)
             outline = vtk.vtkOutlineFilter()
@@ -556,6 +607,23 @@ class Scene:
         text.GetTextProperty().SetColor(0.0, 0.0, 0.0)
         text.SetDisplayPosition(font//2, self.size[1] - font - font//2)
         self.renderer.AddActor2D(text)
+
+    def elevation(self, surface):
+        """The surface with its height as scalars, 0 to 1 from trough to
+        crest: the waves show in a view from above. The scale spans at
+        least 4 % of the tank's height, so that still water looks still."""
+        heights = [sum(p*u for p, u in zip(surface.GetPoint(i), self.up))
+                   for i in range(surface.GetNumberOfPoints())]
+        if not heights:
+            return surface
+        middle = (min(heights) + max(heights))/2
+        half = max((max(heights) - min(heights))/2, 0.02*self.extent[1])
+        level = self.vtk.vtkElevationFilter()
+        level.SetInputData(surface)
+        level.SetLowPoint([middle*u - half*u for u in self.up])
+        level.SetHighPoint([middle*u + half*u for u in self.up])
+        level.Update()
+        return level.GetOutput()
 
     # -- camera and picture
 
@@ -605,11 +673,11 @@ class Scene:
                                 for c, n in zip(focus, self.normal)])
         else:
             # Obliquely from above, in front, a little from the generator side
-            direction = unit([-0.3*a - 1.0*n + 0.8*u for a, n, u
+            direction = unit([-0.3*a - 1.0*n + 0.65*u for a, n, u
                               in zip(self.along, self.normal, self.up)])
             camera.SetPosition([c + self.diagonal*d
                                 for c, d in zip(self.centre, direction)])
-            self.renderer.ResetCamera()
+            self.renderer.ResetCamera(self.bounds)   # the tank only
             camera.SetFocalPoint(self.centre)
             camera.Zoom(0.92/self.largest_view_coordinate())
         self.renderer.ResetCameraClippingRange()

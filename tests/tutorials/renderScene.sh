@@ -1,0 +1,409 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Test of tutorials/bin/renderScene: renders two short runs and checks the
+# pictures against the scene projected here, independently, through the
+# camera that renderScene reports (position, focal point, view up, view angle
+# or parallel scale):
+#  - mooredFloatingObject (3D, the cube moored by four catenary lines) to
+#    0.1 s; its lines written as the bridge's VTK connector files
+#    (VTK/fmuConnectors/<line>_<i>.vtk and <line>.vtk.series; made here
+#    from the lines' shape outputs in postProcessing/fmuConnectors/0/<line>.dat
+#    when the bridge does not write them):
+#    the picture has the size asked for (-size); the water colour covers the
+#    projected free surface (the plane z = 0.5 m across the tank) and little
+#    else; the body colour lies within the cube's projection and fills a
+#    good part of it; the picture without the body (-bodies none) differs
+#    only there, without the lines (-lines none) only along their projected
+#    shapes; from the .dat files alone (no VTK folder) the picture is the
+#    same;
+#  - mooredFloatingBodyOverset (2D, overset) to 0.1 s, side view: the water
+#    fills the projected rectangle below the still-water level, not above;
+#    the body colour fills the cube's projected square (at its logged
+#    centre), and the picture without the body differs only there; an
+#    animation has a frame per written time, encoded to a GIF when ffmpeg
+#    or ImageMagick is there;
+#  - a time that was not written is an error naming -time.
+# Needs ParaView (pvbatch, pvpython; Debian packages paraview,
+# python3-paraview), xvfb-run without a display (xvfb), ffmpeg or ImageMagick
+# for the GIF, and what the two tutorials need (./Allwmake).
+# Exits non-zero on the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+
+render="$FOAMFMI_DIR/tutorials/bin/renderScene"
+endTime=0.1
+
+command -v pvbatch > /dev/null 2>&1 \
+    || fail "pvbatch not found (Debian packages paraview, python3-paraview)"
+requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
+    "the bridge library (build it: ./Allwmake)"
+requireFile "$FOAMFMI_FMU_DIR/catenary.fmu" "the catenary FMU (build it: ./Allwmake)"
+
+makeWorkDir
+checker="$workDir/checkPicture.py"
+
+# renderTo CASE PNG [OPTIONS]: render, keep the camera line in PNG.camera
+renderTo()
+{
+    local caseDir="$1" png="$2"
+    shift 2
+    "$render" -output "$png" "$@" "$caseDir" > "$png.log" 2>&1 \
+        || { cat "$png.log" 1>&2; fail "renderScene $* $caseDir failed"; }
+    grep '^camera:' "$png.log" > "$png.camera" \
+        || { cat "$png.log" 1>&2; fail "renderScene printed no camera"; }
+}
+
+# check ARGS: the picture checks below, run by ParaView's Python (numpy, VTK)
+check()
+{
+    pvpython "$checker" -- "$@" 2>&1 | grep -v '^\s*$' > "$workDir/check.log"
+    local status=${PIPESTATUS[0]}
+    sed -n 's/^ok: /ok   ['"$testName"']: /p' "$workDir/check.log"
+    [ "$status" -eq 0 ] || { grep -v '^ok: ' "$workDir/check.log" 1>&2; fail "$1 ($*)"; }
+}
+
+cat > "$checker" <<'EOF'
+"""Picture checks: pvpython checkPicture.py -- CHECK ARGS (see each check)."""
+import json
+import math
+import os
+import sys
+
+import numpy as np
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def read_png(path):
+    """RGB pixels, rows from the top."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    if w*h <= 1:
+        fail("%s: not a PNG picture" % path)
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)
+    return pixels[::-1, :, :3].astype(int)
+
+
+class Camera:
+    """The pinhole (or parallel) camera of renderScene's 'camera:' line."""
+
+    def __init__(self, path):
+        words = open(path).read().split()
+        get = lambda key, n: [float(v) for v in
+                              words[words.index(key) + 1:words.index(key) + 1 + n]]
+        self.position = np.array(get("position", 3))
+        focal = np.array(get("focalPoint", 3))
+        up = np.array(get("viewUp", 3))
+        self.angle = get("viewAngle", 1)[0]
+        self.parallel = get("parallelProjection", 1)[0] == 1
+        self.scale = get("parallelScale", 1)[0]
+        self.size = [int(v) for v in get("size", 2)]
+        self.d = (focal - self.position)/np.linalg.norm(focal - self.position)
+        self.r = np.cross(self.d, up)
+        self.r /= np.linalg.norm(self.r)
+        self.u = np.cross(self.r, self.d)
+
+    def project(self, points):
+        """Pixel (column, row from the top) of each world point."""
+        v = np.atleast_2d(points) - self.position
+        x, y, z = v @ self.r, v @ self.u, v @ self.d
+        w, h = self.size
+        if self.parallel:
+            half = self.scale
+            sx, sy = x/half, y/half
+        else:
+            t = math.tan(math.radians(self.angle)/2)
+            sx, sy = x/z/t, y/z/t
+        return np.column_stack([w/2 + sx*h/2, h/2 - sy*h/2])
+
+
+def box_corners(lo, hi):
+    return np.array([[(lo, hi)[i >> k & 1][k] for k in range(3)]
+                     for i in range(8)])
+
+
+def polygon_mask(shape, polygon):
+    """Pixels whose centre is inside the convex polygon (any vertex order)."""
+    polygon = np.asarray(polygon)
+    centre = polygon.mean(axis=0)
+    order = np.argsort(np.arctan2(polygon[:, 1] - centre[1],
+                                  polygon[:, 0] - centre[0]))
+    polygon = polygon[order]
+    rows, cols = np.mgrid[0:shape[0], 0:shape[1]]
+    px, py = cols + 0.5, rows + 0.5
+    inside = np.ones(shape, bool)
+    for a, b in zip(polygon, np.roll(polygon, -1, axis=0)):
+        cross = (b[0] - a[0])*(py - a[1]) - (b[1] - a[1])*(px - a[0])
+        inside &= cross >= 0
+    return inside
+
+
+def hull(points):
+    """Convex hull of 2D points (monotone chain)."""
+    pts = sorted(map(tuple, points))
+    def half(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0])*(p[1] - out[-2][1])
+                                     - (out[-1][1] - out[-2][1])*(p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+    lower, upper = half(pts), half(reversed(pts))
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def grow(mask, n):
+    """The mask grown by n pixels (square neighbourhood)."""
+    out = mask.copy()
+    for _ in range(n):
+        g = out.copy()
+        g[1:, :] |= out[:-1, :]
+        g[:-1, :] |= out[1:, :]
+        g[:, 1:] |= out[:, :-1]
+        g[:, :-1] |= out[:, 1:]
+        out = g
+    return out
+
+
+def water(p):
+    return (p[..., 2] > p[..., 0] + 40) & (p[..., 2] > p[..., 1] + 10)
+
+
+def body(p):
+    return ((p[..., 0] > 150) & (p[..., 0] > p[..., 1] + 60)
+            & (p[..., 1] > p[..., 2] + 20))
+
+
+def differ(a, b):
+    return np.abs(a - b).max(axis=2) > 30
+
+
+def located(name, mask, region, margin, least):
+    """mask lies in region (grown by margin pixels) and has least pixels."""
+    n = int(mask.sum())
+    outside = int((mask & ~grow(region, margin)).sum())
+    if n < least:
+        fail("%s: %d pixels, expected at least %d" % (name, n, least))
+    if outside > 0.02*n:
+        fail("%s: %d of %d pixels outside the projected region"
+             % (name, outside, n))
+    print("ok: %s: %d pixels, %d outside the projection (+%d px)"
+          % (name, n, outside, margin))
+
+
+def cube_box(centre, lo, hi):
+    return box_corners([c + l for c, l in zip(centre, lo)],
+                       [c + h for c, h in zip(centre, hi)])
+
+
+def body_centre(dat, time):
+    """The centre of rotation at `time` in a rigidBodyMotion .dat file."""
+    rows = [list(map(float, l.split())) for l in open(dat)
+            if l.strip() and not l.startswith("#")]
+    row = min(rows, key=lambda r: abs(r[0] - time))
+    return row[1:4]
+
+
+def check_3d(png, nobody, nolines, fromdat, case, time, width, height):
+    """The moored cube: size, water, body, lines, both line sources."""
+    cam = Camera(png + ".camera")
+    p = read_png(png)
+    if p.shape[:2] != (height, width):
+        fail("%s: %dx%d pixels, asked for %dx%d"
+             % (png, p.shape[1], p.shape[0], width, height))
+    print("ok: size %dx%d" % (width, height))
+
+    # Free surface: the still-water plane across the tank (-1 0 0)-(1 1 1)
+    surface = cam.project([[-1, 0, 0.5], [1, 0, 0.5], [1, 1, 0.5], [-1, 1, 0.5]])
+    region = polygon_mask(p.shape[:2], surface)
+    wet = water(p)
+    fraction = wet.sum()/region.sum()
+    if not 0.85 < fraction < 1.1:
+        fail("water colour on %.2f of the projected free surface's area"
+             % fraction)
+    print("ok: water colour on %.2f of the projected free surface" % fraction)
+    # Within the heights of the surface: still water and the dam-break
+    # column (0.6 m high for x > 0.9 m at the start), as the cube moves it
+    band = polygon_mask(p.shape[:2], hull(cam.project(
+        box_corners([-1, 0, 0.45], [1, 1, 0.65]))))
+    located("water colour", wet, band, 3, 0.5*region.sum())
+
+    # The cube: 0.2 m, its centre of mass 0.03 m above its bottom face
+    centre = body_centre(os.path.join(case, "postProcessing/rigidBodyMotion/floatingObject.dat"), time)
+    cube = hull(cam.project(cube_box(centre, [-0.1, -0.1, -0.03], [0.1, 0.1, 0.17])))
+    square = polygon_mask(p.shape[:2], cube)
+    located("body colour", body(p), square, 3, 0.25*square.sum())
+    located("body (with against without)", differ(p, read_png(nobody)),
+            square, 3, 0.5*square.sum())
+
+    # The lines: pixels that differ without them lie along their projections
+    near = np.zeros(p.shape[:2], bool)
+    length = 0.0
+    folder = os.path.join(case, "VTK/fmuConnectors")
+    for series in sorted(f for f in os.listdir(folder) if f.endswith(".series")):
+        files = json.load(open(os.path.join(folder, series)))["files"]
+        name = [f["name"] for f in files if abs(f["time"] - time) < 1e-9][0]
+        lines = open(os.path.join(folder, name)).read().split("\n")
+        n = int([l for l in lines if l.startswith("POINTS")][0].split()[1])
+        start = [i for i, l in enumerate(lines) if l.startswith("POINTS")][0] + 1
+        xyz = np.array(" ".join(lines[start:start + n]).split(), float).reshape(n, 3)
+        pix = cam.project(xyz)
+        for a, b in zip(pix, pix[1:]):
+            steps = int(np.linalg.norm(b - a)) + 1
+            length += steps
+            for s in np.linspace(0, 1, steps + 1):
+                c, r = (a + s*(b - a)).astype(int)
+                if 0 <= r < p.shape[0] and 0 <= c < p.shape[1]:
+                    near[r, c] = True
+    located("lines (with against without)", differ(p, read_png(nolines)),
+            near, 6, 1.5*length)
+
+    same = differ(p, read_png(fromdat)).sum()
+    if same > 1e-4*p.shape[0]*p.shape[1]:
+        fail("the picture from the .dat files differs from the one from the"
+             " VTK files in %d pixels" % same)
+    print("ok: the same picture from the .dat files (%d pixels differ)" % same)
+
+
+def check_2d(png, nobody, case, time):
+    """The overset cube, side view: water below z = 0.5 m, the body."""
+    cam = Camera(png + ".camera")
+    p = read_png(png)
+    if [p.shape[1], p.shape[0]] != cam.size or cam.size[0] != 1280:
+        fail("%s: %dx%d pixels, expected 1280 wide and the size reported %s"
+             % (png, p.shape[1], p.shape[0], cam.size))
+    print("ok: size %dx%d" % tuple(cam.size))
+    below = polygon_mask(p.shape[:2], cam.project(
+        [[-1.6, 0, 0.0], [1.6, 0, 0.0], [1.6, 0, 0.47], [-1.6, 0, 0.47]]))
+    above = polygon_mask(p.shape[:2], cam.project(
+        [[-1.6, 0, 0.53], [1.6, 0, 0.53], [1.6, 0, 1.0], [-1.6, 0, 1.0]]))
+    wet = water(p)
+    filled = wet[below].mean()
+    if filled < 0.9:
+        fail("water colour on %.2f of the tank below the surface" % filled)
+    if wet[above].mean() > 0.01:
+        fail("water colour on %.3f of the tank above the surface"
+             % wet[above].mean())
+    print("ok: water colour on %.3f of the tank below z = 0.47 m, %.4f above"
+          " z = 0.53 m" % (filled, wet[above].mean()))
+    centre = body_centre(os.path.join(case, "postProcessing/rigidBodyMotion/floatingObject.dat"), time)
+    square = polygon_mask(p.shape[:2], cam.project(
+        cube_box(centre, [-0.1, 0, -0.03], [0.1, 0, 0.17])[[0, 1, 5, 4]]))
+    located("body colour", body(p), square, 3, 0.6*square.sum())
+    located("body (with against without)", differ(p, read_png(nobody)),
+            square, 3, 0.6*square.sum())
+
+
+def make_vtk(case):
+    """The bridge's connector files from the lines' .dat outputs."""
+    dat = os.path.join(case, "postProcessing/fmuConnectors/0")
+    folder = os.path.join(case, "VTK/fmuConnectors")
+    if os.path.isdir(folder):
+        print("ok: VTK files written by the bridge: %s"
+              % " ".join(sorted(os.listdir(folder))))
+        return
+    os.makedirs(folder)
+    times = sorted(float(d) for d in os.listdir(case)
+                   if d.replace(".", "").isdigit())
+    for f in sorted(os.listdir(dat)):
+        name = f[:-4]
+        head = [l for l in open(os.path.join(dat, f)) if l.startswith("# Time")][0]
+        cols = head[1:].split()
+        rows = [list(map(float, l.split())) for l in open(os.path.join(dat, f))
+                if l.strip() and not l.startswith("#")]
+        n = sum(c.startswith("shape.x[") for c in cols)
+        files = []
+        for i, t in enumerate(times):
+            row = min(rows, key=lambda r: abs(r[0] - t))
+            if abs(row[0] - t) > 1e-9:
+                continue
+            pts = [[row[cols.index("shape.%s[%d]" % (c, k + 1))] for c in "xyz"]
+                   for k in range(n)]
+            vtk = "%s_%d.vtk" % (name, i)
+            with open(os.path.join(folder, vtk), "w") as out:
+                out.write("# vtk DataFile Version 2.0\n%s t = %g\nASCII\n"
+                          "DATASET POLYDATA\nPOINTS %d double\n" % (name, t, n))
+                out.writelines("%.9g %.9g %.9g\n" % tuple(q) for q in pts)
+                out.write("LINES 1 %d\n%d %s\n" % (n + 1, n, " ".join(map(str, range(n)))))
+                out.write("POINT_DATA %d\nSCALARS tension double 1\n"
+                          "LOOKUP_TABLE default\n" % n)
+                out.writelines("%.9g\n" % row[cols.index("tension")] for _ in pts)
+            files.append({"name": vtk, "time": t})
+        with open(os.path.join(folder, name + ".vtk.series"), "w") as out:
+            json.dump({"file-series-version": "1.0", "files": files}, out)
+        print("ok: %s: %d VTK files" % (name, len(files)))
+
+
+args = sys.argv[1:]
+if args[:1] == ["--"]:
+    args = args[1:]
+if args[0] == "make_vtk":
+    make_vtk(args[1])
+elif args[0] == "3d":
+    check_3d(*args[1:6], float(args[6]), int(args[7]), int(args[8]))
+elif args[0] == "2d":
+    check_2d(args[1], args[2], args[3], float(args[4]))
+else:
+    fail("unknown check " + args[0])
+EOF
+
+# 3D: the moored cube, its lines as VTK connector files
+moored=$workDir/mooredFloatingObject
+runTutorial mooredFloatingObject "$moored" -mesh-factor 0.5 -end-time $endTime -no-plot
+[ -d "$moored/$endTime" ] || fail "no time $endTime written in $moored"
+check make_vtk "$moored"
+renderTo "$moored" "$workDir/moored.png" -time $endTime -size 960x540
+grep -q "lines: 4 of 4" "$workDir/moored.png.log" \
+    || fail "not the four lines drawn: $(head -n 1 "$workDir/moored.png.log")"
+renderTo "$moored" "$workDir/mooredNoBody.png" -time $endTime -size 960x540 -bodies none
+renderTo "$moored" "$workDir/mooredNoLines.png" -time $endTime -size 960x540 -lines none
+mv "$moored/VTK" "$moored/VTK.off"
+renderTo "$moored" "$workDir/mooredFromDat.png" -time $endTime -size 960x540
+mv "$moored/VTK.off" "$moored/VTK"
+check 3d "$workDir/moored.png" "$workDir/mooredNoBody.png" \
+    "$workDir/mooredNoLines.png" "$workDir/mooredFromDat.png" "$moored" \
+    $endTime 960 540
+
+# A time that was not written
+if "$render" -time 0.05 "$moored" > "$workDir/badTime.log" 2>&1
+then
+    fail "renderScene -time 0.05 (not written) succeeded"
+fi
+grep -q -- "-time 0.05: not a written time" "$workDir/badTime.log" \
+    || { cat "$workDir/badTime.log" 1>&2; fail "no error naming -time"; }
+pass "-time 0.05 (not written): $(grep -- '-time' "$workDir/badTime.log")"
+
+# 2D: the overset cube, side view, default picture and animation
+overset=$workDir/mooredFloatingBodyOverset
+runTutorial mooredFloatingBodyOverset "$overset" -end-time $endTime -no-plot
+renderTo "$overset" "$workDir/overset.png"
+renderTo "$overset" "$workDir/oversetNoBody.png" -bodies none
+check 2d "$workDir/overset.png" "$workDir/oversetNoBody.png" "$overset" $endTime
+
+"$render" -animation "$overset" > "$workDir/animation.log" 2>&1 \
+    || { cat "$workDir/animation.log" 1>&2; fail "renderScene -animation failed"; }
+nFrames=$(ls -d "$overset"/[0-9]* | wc -l)
+if command -v ffmpeg > /dev/null 2>&1 || command -v convert > /dev/null 2>&1
+then
+    gif="$overset/plots/scene.gif"
+    [ "$(head -c 4 "$gif" 2>/dev/null)" = "GIF8" ] \
+        || { cat "$workDir/animation.log" 1>&2; fail "no GIF written: $gif"; }
+    grep -q "($nFrames frames," "$workDir/animation.log" \
+        || { cat "$workDir/animation.log" 1>&2; fail "not $nFrames frames"; }
+    pass "$(grep '^renderScene: wrote' "$workDir/animation.log")"
+else
+    [ "$(ls "$overset"/plots/scene_frames/frame_*.png | wc -l)" -eq "$nFrames" ] \
+        || fail "not $nFrames frames in $overset/plots/scene_frames"
+    pass "$nFrames frames (no encoder)"
+fi
+
+echo "renderScene: all checks passed"
