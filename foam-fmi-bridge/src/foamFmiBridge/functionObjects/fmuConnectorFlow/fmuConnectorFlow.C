@@ -11,6 +11,8 @@ License
 #include "fmuConnectorCore.H"
 #include "interpolation.H"
 #include "volFields.H"
+#include "IFstream.H"
+#include "OFstream.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,6 +28,61 @@ namespace functionObjects
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::fileName Foam::functionObjects::fmuConnectorFlow::statePath
+(
+    const word& timeName
+) const
+{
+    return time_.path()/timeName/"uniform"/"fmuConnectorFlow"/name();
+}
+
+
+void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
+{
+    const fileName path(statePath(time_.timeName()));
+    if (!Pstream::master() || !isFile(path))
+    {
+        return;
+    }
+
+    IFstream is(path);
+    const dictionary flows(is);
+    for (const word& connector : connectors_)
+    {
+        vectorField flow;
+        if (flows.readIfPresent(connector, flow))
+        {
+            fmuConnectorCore::find(connector)->setFlow(flow);
+        }
+    }
+    Info<< "Function object " << name() << ": water velocity at the lines"
+        << " restored from " << path << endl;
+}
+
+
+void Foam::functionObjects::fmuConnectorFlow::writeFlow
+(
+    const List<vectorField>& flows
+) const
+{
+    const fileName path(statePath(time_.timeName()));
+    mkDir(path.path());
+    OFstream os(path);
+    // Every digit: the restarted run sets the same inputs
+    os.precision(17);
+    forAll(connectors_, i)
+    {
+        os.writeEntry(connectors_[i], flows[i]);
+    }
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "function object " << name() << ": cannot write " << path
+            << exit(FatalError);
+    }
+}
+
 
 void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
 (
@@ -111,6 +168,7 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
     }
 
     resetNames(connectors_);
+    restoreFlow();
     if (Pstream::master())
     {
         forAll(connectors_, i)
@@ -165,18 +223,27 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
 
     if (Pstream::master())
     {
+        List<vectorField> flows(connectors_.size());
         forAll(connectors_, i)
         {
-            const vectorField flow(sums[i]/max(counts[i], scalar(1)));
+            flows[i] = sums[i]/max(counts[i], scalar(1));
+            const vectorField& flow = flows[i];
             fmuConnectorCore::find(connectors_[i])->setFlow(flow);
 
             OFstream& os = files(i);
-            writeCurrentTime(os);
+            // The time to the file's precision, not the time name's
+            os  << setw(charWidth()) << time_.value();
             for (const vector& u : flow)
             {
                 os  << tab << u.x() << tab << u.y() << tab << u.z();
             }
             os  << endl;
+        }
+
+        // A run restarted from this time starts with these velocities
+        if (time_.writeTime())
+        {
+            writeFlow(flows);
         }
     }
 
