@@ -77,16 +77,22 @@ void nodeForces(const MooringLineParameters& p, double w,
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
     f.stretched.resize(std::size_t(N));
-    f.tangent.assign(n, Vector3::Zero());
+    f.tangent.resize(n);
     f.a.assign(n, Vector3::Zero());
     f.F.assign(n, Vector3::Zero());
-    f.external.assign(n, Vector3::Zero());
-    f.submerged.assign(n, 1.0);
-    f.normalDrag.assign(n, 0.0);
-    f.tangentialDrag.assign(n, 0.0);
-    f.friction.assign(n, 0.0);
-    f.sliding.assign(n, Vector3::Zero());
+    // written for every node below
+    f.external.resize(n);
+    f.submerged.resize(n);
+    f.normalDrag.resize(n);
+    f.tangentialDrag.resize(n);
     f.relative.resize(n);
+    f.normalMass.resize(n);
+    f.tangentialMass.resize(n);
+    // set on the seabed only (zero without friction)
+    if (p.seabedFriction > 0.0 || f.friction.size() != n) {
+        f.friction.assign(n, 0.0);
+        f.sliding.assign(n, Vector3::Zero());
+    }
     f.strainEnergy = f.seabedEnergy = f.dissipatedPower = f.gravityEnergy = 0.0;
     f.groundedSegments = 0;
     // the ends count as grounded with seabedContact
@@ -118,13 +124,14 @@ void nodeForces(const MooringLineParameters& p, double w,
     // Every node carries the line around it: a segment (free nodes) or
     // half a segment (the ends), of length `share` unstretched and
     // `stretchedShare` stretched (drag acts on the stretched length)
+    double heights = 0.0, wetHeights = 0.0;
     for (int i = 0; i <= N; ++i) {
         const bool end = i == 0 || i == N;
         const double share = end ? 0.5 * l : l;
         const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
             : i == N                         ? 0.5 * f.stretched[N - 1]
                      : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
-        const double phi = submergedFraction(p, r[i][2]);
+        const double phi = p.freeSurface ? submergedFraction(p, r[i][2]) : 1.0;
         f.submerged[i] = phi;
         // With seabedContact the seabed carries the anchor's half segment
         const bool carried = i == 0 && p.seabedContact;
@@ -132,10 +139,10 @@ void nodeForces(const MooringLineParameters& p, double w,
         if (!carried) {
             E[2] -= (dryWeight - buoyancy * phi) * share;
         }
-        f.gravityEnergy += share
-            * (dryWeight * r[i][2]
-               - buoyancy
-                   * (p.freeSurface ? submergedHeight(p, r[i][2]) : r[i][2]));
+        heights += share * r[i][2];
+        if (p.freeSurface) {
+            wetHeights += share * submergedHeight(p, r[i][2]);
+        }
         if (onSeabed(i) && i != 0) {
             const double depth = zb - r[i][2];
             // The damping engages over the depth at which the stiffness
@@ -197,11 +204,15 @@ void nodeForces(const MooringLineParameters& p, double w,
         f.dissipatedPower += drag.dot(u);
         f.external[i] = E;
     }
+    f.gravityEnergy = dryWeight * heights
+        - buoyancy * (p.freeSurface ? wetHeights : heights);
     const double mass = p.massPerLength * l;
     const double addedN = p.normalAddedMass * rho * area * l;
     const double addedT = p.tangentialAddedMass * rho * area * l;
-    f.normalMass.assign(n, 0.0);
-    f.tangentialMass.assign(n, 0.0);
+    // all submerged (no free surface): the same masses at every node
+    double inverseMn = 1.0 / (mass + addedN), inverseMt = 1.0 / (mass + addedT);
+    f.normalMass[0] = f.tangentialMass[0] = f.normalMass[N]
+        = f.tangentialMass[N] = 0.0;
     for (int i = 1; i < N; ++i) {
         const Vector3 F
             = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] + f.external[i];
@@ -210,9 +221,13 @@ void nodeForces(const MooringLineParameters& p, double w,
         const double mt = mass + addedT * f.submerged[i];
         f.normalMass[i] = mn;
         f.tangentialMass[i] = mt;
+        if (p.freeSurface) {
+            inverseMn = 1.0 / mn;
+            inverseMt = 1.0 / mt;
+        }
         const Vector3& t = f.tangent[i];
         // (mn (I - t t') + mt t t')^-1 F
-        f.a[i] = F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t;
+        f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
     }
     for (int j = 0; j < N; ++j) {
         f.groundedSegments += onSeabed(j) && onSeabed(j + 1);

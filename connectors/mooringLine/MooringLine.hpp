@@ -4,19 +4,28 @@
 //
 // The unstretched length L is cut into N segments of l = L/N; node 0 is Q,
 // node N is P (both prescribed), nodes 1..N-1 are free, each with the mass
-// of one segment. With d the diameter, A = pi d^2/4, rho the water density,
-// g gravity and mu the dry mass per unstretched length:
+// of one segment, the ends with half of one. With d the diameter,
+// A = pi d^2/4, rho the water density, g gravity, mu the dry mass per
+// unstretched length and phi_i the submerged fraction of node i (1, or with
+// freeSurface: 1 below waterLevel - l/2, 0 above waterLevel + l/2, linear
+// between), its line length lambda_i = l (l/2 at the ends) and stretched
+// length sigma_i = (s_i-1 + s_i)/2 (s_0/2, s_N-1/2 at the ends):
 //
 //   segment j (nodes j, j+1): q = unit(r_j+1 - r_j), strain e = |r_j+1 - r_j|/l - 1
 //     T = EA max(e, 0) + BA de/dt                 (no compression; BA [N.s])
 //   node i: m_n (I - t t') + m_t t t' times a = F, t = unit(r_i+1 - r_i-1)
-//     m_n = mu l + Can rho A l,  m_t = mu l + Cat rho A l    (added mass)
-//     F = T_i q_i - T_i-1 q_i-1 - w l z^                      w = (mu - rho A) g
-//         + seabed: (kb (zb - z) - cb s dz/dt) d l z^ when z < zb, never pulling,
-//           s = min((zb - z)/(w/(kb d)), 1): the damping engages over the
-//           depth at which the stiffness carries the weight (continuous)
-//         + drag (still water): 1/2 rho d l Cdn |vn| vn + 1/2 rho pi d l Cdt |vt| vt
-//           with vn, vt the normal and tangential parts of -v_i
+//     m_n = mu l + Can rho A l phi,  m_t = mu l + Cat rho A l phi (added mass)
+//     F = T_i q_i - T_i-1 q_i-1 + E_i
+//     E_i = -(mu g - rho g A phi) lambda z^                 weight, buoyancy
+//         + seabed: (kb (zb - z) - cb s dz/dt) d lambda z^ when z < zb, never
+//           pulling, s = min((zb - z)/(w/(kb d)), 1): the damping engages
+//           over the depth at which the stiffness carries the weight
+//         + friction on the seabed: -mu_s Fn v_h / max(|v_h|, v_f), Fn the
+//           seabed's push, v_h the horizontal velocity
+//         + drag: phi (1/2 rho d sigma Cdn |un| un + 1/2 rho pi d sigma Cdt |ut| ut)
+//           with un, ut the normal and tangential parts of u = U - v_i, U the
+//           current (currentSurface at waterLevel, currentSeabed at zb,
+//           linear in z between) plus the flow given at points along the line
 //
 // The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
 // states (position and velocity of each free node) are integrated by the
@@ -34,9 +43,12 @@
 // step), so a step repeated from a saved state gives the same result to
 // the last bit.
 //
-// Loads: the end nodes' half-segment weight is carried by the bodies
-// (at Q by the seabed when seabedContact):
-//   F_A = -T_N-1 q_N-1 - w l/2 z^,   F_B = T_0 q_0 - w l/2 z^
+// Loads: the end nodes' own forces act on the bodies (MoorDyn's coupled
+// fairleads), with their inertia (endInertia; a_P, a_Q the attachment
+// points' accelerations at the step's end, from the Hermite path, kept in
+// the state; M_i the half segment's mass and added mass about t_i):
+//   F_A = -T_N-1 q_N-1 + E_N - M_N a_P,   F_B = T_0 q_0 + E_0 - M_0 a_Q
+// (at Q the seabed carries the half segment's weight with seabedContact).
 #ifndef CONNECTORS_MOORINGLINE_MOORINGLINE_HPP
 #define CONNECTORS_MOORINGLINE_MOORINGLINE_HPP
 
