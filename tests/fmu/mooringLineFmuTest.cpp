@@ -8,51 +8,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "ConnectorInputs.hpp"
-#include "mooringLine/MooringLine.hpp"
+#include "mooringLineFmuSupport.hpp"
 
 namespace {
 
 using namespace fmuTest;
-
-const std::map<std::string, double> chainParameters
-    = {{"unstretchedLength", 100.0},
-       {"EA", 5e7},
-       {"axialDamping", 2e5},
-       {"massPerLength", 80.0},
-       {"diameter", 0.1},
-       {"normalDrag", 1.2},
-       {"tangentialDrag", 0.05},
-       {"normalAddedMass", 1.0},
-       {"seabedContact", 1.0},
-       {"segments", 10.0},
-       {"A.p[3]", -2.0}};
-
-connectors::MooringLineParameters lawParameters()
-{
-    connectors::MooringLineParameters p;
-    p.p_AoP_A = Vector3(0, 0, -2.0);
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5;
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = 10;
-    return p;
-}
-
-//- A body surging and heaving 80 m from the anchor in 40 m of water
-BodyKinematics floater(double t)
-{
-    return kinematics(
-        Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)), 0.0,
-        Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
-        Vector3::Zero());
-}
+using namespace mooringLineFmuTest;
 
 std::vector<std::string> names()
 {
@@ -62,23 +23,6 @@ std::vector<std::string> names()
         n.push_back(extra);
     }
     return n;
-}
-
-//- Parameters, then the inputs at t = 0 (the start shape depends on them)
-fmi2Status initialise(const LoadedFmu& fmu, Instance& in,
-                      const std::map<std::string, double>& extra = {})
-{
-    fmi2Status s = fmu.api.EnterInitializationMode(in.c);
-    if (s == fmi2OK) {
-        s = in.set(chainParameters);
-    }
-    if (s == fmi2OK && !extra.empty()) {
-        s = in.set(extra);
-    }
-    if (s == fmi2OK) {
-        s = in.set(inputs(floater(0.0), BodyKinematics()));
-    }
-    return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
 }
 
 std::vector<double> step(const LoadedFmu& fmu, Instance& in, double t, double h)

@@ -7,47 +7,25 @@
 
 #include <cmath>
 
-#include "ConnectorInputs.hpp"
-#include "mooringLine/MooringLine.hpp"
+#include "mooringLineFmuSupport.hpp"
 
 namespace {
 
 using namespace fmuTest;
+using namespace mooringLineFmuTest;
 
-//- A 100 m chain, 80 m from its anchor in 40 m of water (surface z = 41 m)
-const std::map<std::string, double> chainParameters
-    = {{"unstretchedLength", 100.0},
-       {"EA", 5e7},
-       {"axialDamping", 2e5},
-       {"massPerLength", 80.0},
-       {"diameter", 0.1},
-       {"normalDrag", 1.2},
-       {"tangentialDrag", 0.05},
-       {"normalAddedMass", 1.0},
-       {"seabedContact", 1.0},
-       {"segments", 10.0},
-       {"freeSurface", 1.0},
-       {"waterLevel", 41.0},
-       {"seabedFriction", 0.5},
-       {"frictionVelocity", 0.02},
-       {"endInertia", 0.0},
-       {"current.surface[1]", 0.5},
-       {"current.surface[2]", -0.2},
-       {"current.seabed[2]", 0.2}};
+//- The chain of the FMU tests (mooringLineFmuSupport.hpp) in water whose
+//  surface (z = 41 m) the fairlead (40 +- 1 m) crosses, in a current,
+//  with seabed friction, without the ends' inertia
+const std::map<std::string, double> water
+    = {{"freeSurface", 1.0},         {"waterLevel", 41.0},
+       {"seabedFriction", 0.5},      {"frictionVelocity", 0.02},
+       {"endInertia", 0.0},          {"current.surface[1]", 0.5},
+       {"current.surface[2]", -0.2}, {"current.seabed[2]", 0.2}};
 
-connectors::MooringLineParameters lawParameters()
+connectors::MooringLineParameters lawInWater()
 {
-    connectors::MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5;
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = 10;
+    connectors::MooringLineParameters p = lawParameters();
     p.freeSurface = true;
     p.waterLevel = 41.0;
     p.seabedFriction = 0.5;
@@ -56,15 +34,6 @@ connectors::MooringLineParameters lawParameters()
     p.currentSurface = Vector3(0.5, -0.2, 0.0);
     p.currentSeabed = Vector3(0.0, 0.2, 0.0);
     return p;
-}
-
-//- A body surging and heaving through the surface, 80 m from the anchor
-BodyKinematics floater(double t)
-{
-    return kinematics(
-        Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)), 0.0,
-        Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
-        Vector3::Zero());
 }
 
 std::vector<std::string> names()
@@ -90,19 +59,6 @@ std::map<std::string, double> flowInputs(const std::vector<Vector3>& flow)
     return m;
 }
 
-fmi2Status initialise(const LoadedFmu& fmu, Instance& in,
-                      const std::map<std::string, double>& parameters)
-{
-    fmi2Status s = fmu.api.EnterInitializationMode(in.c);
-    if (s == fmi2OK) {
-        s = in.set(parameters);
-    }
-    if (s == fmi2OK) {
-        s = in.set(inputs(floater(0.0), BodyKinematics()));
-    }
-    return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
-}
-
 TEST(MooringLineWaterFmu, ParametersAndFlowInputsReachTheLaw)
 {
     // flow varying along the line, point 1 at the fairlead: a wrong order
@@ -113,8 +69,8 @@ TEST(MooringLineWaterFmu, ParametersAndFlowInputsReachTheLaw)
     }
     LoadedFmu fmu("mooringLine");
     Instance in(fmu);
-    ASSERT_EQ(initialise(fmu, in, chainParameters), fmi2OK) << in.lastMessage();
-    connectors::MooringLine law(lawParameters());
+    ASSERT_EQ(initialise(fmu, in, water), fmi2OK) << in.lastMessage();
+    connectors::MooringLine law(lawInWater());
     connectors::MooringLineState s
         = law.initialState(floater(0.0), BodyKinematics(), 0.0);
     const double h = 0.1;
@@ -153,8 +109,8 @@ TEST(MooringLineWaterFmu, UniformFlowInputsEqualTheCurrent)
     // flow inputs (zero current): the same run, to round-off (the flow is
     // interpolated between the points, (1 - f) U + f U)
     const Vector3 U(0.4, 0.3, 0.0);
-    std::map<std::string, double> byCurrent = chainParameters;
-    std::map<std::string, double> byFlow = chainParameters;
+    std::map<std::string, double> byCurrent = water;
+    std::map<std::string, double> byFlow = water;
     for (int i = 1; i <= 3; ++i) {
         const std::string c = "[" + std::to_string(i) + "]";
         byCurrent["current.surface" + c] = byCurrent["current.seabed" + c]
@@ -237,6 +193,7 @@ TEST(MooringLineWaterFmu, ParameterErrorsAreNamed)
            "(allowed: finite)"}}) {
         Instance in(fmu);
         std::map<std::string, double> p = chainParameters;
+        p.insert(water.begin(), water.end());
         p[name] = value;
         EXPECT_EQ(in.initialize(p), fmi2Error) << name;
         EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: " + message);

@@ -1,0 +1,78 @@
+// Fixtures of the mooringLine.fmu tests: a 100 m chain moored 80 m from
+// its anchor in 40 m of water, its parameters for the FMU and for the
+// law, the floater that moves it, and the FMU's initialisation.
+#ifndef TESTS_FMU_MOORINGLINEFMUSUPPORT_HPP
+#define TESTS_FMU_MOORINGLINEFMUSUPPORT_HPP
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "ConnectorInputs.hpp"
+#include "mooringLine/MooringLine.hpp"
+
+namespace mooringLineFmuTest {
+
+using fmuTest::BodyKinematics;
+using fmuTest::Vector3;
+
+inline const std::map<std::string, double> chainParameters
+    = {{"unstretchedLength", 100.0},
+       {"EA", 5e7},
+       {"axialDamping", 2e5},
+       {"massPerLength", 80.0},
+       {"diameter", 0.1},
+       {"normalDrag", 1.2},
+       {"tangentialDrag", 0.05},
+       {"normalAddedMass", 1.0},
+       {"seabedContact", 1.0},
+       {"segments", 10.0},
+       {"A.p[3]", -2.0}};
+
+inline connectors::MooringLineParameters lawParameters()
+{
+    connectors::MooringLineParameters p;
+    p.p_AoP_A = Vector3(0, 0, -2.0);
+    p.length = 100.0;
+    p.EA = 5e7;
+    p.axialDamping = 2e5;
+    p.massPerLength = 80.0;
+    p.diameter = 0.1;
+    p.normalDrag = 1.2;
+    p.tangentialDrag = 0.05;
+    p.normalAddedMass = 1.0;
+    p.seabedContact = true;
+    p.segments = 10;
+    return p;
+}
+
+//- A body surging and heaving 80 m from the anchor in 40 m of water
+inline BodyKinematics floater(double t)
+{
+    return fmuTest::kinematics(
+        Vector3(80.0 + 3.0 * std::sin(0.5 * t), 0.0, 42.0 + std::sin(t)), 0.0,
+        Vector3(0, 0, 1), Vector3(1.5 * std::cos(0.5 * t), 0.0, std::cos(t)),
+        Vector3::Zero());
+}
+
+//- Parameters, then the inputs at t = 0 (the start shape depends on them)
+inline fmi2Status initialise(const fmuTest::LoadedFmu& fmu,
+                             fmuTest::Instance& in,
+                             const std::map<std::string, double>& extra = {})
+{
+    fmi2Status s = fmu.api.EnterInitializationMode(in.c);
+    if (s == fmi2OK) {
+        s = in.set(chainParameters);
+    }
+    if (s == fmi2OK && !extra.empty()) {
+        s = in.set(extra);
+    }
+    if (s == fmi2OK) {
+        s = in.set(fmuTest::inputs(floater(0.0), BodyKinematics()));
+    }
+    return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
+}
+
+} // namespace mooringLineFmuTest
+
+#endif
