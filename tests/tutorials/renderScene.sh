@@ -391,7 +391,7 @@ check 2d "$workDir/overset.png" "$workDir/oversetNoBody.png" "$overset" $endTime
 
 "$render" -animation "$overset" > "$workDir/animation.log" 2>&1 \
     || { cat "$workDir/animation.log" 1>&2; fail "renderScene -animation failed"; }
-nFrames=$(ls -d "$overset"/[0-9]* | wc -l)
+nFrames=$(ls "$overset" | grep -c -E '^[0-9.]+(e[-+]?[0-9]+)?$')
 if command -v ffmpeg > /dev/null 2>&1 || command -v convert > /dev/null 2>&1
 then
     gif="$overset/plots/scene.gif"

@@ -358,7 +358,7 @@ def load_vtk():
     from types import SimpleNamespace
     import vtkmodules.vtkRenderingOpenGL2   # noqa: F401  the render window
     import vtkmodules.vtkRenderingFreeType  # noqa: F401  the text
-    from vtkmodules.vtkCommonCore import vtkLookupTable
+    from vtkmodules.vtkCommonCore import vtkLogger, vtkLookupTable
     from vtkmodules.vtkCommonDataModel import (
         vtkCompositeDataSet, vtkDataObject, vtkPlane)
     from vtkmodules.vtkFiltersCore import (
@@ -372,6 +372,8 @@ def load_vtk():
     from vtkmodules.vtkRenderingCore import (
         vtkActor, vtkLightKit, vtkPolyDataMapper, vtkRenderer,
         vtkRenderWindow, vtkTextActor, vtkWindowToImageFilter)
+    # Errors and warnings, not the filters' progress notes
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_WARNING)
     return SimpleNamespace(**locals())
 
 
@@ -408,7 +410,8 @@ class Scene:
         self.vtk = vtk = load_vtk()
         self.case_name = os.path.basename(case)
         self.bodies, self.two_d = bodies, two_d
-        # A case run in parallel and not (yet) reconstructed: its processors'
+        # A case run in parallel and not (yet) reconstructed: read its
+        # processor folders
         if latest_time(os.path.join(case, "processor0")) > latest_time(case):
             reader = vtk.vtkPOpenFOAMReader()
             reader.SetCaseType(vtk.vtkPOpenFOAMReader.DECOMPOSED_CASE)
