@@ -29,6 +29,10 @@
 #    where it started horizontally (the offset at which a line would lift
 #    completely off the floor), and every line keeps part of its length on
 #    the floor;
+#  - each line is written as VTK at every write time, with the points and
+#    tensions of its output rows; (dynamic lines) the water velocity the
+#    lines are given (function object fmuConnectorFlow) is U at the lines'
+#    points, as OpenFOAM's probes find it (checkLineOutputs.py);
 #  - the plots are written.
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so,
 # libimplicitRigidBodySolvers.so and build/fmus/catenary.fmu (mooringLine.fmu).
@@ -172,6 +176,16 @@ END {
     printf("centre of mass inside the anchors footprint, at most %.3g m from where it started horizontally\n", maxD)
 }' "$bodyDat" > "$workDir/check.out" || fail "$bodyDat: see above"
 pass "moorings hold: $(cat "$workDir/check.out")"
+
+
+# --- Lines as VTK; the water velocity at the dynamic lines -------------------
+flowArgs=""
+[ "$quasiStatic" = 1 ] || flowArgs="--flow lineFlow --solver interFoamAliasSafe"
+# shellcheck disable=SC2086
+python3 "$(dirname "$0")/checkLineOutputs.py" "$moored" line1 line2 line3 \
+    line4 $flowArgs > "$workDir/check.out" 2>&1 \
+    || { cat "$workDir/check.out" 1>&2; fail "line outputs: see above"; }
+while read -r line; do pass "$line"; done < "$workDir/check.out"
 
 
 # --- Plots -------------------------------------------------------------------

@@ -9,6 +9,10 @@ processors. Checked for every run:
 - the restart runs to T and restores every connector's FMU state, once;
 - every connector writes one row per time step after the restart, at the
   uninterrupted run's times;
+- a case with lines in the flow (fmuConnectorFlow) restores the water
+  velocities written at the restart time, once;
+- a line's VTK series lists each write time once: the restart replaces the
+  entry of the time it writes again (T) and keeps the earlier one;
 - the restarted run stays within OpenFOAM's own restart floor: v1912's
   interFoam does not restart exactly (docs/restarts.md: MULES keeps its
   previous correction in memory only, Crank-Nicolson restarts its old-time
@@ -21,6 +25,7 @@ processors. Checked for every run:
 The dynamic-line scene is the one that could not restart before: its FMU
 computed the line's start shape from an unset fairlead position.
 """
+import json
 import os
 import re
 import shutil
@@ -124,6 +129,18 @@ def run_scene(work, name, connectors, options, states):
         tail = [r for r in a if r[0] > float(HALF) + 1e-9]
         if len(b) != len(tail) or any(abs(x[0] - y[0]) > 1e-9 for x, y in zip(tail, b)):
             problems.append(f"{c}: {len(b)} rows after the restart for {len(tail)}")
+        series = os.path.join(restarted, "VTK", "fmuConnectors", c + ".vtk.series")
+        if os.path.exists(series):
+            with open(series) as f:
+                times = [e["time"] for e in json.load(f)["files"]]
+            expected = [float(HALF), float(END)]
+            if len(times) != 2 or any(abs(x - y) > 1e-9 for x, y in zip(times, expected)):
+                problems.append(f"{c}: VTK series times {times} after the restart, expected {expected}")
+    flow_states = os.path.join(full, "processor0" if parallel else "", HALF, "uniform", "fmuConnectorFlow")
+    if os.path.isdir(flow_states):
+        restored = log.count("water velocity at the lines restored from")
+        if restored != 1:
+            problems.append(f"water velocity at the lines restored {restored} times")
     difference = relative_difference(*states(full, restarted, parallel))
     return problems, difference
 
