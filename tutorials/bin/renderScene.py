@@ -460,6 +460,7 @@ class Scene:
         self.window.AddRenderer(self.renderer)
         self.size = None
         self.camera_set = False
+        self.levels, self.keep_levels = None, False
 
     # -- geometry
 
@@ -614,13 +615,16 @@ class Scene:
     def elevation(self, surface):
         """The surface with its height as scalars, 0 to 1 from trough to
         crest: the waves show in a view from above. The scale spans at
-        least 4 % of the tank's height, so that still water looks still."""
+        least 4 % of the tank's height, so that still water looks still;
+        in an animation it is the first frame's, so that shades compare."""
         heights = [sum(p*u for p, u in zip(surface.GetPoint(i), self.up))
                    for i in range(surface.GetNumberOfPoints())]
         if not heights:
             return surface
-        middle = (min(heights) + max(heights))/2
-        half = max((max(heights) - min(heights))/2, 0.02*self.extent[1])
+        if self.levels is None or not self.keep_levels:
+            self.levels = ((min(heights) + max(heights))/2, max(
+                (max(heights) - min(heights))/2, 0.02*self.extent[1]))
+        middle, half = self.levels
         level = self.vtk.vtkElevationFilter()
         level.SetInputData(surface)
         level.SetLowPoint([middle*u - half*u for u in self.up])
@@ -776,6 +780,7 @@ def main():
               % (output, render_times[0], " ".join(bodies) or "none", n,
                  len(line_names)))
     else:
+        scene.keep_levels = True
         animate(render_times, output, opts["fps"], draw)
     print(scene.camera_text())
 
