@@ -538,7 +538,10 @@ class Scene:
         prop = actor.GetProperty()
         prop.SetColor(colour)
         prop.SetOpacity(opacity)
-        prop.SetAmbient(0.2)
+        if self.two_d:
+            prop.LightingOff()  # flat, in its own colour: a drawing
+        else:
+            prop.SetAmbient(0.2)
         if width:
             prop.SetLineWidth(width)
         if offset:
