@@ -55,15 +55,7 @@ runTutorial hingedFloatingObjects "$hinged" -mesh-factor 0.5 -end-time $endTime
 checkRanToEnd "$hinged" $endTime
 checkFreeBodies "$hinged" floatingObject1 floatingObject2
 
-log=$(solverLog "$hinged")
-stats=$(grep '^Rigid-body solver implicitNewmark: [0-9]* solves' "$log") \
-    || fail "$log: no statistics line of implicitNewmark"
-if grep -q -i 'warning' "$log"
-then
-    grep -i -A 4 'warning' "$log" | head -n 20 1>&2
-    fail "$log: warnings (above)"
-fi
-pass "implicitNewmark, no warnings: ${stats#Rigid-body solver implicitNewmark: }"
+checkImplicitNewmark "$hinged"
 
 
 # --- The hinge's output ------------------------------------------------------

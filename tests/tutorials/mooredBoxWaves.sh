@@ -45,15 +45,7 @@ makeWorkDir
 case=$workDir/mooredBoxWaves
 runTutorial mooredBoxWaves "$case" -mesh-factor 0.375 -end-time $endTime
 checkRanToEnd "$case" $endTime
-log=$(solverLog "$case")
-stats=$(grep '^Rigid-body solver implicitNewmark: [0-9]* solves' "$log") \
-    || fail "$log: no statistics line of implicitNewmark"
-if grep -q -i 'warning' "$log"
-then
-    grep -i -A 4 'warning' "$log" | head -n 20 1>&2
-    fail "$log: warnings (above)"
-fi
-pass "implicitNewmark, no warnings: ${stats#Rigid-body solver implicitNewmark: }"
+checkImplicitNewmark "$case"
 motion=$case/postProcessing/rigidBodyMotion/floatingObject.dat
 requireFile "$motion" "the box's motion"
 

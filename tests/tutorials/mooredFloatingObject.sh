@@ -73,15 +73,7 @@ checkRanToEnd "$moored" $endTime
 checkFreeBodies "$moored" floatingObject
 bodyDat=$moored/postProcessing/rigidBodyMotion/floatingObject.dat
 
-log=$(solverLog "$moored")
-stats=$(grep '^Rigid-body solver implicitNewmark: [0-9]* solves' "$log") \
-    || fail "$log: no statistics line of implicitNewmark"
-if grep -q -i 'warning' "$log"
-then
-    grep -i -A 4 'warning' "$log" | head -n 20 1>&2
-    fail "$log: warnings (above)"
-fi
-pass "implicitNewmark, no warnings: ${stats#Rigid-body solver implicitNewmark: }"
+checkImplicitNewmark "$moored"
 
 
 # Tension at rest of the case's lines: inextensible catenary with touchdown,
