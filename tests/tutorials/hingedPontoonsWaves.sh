@@ -82,15 +82,7 @@ runTutorial hingedPontoonsWaves "$case" -end-time $endTime
 checkRanToEnd "$case" $endTime
 motion=$case/postProcessing/rigidBodyMotion
 
-log=$(solverLog "$case")
-stats=$(grep '^Rigid-body solver implicitNewmark: [0-9]* solves' "$log") \
-    || fail "$log: no statistics line of implicitNewmark"
-if grep -q -i 'warning' "$log"
-then
-    grep -i -A 4 'warning' "$log" | head -n 20 1>&2
-    fail "$log: warnings (above)"
-fi
-pass "implicitNewmark, no warnings: ${stats#Rigid-body solver implicitNewmark: }"
+checkImplicitNewmark "$case"
 
 
 # --- The pontoons float at their draught -------------------------------------
