@@ -20,10 +20,16 @@
 #  - the box responds at the wave period: its heave's up-crossings from 4 s
 #    (after the waves' arrival) are T apart within 10 %, over a range above
 #    H/3;
-#  - raoAnalysis writes its summary and the plots are written.
+#  - raoAnalysis writes its summary and the plots are written;
+#  - each line is written as VTK at every write time with the points and
+#    tensions of its output rows (checkLineOutputs.py);
+#  - the dynamic lines in the waves (-lines dynamic, 6 s: the waves reach
+#    the lines at 3.7 s): the water velocity fmuConnectorFlow gives each
+#    line at the last write time is OpenFOAM's own probe of U at the line's
+#    points, and the water there moves.
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so,
-# libimplicitRigidBodySolvers.so and build/fmus/catenary.fmu. Exits non-zero
-# on the first failure.
+# libimplicitRigidBodySolvers.so and build/fmus/catenary.fmu,
+# mooringLine.fmu. Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/tutorialTestFunctions"
 . "$(dirname "$0")/connectorTestFunctions"
@@ -166,3 +172,21 @@ pass "$(cat "$workDir/check.out")"
 
 requireFile "$case/plots/rao.dat" "summary of raoAnalysis"
 checkPlots "$case" rao rotation displacement
+
+
+# --- The lines as VTK; the dynamic lines in the waves --------------------------
+python3 "$(dirname "$0")/checkLineOutputs.py" "$case" line1 line2 line3 line4 \
+    > "$workDir/check.out" 2>&1 \
+    || { cat "$workDir/check.out" 1>&2; fail "line outputs: see above"; }
+while read -r line; do pass "catenary $line"; done < "$workDir/check.out"
+
+requireFile "$FOAMFMI_FMU_DIR/mooringLine.fmu" \
+    "the mooringLine FMU (build it: cmake --build build)"
+dynamic=$workDir/mooredBoxWavesDynamic
+runTutorial mooredBoxWaves "$dynamic" -mesh-factor 0.375 -end-time 6 \
+    -lines dynamic -no-plot
+checkRanToEnd "$dynamic" 6
+python3 "$(dirname "$0")/checkLineOutputs.py" "$dynamic" line1 line2 line3 \
+    line4 --flow lineFlow --solver interFoamAliasSafe > "$workDir/check.out" 2>&1 \
+    || { cat "$workDir/check.out" 1>&2; fail "dynamic line outputs: see above"; }
+while read -r line; do pass "dynamic $line"; done < "$workDir/check.out"
