@@ -110,8 +110,10 @@ struct MooringLineParameters {
     //  speed frictionVelocity [m/s]: F = -mu Fn v / max(|v|, frictionVelocity)
     double seabedFriction = 0.0, frictionVelocity = 0.01;
     //- The end nodes' inertia on the bodies: their half segment's mass and
-    //  added mass times the end's acceleration (true), or none (false)
-    bool endInertia = true;
+    //  added mass times the end's acceleration (true), or none (false:
+    //  default; explicit in the coupling, it can destabilise a body whose
+    //  mass is not large against it, README)
+    bool endInertia = false;
 
     //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
     double weight() const;

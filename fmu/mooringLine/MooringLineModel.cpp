@@ -126,9 +126,9 @@ const Scalar scalars[] = {
      0.01},
     {"endInertia", "1",
      "1: the loads include the inertia of the end nodes' half segments "
-     "(mass and added mass times the attachment point's acceleration); 0: "
-     "not",
-     1.0},
+     "(mass and added mass times the attachment point's acceleration, "
+     "explicit in the coupling); 0 (default): not",
+     0.0},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 

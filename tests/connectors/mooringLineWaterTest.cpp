@@ -100,6 +100,7 @@ TEST(MooringLineWater, FairleadInertiaActsOnTheBody)
     // the top segment: -(mu l/2 a + Can rho A l/2 an + Cat rho A l/2 at)
     MooringLineParameters p = line(10);
     p.gravity = 0.0;
+    p.endInertia = true;
     MooringLineParameters off = p;
     off.endInertia = false;
     MooringLine law(p), without(off);
