@@ -20,12 +20,17 @@
 #    anchor or attachment point 1 mm off, fails;
 #  - the heave damper: tension = c dL/dt (c = 8.70 N s/m) likewise, and its
 #    length against the logged motion;
-#  - the section floats at its draught: before the waves reach it (t < 2.5
-#    s) its centre of mass stays within 1 mm of where the mesh put it
-#    (z = 0.906 m: the mass is the water displaced at the draft of 0.2 m; a
-#    mass 0.5 % off sinks or lifts it by 1 mm), it sways less than 1 mm
-#    and rolls less than 0.05 deg (the section and the springs are
-#    symmetric: only the mesh's asymmetry can move it);
+#  - the section floats at its draught: the still water's pressure settles
+#    in the first steps and sets it heaving at its natural period (1.17 s)
+#    by 3.2 mm (measured); before the waves reach it (t < 1.5 s: the front
+#    of the ramped wave, at its phase speed, 1.8 m/s, needs 1.6 s to the
+#    section) its centre of mass oscillates within 5 mm about a mean, over
+#    t = 0.3-1.5 s (one period of that oscillation), within 1.5 mm of
+#    where the mesh put it (z = 0.906 m: the mass is the water displaced at
+#    the draft of 0.2 m; a mass 0.75 % off shifts it by 1.5 mm; measured
+#    0.07 mm); it sways less than 2 mm and rolls less than 0.05 deg
+#    (measured 0.6 mm, 0.014 deg: the section and the springs are
+#    symmetric, the flume is not: 1.5 wavelengths before it, 3.5 behind);
 #  - the waves move it: its heave over the last period exceeds a/2 (a long
 #    wave, 5.2 beams, lifts a section with its heave resonance at 1.17 s
 #    by more than a; a/2 leaves room for the first periods' build-up);
@@ -44,7 +49,8 @@
 endTime=4.632
 period=1.158
 waveHeight=0.024
-restTime=2.5
+restTime=1.5
+settleTime=0.3
 z0=0.906
 springStiffness=29.86
 springRestLength=4.665104
@@ -117,7 +123,8 @@ checkConnector "${damper%%:*}" "${damper#*:}" 0 0 $damperDamping
 
 
 # --- At rest before the waves, moving with them -------------------------------
-awk -v tRest=$restTime -v z0=$z0 -v a=$(awk -v H=$waveHeight 'BEGIN { print H/2 }') \
+awk -v tRest=$restTime -v tSettle=$settleTime -v z0=$z0 \
+    -v a=$(awk -v H=$waveHeight 'BEGIN { print H/2 }') \
     -v tLast=$(awk -v t=$endTime -v T=$period 'BEGIN { print t - T }') '
 function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
 function abs(x) { return x < 0 ? -x : x }
@@ -126,19 +133,24 @@ function abs(x) { return x < 0 ? -x : x }
     if (n++ == 0) x0 = $2
     if ($1 < tRest)
     {
-        if (abs($4 - z0) > 1e-3) bad(sprintf("t = %s: before the waves the centre of mass is at z = %.6g m, %.3g m from %g", $1, $4, $4 - z0, z0))
-        if (abs($2 - x0) > 1e-3) bad(sprintf("t = %s: before the waves the section swayed by %.3g m", $1, $2 - x0))
+        if (abs($4 - z0) > 5e-3) bad(sprintf("t = %s: before the waves the centre of mass is at z = %.6g m, %.3g m from %g", $1, $4, $4 - z0, z0))
+        if (abs($2 - x0) > 2e-3) bad(sprintf("t = %s: before the waves the section swayed by %.3g m", $1, $2 - x0))
         if (abs($7) > 0.05) bad(sprintf("t = %s: before the waves the section rolled by %.3g deg", $1, $7))
         if (abs($4 - z0) > restZ) restZ = abs($4 - z0)
         if (abs($7) > restRoll) restRoll = abs($7)
+        # time-weighted mean over the settling oscillation
+        if ($1 >= tSettle && nRest++) { sumZ += 0.5*($4 + zPrev)*($1 - tPrev); sumT += $1 - tPrev }
+        zPrev = $4; tPrev = $1
     }
     if ($1 >= tLast) { if (!nLast++ || $4 > zMax) zMax = $4; if (nLast == 1 || $4 < zMin) zMin = $4 }
 }
 END {
     if (failed) exit 1
+    meanZ = sumZ/sumT - z0
+    if (abs(meanZ) > 1.5e-3) bad(sprintf("before the waves the centre of mass oscillates about %.3g m from z = %g (at most 1.5 mm)", meanZ, z0))
     heave = (zMax - zMin)/2
     if (heave < a/2) bad(sprintf("heave amplitude over the last period %.3g m, below a/2 = %.3g m", heave, a/2))
-    printf("before the waves within %.2g mm of its draught, roll %.2g deg; heave amplitude over the last period %.3g mm (a = %g mm)\n", 1e3*restZ, restRoll, 1e3*heave, 1e3*a)
+    printf("before the waves about %.2g mm from its draught, within %.2g mm, roll below %.2g deg; heave amplitude over the last period %.3g mm (a = %g mm)\n", 1e3*meanZ, 1e3*restZ, restRoll, 1e3*heave, 1e3*a)
 }' "$motion" > "$workDir/check.out" || fail "the section's motion: see above"
 pass "section: $(cat "$workDir/check.out")"
 
