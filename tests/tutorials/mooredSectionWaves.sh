@@ -2,24 +2,24 @@
 #------------------------------------------------------------------------------
 # Smoke test of tutorials/mooredSectionWaves: the ship section of Sundsdal et
 # al. (2025) held in sway by two springs (linearSpring.fmu) with the rig's
-# heave damper (linearDamper.fmu), free in sway, heave and roll, in regular
+# sway and heave dampers (linearDamper.fmu), free in sway, heave and roll, in regular
 # waves (H = 0.024 m, T = 1.158 s) in a 2D flume, at the default mesh to
 # 4 periods (4.632 s, a write time): the ramp, the waves' travel to the
 # section (front at about 3.2 s) and its first periods there. Checks:
 #  - the solver reaches the end time; implicitNewmark converged in every
 #    solve (no warning, its statistics line is there);
 #  - every connector writes one row of finite numbers per time step;
-#  - the springs: tension = k (L - L0) + c dL/dt with the parameters of
-#    constant/dynamicMeshDict (k = 29.86 N/m, L0 = 4.665104 m, c = 4.35
-#    N s/m) from the FMU's own length and length rate, within 1e-9 N + 1e-9
+#  - the springs: tension = k (L - L0) with the parameters of
+#    constant/dynamicMeshDict (k = 29.86 N/m, L0 = 4.665104 m, no damping:
+#    the rig's is in the dampers) from the FMU's own length, within 1e-9 N + 1e-9
 #    of the tension (the same arithmetic; the files have 16 digits), and the
 #    length against the distance from the logged centre of mass (the
 #    attachment point) to the anchor, within a tenth of the largest
 #    one-step change of length (the motion is logged at the end of the step,
 #    the connector evaluated within it; 6 digits); a stiffness 1 % off, or an
 #    anchor or attachment point 1 mm off, fails;
-#  - the heave damper: tension = c dL/dt (c = 8.70 N s/m) likewise, and its
-#    length against the logged motion;
+#  - the sway and heave dampers: tension = c dL/dt (c = 8.70 N s/m)
+#    likewise, and their lengths against the logged motion;
 #  - the section floats at its draught: the still water's pressure settles
 #    in the first steps and sets it heaving at its natural period (1.17 s)
 #    by 3.2 mm (measured); before the waves reach it (t < 1.5 s: the front
@@ -54,11 +54,11 @@ settleTime=0.3
 z0=0.906
 springStiffness=29.86
 springRestLength=4.665104
-springDamping=4.35
+springDamping=0
 damperDamping=8.70
 # name:anchor (global; attached at the centre of mass)
 springs="springWeather:-5,0.293,0.906 springLee:5,0.293,0.906"
-damper="heaveDamper:0,0.293,5.906"
+dampers="swayDamper:5,0.293,0.906 heaveDamper:0,0.293,5.906"
 
 for lib in foamFmiBridge implicitRigidBodySolvers foamFmiRigidBodyCoupling
 do
@@ -119,7 +119,10 @@ for spec in $springs
 do
     checkConnector "${spec%%:*}" "${spec#*:}" $springStiffness $springRestLength $springDamping
 done
-checkConnector "${damper%%:*}" "${damper#*:}" 0 0 $damperDamping
+for spec in $dampers
+do
+    checkConnector "${spec%%:*}" "${spec#*:}" 0 0 $damperDamping
+done
 
 
 # --- At rest before the waves, moving with them -------------------------------
