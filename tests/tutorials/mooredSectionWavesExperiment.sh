@@ -1,24 +1,28 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
 # Test of tutorials/mooredSectionWaves/experimentRao, the measured RAOs of
-# the 2D ship section in the flume (Sundsdal et al., scenario B; data in the
-# repository's sibling shared/experiments/sundsdal2025):
-#  - run again (-no-plot, into a scratch file), it reproduces the committed
-#    experiment/measured.dat: the same header, rows and columns, every value
-#    within 1e-9 relative (the same arithmetic on the same data);
+# the 2D ship section in the flume (Sundsdal et al., scenario B; the data's
+# extract in experiment/data, written by experiment/extractData):
+#  - run again on the extract (-no-plot, into a scratch file), it reproduces
+#    the committed experiment/measured.dat: the same header, rows and
+#    columns, every value within 1e-9 relative (the same arithmetic on the
+#    same data);
+#  - extractData on a clone-like tree (plain CSV files with more columns, as
+#    the data repository has them, made from the extract of two cases)
+#    writes an extract whose files decompress to those columns verbatim, and
+#    experimentRao reads the plain CSV files and the new extract alike;
 #  - the measured table is physically sound (each check states its reason
 #    and tolerance below).
-# Needs python3 and Debian's python3-numpy (/usr/bin/python3); no OpenFOAM.
-# Exits non-zero on the first failure.
+# Needs python3 and Debian's python3-numpy (/usr/bin/python3), git and xz
+# (xz-utils); no OpenFOAM. Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/tutorialTestFunctions"
 
 tutorial="$FOAMFMI_DIR/tutorials/mooredSectionWaves"
-data=$(cd "$FOAMFMI_DIR/.." && pwd -P)/shared/experiments/sundsdal2025
+data="$tutorial/experiment/data"
 committed="$tutorial/experiment/measured.dat"
 
-[ -d "$data" ] || fail "the experiment's data directory $data is missing" \
-    "(shared/experiments/sundsdal2025 beside the repository: SOURCE, 3PPH/, 1PPH/)"
+requireFile "$data/SOURCE" "the data's origin (experiment/data/SOURCE)"
 requireFile "$committed" "the committed measured table"
 
 makeWorkDir
@@ -26,6 +30,58 @@ makeWorkDir
     > "$workDir/log.experimentRao" 2>&1 \
     || { cat "$workDir/log.experimentRao" 1>&2; fail "experimentRao failed"; }
 pass "experimentRao ran on $data"
+
+# A clone-like tree of two cases (PP 6 H 1 and PP 14 H 2): the extract's
+# columns decompressed, with a column of the data repository's files that
+# the extract leaves out (WP_1) and, in 1PPH, the leading index column
+clone="$workDir/clone"
+mkdir -p "$clone/data/3PPH" "$clone/data/1PPH" "$clone/docs"
+cp "$data/LICENSE" "$clone/LICENSE"
+cp "$data/README-3PPH.md" "$clone/data/3PPH/README.md"
+cp "$data/README-1PPH.md" "$clone/data/1PPH/README.md"
+cp "$data/experimental_setup.md" "$clone/docs/experimental_setup.md"
+for f in "$data"/3PPH/306*.csv.xz "$data"/3PPH/3142*.csv.xz
+do
+    xz -dc "$f" | awk -F, -v OFS=, '{ print $0, (NR == 1 ? "WP_1 [m]" : NR * 1e-6) }' \
+        > "$clone/data/3PPH/$(basename "$f" .xz)"
+done
+for f in "$data"/1PPH/106*.csv.xz "$data"/1PPH/1142*.csv.xz
+do
+    xz -dc "$f" | awk -F, -v OFS=, '{ print (NR == 1 ? "" : NR - 2), $1, "0.5", $2, $3 }' \
+        | sed '1s/,0.5,/,WP_1 [m],/' > "$clone/data/1PPH/$(basename "$f" .xz)"
+done
+git -C "$clone" init -q && git -C "$clone" add -A \
+    && git -C "$clone" -c user.name=test -c user.email=test@localhost commit -qm data \
+    || fail "cannot make the clone-like git tree $clone"
+"$tutorial/experiment/extractData" -output "$workDir/extract" "$clone" \
+    > "$workDir/log.extractData" 2>&1 \
+    || { cat "$workDir/log.extractData" 1>&2; fail "extractData failed"; }
+for f in "$data"/3PPH/306*.csv.xz "$data"/3PPH/3142*.csv.xz \
+         "$data"/1PPH/106*.csv.xz "$data"/1PPH/1142*.csv.xz
+do
+    sub=$(basename "$(dirname "$f")")
+    cmp -s <(xz -dc "$f") <(xz -dc "$workDir/extract/$sub/$(basename "$f")") \
+        || fail "extractData: $sub/$(basename "$f") differs from the committed extract's columns"
+done
+[ "$(find "$workDir/extract" -name '*.csv.xz' | wc -l)" -eq 7 ] \
+    || fail "extractData: expected the 7 files of the two cases in $workDir/extract"
+grep -q "^Commit: $(git -C "$clone" rev-parse HEAD)\$" "$workDir/extract/SOURCE" \
+    || fail "extractData: $workDir/extract/SOURCE does not name the clone's commit"
+pass "extractData: the two cases' 7 files, their columns verbatim, the commit in SOURCE"
+
+# experimentRao on the plain CSV files and on the new extract: the same rows
+# as the committed table's for these two cases
+cp "$workDir/extract/SOURCE" "$clone/data/SOURCE"
+for input in "$clone/data" "$workDir/extract"
+do
+    "$tutorial/experimentRao" -no-plot -data "$input" -output "$workDir/two.dat" \
+        > "$workDir/log.two" 2>&1 \
+        || { cat "$workDir/log.two" 1>&2; fail "experimentRao failed on $input"; }
+    cmp -s <(grep -v '^#' "$workDir/two.dat") \
+           <(grep -v '^#' "$committed" | awk '($1 == 6 && $2 == 1) || ($1 == 14 && $2 == 2)') \
+        || fail "experimentRao on $input: the rows of PP 6 H 1 and PP 14 H 2 differ from $committed"
+done
+pass "experimentRao on plain CSV files and on a new extract: the committed rows"
 
 python3 - "$committed" "$workDir/measured.dat" > "$workDir/check.log" 2>&1 <<'PYTHON'
 import math
