@@ -8,10 +8,10 @@
 #                   and nothing else, the static libraries stay hidden).
 #                   Self-contained: libstdc++ and SUNDIALS linked in, so
 #                   that it needs only the system's C libraries (libc, libm,
-#                   libgcc_s) of glibc 2.34 or later (glibcCompat.c), and
-#                   runs beside any host's C++ runtime; its copy of
-#                   libstdc++ frees its heap when the FMU is unloaded
-#                   (staticRuntimeUnload.cpp)
+#                   libgcc_s, libpthread) of glibc 2.17 or later
+#                   (glibcCompat.c), and runs beside any host's C++ runtime;
+#                   its copy of libstdc++ frees its heap when the FMU is
+#                   unloaded (staticRuntimeUnload.cpp)
 #   <name>Generator writes modelDescription.xml and documentation/index.html
 #                   from the model's variable table
 #   <name>Fmu       (part of `all`) zips the staging directory
@@ -44,13 +44,18 @@ function(add_connector_fmu)
     $<TARGET_OBJECTS:fmuExportEntryPoints>
     ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/glibcCompat.c
     ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/staticRuntimeUnload.cpp)
-  target_link_libraries(${name} PRIVATE fmuExport ${law})
+  # libpthread.so.0 (no linker name since glibc 2.34, hence -l:) is needed
+  # although nothing resolves to it here: glibcCompat.c binds pthread_once
+  # to the version an older glibc has there only
+  target_link_libraries(${name} PRIVATE fmuExport ${law}
+    -Wl,--push-state,--no-as-needed -l:libpthread.so.0 -Wl,--pop-state)
   set(exports ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/fmi2Exports.map)
   target_link_options(${name} PRIVATE
     -Wl,--version-script=${exports}
     -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,--as-needed
     -static-libstdc++
-    -Wl,--wrap=hypot,--wrap=pow,--wrap=getentropy,--wrap=arc4random)
+    -Wl,--wrap=hypot,--wrap=pow,--wrap=getentropy,--wrap=arc4random
+    -Wl,--wrap=pthread_once)
   set_target_properties(${name} PROPERTIES
     PREFIX ""
     SUFFIX ".so"

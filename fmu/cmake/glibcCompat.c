@@ -2,8 +2,8 @@
    which carries its own libstdc++ (-static-libstdc++) so that it runs
    beside any host's C++ runtime. That libstdc++.a, and the FMU's own code,
    were compiled against Debian 12's glibc 2.36 and would refuse to load on
-   any older glibc for a handful of symbols. Those that have an older
-   equivalent are bound to it here:
+   any older glibc for a handful of symbols. Each has an older equivalent
+   and is bound to it here:
 
    - hypot (2.35) and pow (2.29) got new symbol versions for faster code;
      the old versions compute the same functions;
@@ -12,16 +12,21 @@
      system call serves both;
    - __libc_single_threaded (2.32) tells libstdc++ whether it may skip
      atomic operations; defined here as false, it always uses them, which
-     is correct in any process.
+     is correct in any process;
+   - pthread_once (2.34), called by libstdc++.a, moved from libpthread into
+     libc in 2.34; its first version, GLIBC_2.2.5, is the same function. An
+     older glibc has that version in libpthread.so.0 only, so the binary
+     also needs libpthread.so.0 (ConnectorFmu.cmake links it with
+     --no-as-needed; since 2.34 an empty library kept for such binaries).
 
-   What remains sets the FMUs' lowest glibc, 2.34 (Debian 12, Ubuntu 22.04,
-   RHEL 9), as tests/fmu/checkBinary.cmake checks: libstdc++.a calls
-   pthread_once and __pthread_key_create, which moved from libpthread into
-   libc in 2.34, and an older glibc has them in libpthread.so.0 only.
+   What remains is memcpy (2.14), so the FMUs load on glibc 2.17 or later
+   (the manylinux2014 level: RHEL/CentOS 7, Debian 10, Ubuntu 18.04), as
+   tests/fmu/checkBinary.cmake checks.
 
    The linker redirects the calls here with -Wl,--wrap=<symbol>. */
 #define _GNU_SOURCE
 #include <errno.h>
+#include <pthread.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <sys/syscall.h>
@@ -41,6 +46,13 @@ __asm__(".symver powGlibc225, pow@GLIBC_2.2.5");
 double __wrap_pow(double x, double y)
 {
     return powGlibc225(x, y);
+}
+
+int pthreadOnceGlibc225(pthread_once_t* control, void (*init)(void));
+__asm__(".symver pthreadOnceGlibc225, pthread_once@GLIBC_2.2.5");
+int __wrap_pthread_once(pthread_once_t* control, void (*init)(void))
+{
+    return pthreadOnceGlibc225(control, init);
 }
 
 int __wrap_getentropy(void* buffer, size_t length)
