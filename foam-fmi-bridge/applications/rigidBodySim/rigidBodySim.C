@@ -244,6 +244,9 @@ int main(int argc, char *argv[])
                 )
             );
             motion.state().write(stateDict);
+            #if OPENFOAM >= 2006
+            stateDict.regIOobject::writeObject(IOstreamOption(IOstream::ASCII), true);
+            #else
             stateDict.regIOobject::writeObject
             (
                 IOstream::ASCII,
@@ -251,6 +254,7 @@ int main(int argc, char *argv[])
                 IOstream::UNCOMPRESSED,
                 true
             );
+            #endif
         }
         runTime.write();
 

@@ -274,6 +274,9 @@ int main(int argc, char *argv[])
                 }
                 motions[i].state().write(b);
             }
+            #if OPENFOAM >= 2006
+            state.regIOobject::writeObject(IOstreamOption(IOstream::ASCII), true);
+            #else
             state.regIOobject::writeObject
             (
                 IOstream::ASCII,
@@ -281,6 +284,7 @@ int main(int argc, char *argv[])
                 IOstream::UNCOMPRESSED,
                 true
             );
+            #endif
         }
         runTime.write();
     }

@@ -121,8 +121,13 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
         }
         else if (good && isBoolean && is[0].isWord())
         {
+            #if OPENFOAM >= 2312
+            const Switch sw(Switch::find(is[0].wordToken()));
+            good = sw.good();
+            #else
             const Switch sw(is[0].wordToken(), true);
             good = sw.valid();
+            #endif
             value = good && sw ? 1 : 0;
         }
         else

@@ -388,6 +388,13 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
 }
 
 
+#if OPENFOAM >= 2006
+bool Foam::addedMassRigidBodyMeshMotion::writeObject
+(
+    IOstreamOption streamOpt,
+    const bool valid
+) const
+#else
 bool Foam::addedMassRigidBodyMeshMotion::writeObject
 (
     IOstream::streamFormat fmt,
@@ -395,6 +402,7 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
     IOstream::compressionType cmp,
     const bool valid
 ) const
+#endif
 {
     IOdictionary dict
     (
@@ -419,7 +427,12 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
         dict.add("addedMass", M_);
     }
     // Force ascii writing
+    #if OPENFOAM >= 2006
+    streamOpt.format(IOstream::ASCII);
+    return dict.regIOobject::writeObject(streamOpt, valid);
+    #else
     return dict.regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
+    #endif
 }
 
 

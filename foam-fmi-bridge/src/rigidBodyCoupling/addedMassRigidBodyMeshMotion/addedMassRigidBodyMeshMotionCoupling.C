@@ -82,7 +82,11 @@ Foam::addedMassRigidBodyMeshMotion::fluidLoads(const scalar ramp) const
         forcesDict.add("CofR", vector::zero);
 
         functionObjects::forces f("forces", db(), forcesDict);
+        #if OPENFOAM >= 2206
+        f.calcForcesMoments();
+        #else
         f.calcForcesMoment();
+        #endif
 
         fx[bodyID] = ramp*spatialVector(f.momentEff(), f.forceEff());
     }
@@ -330,7 +334,13 @@ void Foam::addedMassRigidBodyMeshMotion::reportResidual
     // that a time step does at least two correctors.
     if (corrector_ > 1)
     {
+        // The mesh's solver-performance dictionary moved to mesh.data()
+        // in v2312
+        #if OPENFOAM >= 2312
+        fvm.data().setSolverPerformance
+        #else
         fvm.setSolverPerformance
+        #endif
         (
             residualName_,
             SolverPerformance<scalar>

@@ -216,6 +216,9 @@ void Foam::fmuConnectorOutput::flush(const bool final)
 }
 
 
+#if OPENFOAM >= 2006
+bool Foam::fmuConnectorOutput::writeObject(IOstreamOption, const bool) const
+#else
 bool Foam::fmuConnectorOutput::writeObject
 (
     IOstream::streamFormat,
@@ -223,6 +226,7 @@ bool Foam::fmuConnectorOutput::writeObject
     IOstream::compressionType,
     const bool
 ) const
+#endif
 {
     // The time is written after the step's last solve: its row is final
     const_cast<fmuConnectorOutput&>(*this).flush(true);

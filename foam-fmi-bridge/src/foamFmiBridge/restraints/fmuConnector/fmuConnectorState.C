@@ -206,6 +206,13 @@ bool Foam::fmuConnectorState::writeData(Ostream& os) const
 }
 
 
+#if OPENFOAM >= 2006
+bool Foam::fmuConnectorState::writeObject
+(
+    IOstreamOption streamOpt,
+    const bool valid
+) const
+#else
 bool Foam::fmuConnectorState::writeObject
 (
     IOstream::streamFormat fmt,
@@ -213,13 +220,19 @@ bool Foam::fmuConnectorState::writeObject
     IOstream::compressionType cmp,
     const bool valid
 ) const
+#endif
 {
     if (!Pstream::master() || !fmu_.canSerialize())
     {
         return true;
     }
 
+    #if OPENFOAM >= 2006
+    streamOpt.format(IOstream::ASCII);
+    return regIOobject::writeObject(streamOpt, valid);
+    #else
     return regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
+    #endif
 }
 
 
