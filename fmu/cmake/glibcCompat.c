@@ -21,7 +21,8 @@
 
    What remains is memcpy (2.14), so the FMUs load on glibc 2.17 or later
    (the manylinux2014 level: RHEL/CentOS 7, Debian 10, Ubuntu 18.04), as
-   tests/fmu/checkBinary.cmake checks.
+   tests/fmu/checkBinary.cmake checks; tests/fmu/oldGlibc steps every FMU
+   in a Debian 11 root (glibc 2.31).
 
    The linker redirects the calls here with -Wl,--wrap=<symbol>. */
 #define _GNU_SOURCE
