@@ -100,6 +100,9 @@ def run_scene(work, name, connectors, options, states):
     parallel = "-parallel" in options
     full = os.path.join(work, name.replace(" ", ""), "full")
     shutil.copytree(os.path.join(TOP, "tutorials", tutorial), full)
+    # Whatever a user has run in the tutorial (./Allrun, the main job) is
+    # not part of the copy
+    run(["./Allclean"], full, "log.Allclean")
     control = os.path.join(full, "system", "controlDict")
     set_entry(control, "writeFormat", "binary")
     set_entry(control, "writePrecision", "17")
