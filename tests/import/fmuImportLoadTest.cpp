@@ -185,6 +185,20 @@ TEST(FmuLoadError, EntryWithAbsolutePath)
                     {"archive entry '/tmp/escaped.txt' has an absolute path"});
 }
 
+// Two entries named modelDescription.xml: which one a tool reads would
+// depend on the tool (the first, the last), so no tool may read either.
+TEST(FmuLoadError, DuplicateModelDescription)
+{
+    const std::string path = fmuPath("duplicateDescription");
+    fixtures::copyWithEntries(
+        fmuPath("firstOrderLag"), path,
+        {{"modelDescription.xmX", "<fmiModelDescription fmiVersion=\"2.0\"/>",
+          false}});
+    fixtures::renameEntry(path, "modelDescription.xmX", "modelDescription.xml");
+    expectLoadError(path,
+                    {"archive entry 'modelDescription.xml' appears twice"});
+}
+
 TEST(FmuLoadError, SymbolicLinkEntry)
 {
     const std::string path = fmuPath("hostileSymlink");

@@ -224,6 +224,36 @@ void patchDeclaredSize(const std::string& path, const std::string& name,
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
+void renameEntry(const std::string& path, const std::string& from,
+                 const std::string& to)
+{
+    if (from.size() != to.size())
+        throw std::runtime_error("renameEntry: '" + from + "' and '" + to
+                                 + "' differ in length");
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        bytes = s.str();
+    }
+    int patched = 0;
+    for (std::size_t at = 0; at + 46 <= bytes.size(); ++at) {
+        const std::uint32_t signature = readLe32(bytes, at);
+        const std::size_t name = signature == 0x04034b50u ? at + 30 // local
+            : signature == 0x02014b50u                    ? at + 46 // central
+                                                          : 0;
+        if (name && bytes.compare(name, from.size(), from) == 0) {
+            bytes.replace(name, to.size(), to);
+            ++patched;
+        }
+    }
+    if (patched != 2)
+        throw std::runtime_error("cannot find both headers of " + from + " in "
+                                 + path);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
 ScopedEnv::ScopedEnv(const std::string& name, const std::string& value)
     : name_(name)
 {

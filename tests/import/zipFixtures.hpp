@@ -38,6 +38,12 @@ void addZeroEntry(const std::string& path, const std::string& name,
 void patchDeclaredSize(const std::string& path, const std::string& name,
                        std::uint32_t size);
 
+// Renames the entry from to to (a name of the same length) in the archive's
+// local header and central directory, without libzip, which refuses a name
+// that is already taken: an archive with two entries of one name.
+void renameEntry(const std::string& path, const std::string& from,
+                 const std::string& to);
+
 // Sets an environment variable for the lifetime of the object.
 class ScopedEnv {
 public:

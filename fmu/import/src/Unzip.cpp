@@ -110,9 +110,18 @@ FmuArchive::FmuArchive(const std::string& archive, UnpackLimits limits)
             || !(st.valid & ZIP_STAT_SIZE))
             throw Error(where(name) + " has no size in the zip directory: "
                         + zip_strerror(zip_.get()));
-        entries_.emplace(
+        const bool isDirectory = name.back() == '/';
+        const auto [found, added] = entries_.emplace(
             relative,
-            Entry {static_cast<std::uint64_t>(i), st.size, name.back() == '/'});
+            Entry {static_cast<std::uint64_t>(i), st.size, isDirectory});
+        // Which of two files of one name counts depends on the tool that
+        // reads the archive (the first, the last): neither may be trusted.
+        if (!added && !(isDirectory && found->second.isDirectory))
+            throw Error(where(name) + " appears twice"
+                        + (name == relative ? std::string()
+                                            : " (as '" + relative + "')")
+                        + ": an FMU names each file once, else tools may "
+                          "read different ones");
     }
 }
 

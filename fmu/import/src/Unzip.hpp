@@ -41,8 +41,8 @@ class FmuArchive {
 public:
     // Opens the archive and checks every entry name: absolute names, '..'
     // components, backslashes and symbolic links are refused with an Error
-    // naming the archive and the entry. Of two entries with one name, the
-    // first counts.
+    // naming the archive and the entry, and so are two file entries of one
+    // name (after normalisation: "./a" is "a").
     FmuArchive(const std::string& archive, UnpackLimits limits);
     ~FmuArchive();
     FmuArchive(const FmuArchive&) = delete;
