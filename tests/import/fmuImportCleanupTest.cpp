@@ -7,11 +7,17 @@
 
 #include <gtest/gtest.h>
 
-#include <spawn.h>
-#include <sys/wait.h>
+#include "fmuImport/fmuImport.hpp"
 
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -145,6 +151,73 @@ TEST(UnpackCleanup, HostHandlerThatGoesOnKeepsTheFilesUntilTheEnd)
     EXPECT_TRUE(!o.signalled && o.code == 0) << describe(o);
     EXPECT_EQ(o.marker, "handler ran\n");
     EXPECT_TRUE(o.leftovers.empty()) << describe(o);
+}
+
+// The process id of a process that has ended: a child that exits at once.
+pid_t deadProcessId()
+{
+    pid_t pid = 0;
+    char true_[] = "/bin/true";
+    char* argv[] = {true_, nullptr};
+    if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv, environ) != 0)
+        throw std::runtime_error("cannot start /bin/true");
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return pid;
+}
+
+// A killed run (SIGKILL, a node that went down) leaves its unpack folder
+// behind: the next process that unpacks into the same temporary folder
+// removes the folders of the importer's naming whose process has ended and
+// that belong to its user, and nothing else.
+TEST(UnpackCleanup, FoldersOfEndedProcessesAreRemovedAtTheFirstUnpack)
+{
+    namespace fs = std::filesystem;
+    fixtures::PrivateTmpDir tmp;
+    const std::string dead = std::to_string(deadProcessId());
+    const std::string alive = std::to_string(getppid());
+    const fs::path outside = tmp.path().parent_path()
+        / (tmp.path().filename().string() + ".outside");
+    fs::create_directories(outside / "keep");
+    for (const std::string& name :
+         {"fmuImport-" + dead + "-aB3xY9", "fmuImport-" + alive + "-aB3xY9",
+          "fmuImport-x" + dead + "-aB3xY9", "fmuImport-" + dead + "-a/b",
+          "other-" + dead + "-aB3xY9", "fmuImport-" + dead + "-toolong1"}) {
+        fs::create_directories(tmp.path() / name / "binaries");
+        std::ofstream(tmp.path() / name / "binaries" / "x.so") << "x";
+    }
+    fs::create_directory_symlink(
+        outside, tmp.path() / ("fmuImport-" + dead + "-link00"));
+    std::ofstream(tmp.path() / ("fmuImport-" + dead + "-file00")) << "x";
+    // Owned by another user: only root can make one
+    const bool asRoot = geteuid() == 0;
+    const fs::path foreign = tmp.path() / ("fmuImport-" + dead + "-other0");
+    if (asRoot) {
+        fs::create_directory(foreign);
+        ASSERT_EQ(chown(foreign.c_str(), 65534, 65534), 0);
+    }
+
+    {
+        const fmuImport::Fmu fmu(fixtures::fmuPath("firstOrderLag"));
+        std::vector<std::string> left = tmp.contents();
+        std::sort(left.begin(), left.end());
+        const std::string own
+            = fs::path(fmu.unpackDirectory()).filename().string();
+        std::vector<std::string> expected = {own,
+                                             "fmuImport-" + alive + "-aB3xY9",
+                                             "fmuImport-x" + dead + "-aB3xY9",
+                                             "fmuImport-" + dead + "-a",
+                                             "other-" + dead + "-aB3xY9",
+                                             "fmuImport-" + dead + "-toolong1",
+                                             "fmuImport-" + dead + "-link00",
+                                             "fmuImport-" + dead + "-file00"};
+        if (asRoot)
+            expected.push_back(foreign.filename().string());
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(left, expected);
+    }
+    EXPECT_TRUE(fs::exists(outside / "keep"));
+    fs::remove_all(outside);
 }
 
 } // namespace

@@ -1,6 +1,9 @@
 // A private temporary directory (mkdtemp: $TMPDIR/fmuImport-<pid>-XXXXXX),
 // removed with its contents when the object is destroyed, or, when the
-// process ends without destroying it, by UnpackRegistry.
+// process ends without destroying it, by UnpackRegistry. A process killed
+// by SIGKILL leaves its directory behind: the first TempDir a process makes
+// in a temporary folder removes there the directories of that naming owned
+// by its user whose process has ended.
 #ifndef FMUIMPORT_TEMPDIR_HPP
 #define FMUIMPORT_TEMPDIR_HPP
 

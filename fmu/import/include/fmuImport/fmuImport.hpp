@@ -132,7 +132,10 @@ using Logger = std::function<void(const std::string& instanceName, int status,
 // it are gone (instances keep the binary loaded), and also when the process
 // ends by exit() or by SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGSEGV,
 // SIGFPE, SIGABRT, SIGBUS or SIGILL (handlers installed at the first load;
-// they chain to the handlers installed before or after them). Host floating-point traps are masked
+// they chain to the handlers installed before or after them). SIGKILL
+// leaves it behind: the first load of a process into a temporary folder
+// removes there every fmuImport-<pid>-XXXXXX directory of its user whose
+// process no longer exists (no /proc/<pid>). Host floating-point traps are masked
 // during every call into the FMU. A moved-from Fmu or Instance may only be
 // destroyed or assigned to.
 class Fmu {
