@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace {
 
@@ -119,6 +120,30 @@ TEST(FmuLoad, MovedFmuKeepsItsFiles)
     fmuImport::Fmu second(std::move(first));
     EXPECT_TRUE(std::filesystem::exists(directory));
     EXPECT_EQ(second.modelDescription().modelIdentifier, "firstOrderLag");
+}
+
+TEST(FileSha256, GivesTheDigestAsSha256sumPrintsIt)
+{
+    fixtures::PrivateTmpDir tmp;
+    const std::string abc = (tmp.path() / "abc").string();
+    std::ofstream(abc) << "abc";
+    EXPECT_EQ(
+        fmuImport::fileSha256(abc),
+        "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    const std::string empty = (tmp.path() / "empty").string();
+    std::ofstream(empty).close();
+    EXPECT_EQ(
+        fmuImport::fileSha256(empty),
+        "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    try {
+        fmuImport::fileSha256("/nonexistent/x.fmu");
+        ADD_FAILURE() << "no error for a missing file";
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "cannot read '/nonexistent/x.fmu' for its SHA-256"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(FmuLoadError, MissingFile)

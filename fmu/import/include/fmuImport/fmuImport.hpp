@@ -264,6 +264,12 @@ private:
     std::shared_ptr<Impl> impl_;
 };
 
+// The SHA-256 of the file at path, 64 lowercase hexadecimal digits (as
+// sha256sum prints it); Error naming the file when it cannot be read. A
+// case that names the hash of the .fmu it was set up with is sure to run
+// that file: an FMU is native code, run with the rights of its host.
+std::string fileSha256(const std::string& path);
+
 // The connector FMU interface (docs/connector-fmu-interface.md) as every
 // importer of connectors sees it: the vocabulary of interface variables with
 // their rules, and a connector FMU's variables resolved against it. fmusim
