@@ -68,7 +68,7 @@ def main():
     print("The FMU's new step, part by part (each timed on its own, same rounds):")
     print(f"  evaluation (inputs, fmi2DoStep, outputs) {f[2]:6.0f}")
     print(f"  state save (fmi2GetFMUstate)             {f[3]:6.0f}")
-    print(f"  row of outputs (17 values, buffered)     {f[4]:6.0f}")
+    print(f"  row of outputs (17 values, to the file)  {f[4]:6.0f}")
     print(f"  sum                                      {sum(f[2:]):6.0f}")
     print("Goals: a new step at most 2000 ns, a repeated solve at most 1000 ns")
     print(f"  new step {'met' if f[0] <= 2000 else 'NOT met'}, "

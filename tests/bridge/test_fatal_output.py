@@ -1,29 +1,72 @@
-"""A run ended by a FatalError keeps every completed row of connector
-outputs; a connector that asks to end the simulation ends it with its
-reason.
+"""A run that ends abnormally keeps every row of every completed time step,
+in the connector's output and in the driver's bodies file; a connector that
+asks to end the simulation ends it with its reason.
 
-The restraint collects its rows in memory and writes them at write times;
-a FatalError ends the process with exit(), which destroys no restraint, so
-an exit handler must write them. The test FMU faultySpring (testSpring with
-fault parameters, tests/fmusim/fixtures) returns a NaN force from
-t = nanTime on; the bridge stops with a FatalError naming the output. No
-time is written before that (writeInterval beyond the end), so every row
-must come from the exit handler: one per completed step before nanTime.
+Rows reach their files when their step completes: the driver writes and
+flushes its bodies row after the step's last solve, the connector its row
+when the next step begins, before the FMU is called. So nothing waits in
+memory for a write time (none is reached here: writeInterval lies beyond
+the end) and a FatalError, a crash and kill -9 keep the same rows. The test
+FMU faultySpring (testSpring with fault parameters, tests/fmusim/fixtures)
+misbehaves in the step that starts at its fault time:
 
-With endTime instead, faultySpring refuses the step from that time with
-fmi2Discard and fmi2Terminated (FMI 2.0's way for a co-simulation FMU to
-end the simulation): the run stops with a FatalError that says so and
-gives the FMU's reason.
+- nanTime 0.3: A.F[1] is NaN after the step from 0.3 to 0.31, a FatalError
+  naming the output; the steps to 0.3 completed. (Before, the connector's
+  rows stopped at 0.29: the row of 0.3 was written only when the next
+  step's evaluation had succeeded; and bodies.dat was empty.)
+- endTime 0.3: the step from 0.3 is refused with fmi2Discard and
+  fmi2Terminated (FMI 2.0's way for a co-simulation FMU to end the
+  simulation): a FatalError that says so and gives the FMU's reason.
+- crashTime 0.07: the step from 0.07 writes through a null pointer; the
+  rows of the 7 completed steps are kept (before: none, and bodies.dat
+  empty).
+- hangTime 0.09: the step from 0.09 never returns; the run is killed with
+  SIGKILL once it hangs. Kept: the 9 completed steps (the last write time
+  was 0.08), and the line shapes of catenary.fmu written at the write
+  times before (VTK files and the series that lists them). The same for sixDoFSim's bodies file (nanTime).
 """
+import json
 import os
+import signal
+import subprocess
 import sys
+import time
 
-from bridgecase import Case, rigid_body, vec
+from bridgecase import Case, fmu_path, rigid_body, vec
+from sixdofcase import SixDoFCase, sixdof_body
 
-DT, NAN_TIME, END = 0.01, 0.3, 1.0
+DT, FAULT_TIME, END = 0.01, 0.3, 1.0
 
 
-def model(fmu, fault="nanTime"):
+def faulty_fmu():
+    fmu = os.path.join(os.environ["FOAMFMI_BUILD_DIR"], "tests", "fixture-fmus", "faultySpring.fmu")
+    if not os.path.isfile(fmu):
+        raise SystemExit(f"{fmu} is missing: build the test fixtures first (./Allwmake)")
+    return fmu
+
+
+def catenary_line():
+    """A slack catenary from the weight to an anchor on the seabed: a
+    connector with a line shape, written as VTK at write times."""
+    return f"""
+        line
+        {{
+            type fmuConnector;
+            body weight;
+            fmu "{fmu_path('catenary')}";
+            parameters
+            {{
+                unstretchedLength 3;
+                EA 1e5;
+                weight 0.5;
+                seabedContact 1;
+                A.p {vec((0, 0, 0))};
+                B.p {vec((2, 0, -1.5))};
+            }}
+        }}"""
+
+
+def model(fmu, fault="nanTime", fault_time=FAULT_TIME, extra=""):
     return f"""
     solver {{ type symplectic; }}
     g (0 0 -9.81);
@@ -42,54 +85,151 @@ def model(fmu, fault="nanTime"):
             {{
                 stiffness 100;
                 restLength 0.5;
-                {fault} {NAN_TIME};
+                {fault} {fault_time};
                 A.p {vec((0, 0, 0))};
                 B.p {vec((0, 0, 0.5))};
             }}
-        }}
+        }}{extra}
     }}
 """
 
 
-def main():
-    fmu = os.path.join(os.environ["FOAMFMI_BUILD_DIR"], "tests", "fixture-fmus", "faultySpring.fmu")
-    if not os.path.isfile(fmu):
-        raise SystemExit(f"{fmu} is missing: build the test fixtures first (./Allwmake)")
+def steps_to(t):
+    """Ends of the completed steps of DT up to t."""
+    return [DT * (i + 1) for i in range(int(round(t / DT)))]
 
-    case = Case("fatalOutput", model(fmu), END, DT, write_interval=10 * END)
-    log = case.run(expect_failure=True)
+
+def rows_check(name, rows, expected):
+    """(ok, message) for rows of times against expected ones. Times are
+    sums of 0.01: compared with half a step of slack."""
+    ok = len(rows) == len(expected) and all(abs(a - b) < DT / 2 for a, b in zip(rows, expected))
+    return ok, (f"{name}: {len(rows)} rows, last t = {rows[-1] if rows else None}, "
+                f"expected {len(expected)} up to t = {expected[-1] if expected else None:g}")
+
+
+def table_or_empty(read):
+    try:
+        return read()["Time"]
+    except (OSError, TypeError, KeyError):
+        return []
+
+
+def check_rows(label, case, last, bodies=None):
+    """Failures among: connector rows to last, bodies rows 0 to last."""
+    failures = 0
+    checks = [rows_check("connector spring", table_or_empty(lambda: case.connector("spring")), steps_to(last)),
+              rows_check("bodies.dat", table_or_empty(bodies or case.bodies), [0.0] + steps_to(last))]
+    for ok, message in checks:
+        print(f"{'PASS' if ok else 'FAIL'} {label}, rows kept: {message}", flush=True)
+        failures += 0 if ok else 1
+    return failures
+
+
+def run_killed(case, rows_before_kill, timeout=120):
+    """Start rigidBodySim, wait until the connector has written the given
+    number of rows (the run then hangs in the next step), kill it with
+    SIGKILL, and return its exit code."""
+    log = open(os.path.join(case.dir, "log.rigidBodySim"), "w")
+    process = subprocess.Popen(["rigidBodySim", "-case", case.dir], stdout=log,
+                               stderr=subprocess.STDOUT, start_new_session=True)
+    output = os.path.join(case.dir, "postProcessing", "fmuConnectors", "0", "spring.dat")
+    deadline = time.time() + timeout
+    while process.poll() is None and time.time() < deadline:
+        if len(table_or_empty(lambda: case.connector("spring"))) >= rows_before_kill and os.path.isfile(output):
+            time.sleep(0.5)  # hanging in the next step by now
+            break
+        time.sleep(0.1)
+    if process.poll() is None:
+        os.killpg(process.pid, signal.SIGKILL)
+    code = process.wait()
+    log.close()
+    return code
+
+
+def check_series(case, write_times):
+    """Failures: the VTK series lists one complete file per write time."""
+    folder = os.path.join(case.dir, "VTK", "fmuConnectors")
+    try:
+        with open(os.path.join(folder, "line.vtk.series")) as f:
+            files = json.load(f)["files"]
+    except (OSError, ValueError) as error:
+        print(f"FAIL VTK series after the kill: {error}")
+        return 1
+    times = [entry["time"] for entry in files]
+    complete = all(
+        os.path.isfile(os.path.join(folder, entry["name"]))
+        and open(os.path.join(folder, entry["name"])).read().count("\n") > 5
+        for entry in files
+    )
+    ok = complete and len(times) == len(write_times) and all(
+        abs(a - b) < DT / 2 for a, b in zip(times, write_times))
+    print(f"{'PASS' if ok else 'FAIL'} VTK series after the kill: times {times}, "
+          f"files {'complete' if complete else 'missing or cut'}")
+    return 0 if ok else 1
+
+
+def main():
+    fmu = faulty_fmu()
     failures = 0
 
+    # A NaN output: FatalError in the step from 0.3 to 0.31
+    case = Case("fatalOutput", model(fmu), END, DT, write_interval=10 * END)
+    log = case.run(expect_failure=True)
     stopped = "output A.F[1] is not finite" in log
     print(f"{'PASS' if stopped else 'FAIL'} the NaN force stops the run: "
           f"{'FatalError names A.F[1]' if stopped else log[-1500:]}")
-    failures += 0 if stopped else 1
-
-    rows = case.connector("spring")["Time"]
-    # The step that reaches nanTime fails; every step before it completed.
-    # Times are sums of 0.01: compare with half a step of slack.
-    expected = [DT * (i + 1) for i in range(int(round(NAN_TIME / DT)) - 1)]
-    ok = len(rows) == len(expected) and all(abs(a - b) < DT / 2 for a, b in zip(rows, expected))
-    print(f"{'PASS' if ok else 'FAIL'} rows kept: {len(rows)} rows, last t = "
-          f"{rows[-1] if rows else None}, expected {len(expected)} up to t = {expected[-1]:g}")
-    failures += 0 if ok else 1
-
+    failures += (0 if stopped else 1) + check_rows("NaN output", case, FAULT_TIME)
     case.cleanup()
 
+    # The connector ends the simulation
     case = Case("endRequest", model(fmu, "endTime"), END, DT, write_interval=10 * END)
     log = case.run(expect_failure=True)
     expected = ("restraint spring: the connector asks to end the simulation at t = 0.3",
                 "the spring asks to end the simulation at endTime = 0.3 s")
     ended = all(e in log for e in expected)
-    rows = case.connector("spring")["Time"]
-    ok = ended and len(rows) == 29
-    print(f"{'PASS' if ok else 'FAIL'} the connector ends the simulation at its endTime: "
-          f"message {'found' if ended else 'missing'}, {len(rows)} rows"
-          + ("" if ended else "\n" + log[-1500:]))
-    failures += 0 if ok else 1
+    print(f"{'PASS' if ended else 'FAIL'} the connector ends the simulation at its endTime: "
+          f"message {'found' if ended else 'missing'}" + ("" if ended else "\n" + log[-1500:]))
+    failures += (0 if ended else 1) + check_rows("end request", case, FAULT_TIME)
     case.cleanup()
 
-    print(f"{3 - failures} passed, {failures} failed")
+    # A crash of the FMU in the step from 0.07
+    case = Case("crashOutput", model(fmu, "crashTime", 0.07), END, DT, write_interval=10 * END)
+    case.run(expect_failure=True)
+    failures += check_rows("crash", case, 0.07)
+    case.cleanup()
+
+    # kill -9 while the FMU hangs in the step from 0.09; a line shape
+    # written every 0.02 s
+    case = Case("killOutput", model(fmu, "hangTime", 0.09, catenary_line()), END, DT,
+                write_interval=0.02)
+    code = run_killed(case, 9)
+    killed = code == -signal.SIGKILL
+    print(f"{'PASS' if killed else 'FAIL'} killed while hanging: exit code {code}")
+    failures += (0 if killed else 1) + check_rows("kill -9", case, 0.09)
+    failures += check_series(case, [0.02, 0.04, 0.06, 0.08])
+    case.cleanup()
+
+    # sixDoFSim's bodies file: a NaN output in the step from 0.3
+    spring = f"""            spring
+            {{
+                sixDoFRigidBodyMotionRestraint fmuConnector;
+                fmu "{fmu}";
+                body weight;
+                parameters
+                {{
+                    stiffness 100; restLength 0.5; nanTime {FAULT_TIME};
+                    A.p {vec((0, 0, 0))}; B.p {vec((0, 0, 0.5))};
+                }}
+            }}
+"""
+    case = SixDoFCase("fatalOutputSixDoF", {"weight": sixdof_body(1.0, 0.1, (0, 0, 0), "symplectic", spring)},
+                      END, DT, write_interval=10 * END, g=(0, 0, -9.81))
+    case.run(expect_failure=True)
+    failures += check_rows("sixDoFSim, NaN output", case, FAULT_TIME)
+    case.cleanup()
+
+    checks = 14
+    print(f"{checks - failures} passed, {failures} failed")
     return 1 if failures else 0
 
 

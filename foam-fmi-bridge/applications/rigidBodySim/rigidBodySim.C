@@ -211,6 +211,7 @@ int main(int argc, char *argv[])
     bodies.precision(17);
     writeHeader(bodies, motion);
     writeRow(bodies, runTime.value(), motion);
+    bodies.flush();
 
     // No fluid: no joint forces and no external body forces
     const scalarField tau(motion.nDoF(), Zero);
@@ -227,6 +228,9 @@ int main(int argc, char *argv[])
         }
 
         writeRow(bodies, runTime.value(), motion);
+        // The step is complete: its row reaches the file now, so that a run
+        // ended by an error, a crash or a kill keeps it
+        bodies.flush();
 
         if (runTime.writeTime())
         {

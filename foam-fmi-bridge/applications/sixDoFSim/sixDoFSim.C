@@ -215,6 +215,7 @@ int main(int argc, char *argv[])
     out.precision(17);
     writeHeader(out, names);
     writeRow(out, runTime.value(), motions);
+    out.flush();
 
     while (runTime.run())
     {
@@ -240,6 +241,9 @@ int main(int argc, char *argv[])
         }
 
         writeRow(out, runTime.value(), motions);
+        // The step is complete: its row reaches the file now, so that a run
+        // ended by an error, a crash or a kill keeps it
+        out.flush();
 
         if (runTime.writeTime())
         {

@@ -323,6 +323,13 @@ void Foam::fmuConnectorCore::evaluate
     const kinematics& B
 )
 {
+    // A new time step: the earlier one is complete, its row goes to the
+    // file before the FMU is called (which may fail, crash or hang)
+    if (output_.valid() && deltaT > 0 && timeIndex != stepIndex_)
+    {
+        output_->stepBegins(timeIndex);
+    }
+
     // One switch of OpenFOAM's floating-point traps for all the calls
     const fmuImport::MaskFpTraps masked;
 

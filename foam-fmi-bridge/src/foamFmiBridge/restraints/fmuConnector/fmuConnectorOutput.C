@@ -32,9 +32,6 @@ namespace Foam
 namespace
 {
 
-//- Buffered bytes that make the buffer go to the file between write times
-const std::string::size_type bufferLimit = 1 << 16;
-
 //- The outputs that exist: a FatalError ends the process with exit(), which
 //  destroys no restraint, so an exit handler writes their completed rows.
 //  Never destroyed, as the handler may run after static destructors.
@@ -82,15 +79,17 @@ void Foam::fmuConnectorOutput::commit()
     buffer_ += '\n';
     pending_ = false;
 
-    if (buffer_.size() > bufferLimit)
-    {
-        writeBuffer();
-    }
+    writeBuffer();
 }
 
 
 void Foam::fmuConnectorOutput::writeBuffer()
 {
+    if (buffer_.empty())
+    {
+        return;
+    }
+    // Flushed: the row is in the file before the next step calls the FMU
     file_.write(buffer_.data(), buffer_.size());
     file_.flush();
     buffer_.clear();
@@ -157,8 +156,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     {
         WarningInFunction
             << "cannot install the exit handler: a run ended by an error"
-            << " may lose the rows of " << path << " since the last write"
-            << " time" << endl;
+            << " may lose the last completed row of " << path << endl;
     }
     liveOutputs().append(this);
 }
@@ -181,12 +179,18 @@ Foam::fmuConnectorOutput::~fmuConnectorOutput()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
+void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 {
     if (pending_ && timeIndex != pendingIndex_)
     {
         commit();
     }
+}
+
+
+void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
+{
+    stepBegins(timeIndex);
     pending_ = true;
     pendingIndex_ = timeIndex;
     pendingTime_ = t;
@@ -208,7 +212,7 @@ void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 
 void Foam::fmuConnectorOutput::flush(const bool final)
 {
-    if (final)
+    if (final || time().timeIndex() != pendingIndex_)
     {
         commit();
     }
