@@ -1,0 +1,16 @@
+"""Helpers shared by the project's Python scripts: the tutorials' analyses,
+the benchmarks and the tests.
+
+  dictionary      OpenFOAM dictionary entries: read a scalar, word or
+                  vector, the boundary file, set an entry
+  postprocessing  tables of postProcessing/ and of the connectors' outputs,
+                  probes (wave gauges) and the free-surface elevation
+  waves           linear dispersion relation, group velocity, Stokes II
+  harmonics       least-squares harmonic fits (numpy), up-crossing period,
+                  incident and reflected waves from two gauges
+  catenary        elastic catenary with seabed contact (a mooring line)
+  cli             the scripts' command lines (argparse) and error exits
+
+etc/bashrc puts the folder above this package on PYTHONPATH. Only
+harmonics needs numpy (Debian's python3-numpy, /usr/bin/python3).
+"""

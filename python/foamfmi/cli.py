@@ -1,0 +1,36 @@
+"""The scripts' command lines: OpenFOAM-style single-dash options
+(-no-plot, -window T0 T1) parsed by argparse, -help, -h and --help
+printing the script's docstring, and errors that name the script."""
+
+import argparse
+import sys
+
+
+def parser(prog, doc):
+    """An ArgumentParser for the script prog whose help is its docstring
+    doc (kept as written) followed by the options."""
+    p = argparse.ArgumentParser(prog=prog, description=doc, add_help=False,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("-h", "-help", "--help", action="help", help="print this help and exit")
+    return p
+
+
+def add_case(p):
+    """The optional positional CASE, default the current folder."""
+    p.add_argument("case", nargs="?", default=".", metavar="CASE",
+                   help="the case folder (default: .)")
+
+
+def add_no_plot(p):
+    p.add_argument("-no-plot", dest="plot", action="store_false",
+                   help="no plots (gnuplot)")
+
+
+def add_window(p):
+    p.add_argument("-window", nargs=2, type=float, metavar=("T0", "T1"),
+                   help="the analysis window in s (default: see above)")
+
+
+def fail(prog, message):
+    """Exit with status 1 and 'prog: message' on standard error."""
+    sys.exit("%s: %s" % (prog, message))

@@ -1,0 +1,84 @@
+"""foamfmi.harmonics: a fit recovers a known amplitude and phase from a
+synthetic signal with noise; reflection from two gauges; up-crossings."""
+import cmath
+import math
+import random
+import unittest
+
+from foamfmi import harmonics
+
+
+def signal(t, omega, mean, z1, z2):
+    return (mean + (z1 * cmath.exp(1j * omega * t)).real
+            + (z2 * cmath.exp(2j * omega * t)).real)
+
+
+class Fit(unittest.TestCase):
+    omega = 2 * math.pi / 1.5
+    z1 = 0.025 * cmath.exp(0.7j)
+    z2 = 0.003 * cmath.exp(-1.9j)
+
+    def test_exact_signal(self):
+        t = [0.01 * i for i in range(900)]
+        y = [signal(s, self.omega, 0.12, self.z1, self.z2) for s in t]
+        f = harmonics.fit(t, y, self.omega)
+        self.assertAlmostEqual(f.mean, 0.12, delta=1e-14)
+        self.assertAlmostEqual(abs(f.amplitudes[0] - self.z1), 0.0, delta=1e-14)
+        self.assertAlmostEqual(abs(f.amplitudes[1] - self.z2), 0.0, delta=1e-14)
+        self.assertLess(f.rms, 1e-14)
+        self.assertEqual(f.samples, 900)
+
+    def test_noisy_signal_amplitude_and_phase(self):
+        # 10 periods at 100 samples per period, noise of 2 mm: the
+        # amplitude's standard error is sigma sqrt(2/N) = 0.09 mm
+        rng = random.Random(20261126)
+        sigma = 0.002
+        t = [0.015 * i for i in range(1000)]
+        y = [signal(s, self.omega, -0.01, self.z1, self.z2) + rng.gauss(0, sigma) for s in t]
+        mean, amplitude = harmonics.first_harmonic(t, y, self.omega, t[0], t[-1])
+        f = harmonics.fit(t, y, self.omega)
+        self.assertAlmostEqual(amplitude, 0.025, delta=4 * sigma * math.sqrt(2 / len(t)))
+        self.assertAlmostEqual(cmath.phase(f.amplitudes[0]), 0.7, delta=0.02)
+        self.assertAlmostEqual(mean, -0.01, delta=4 * sigma / math.sqrt(len(t)))
+        self.assertAlmostEqual(f.rms, sigma, delta=0.1 * sigma)
+
+    def test_window_and_too_few_samples(self):
+        t = [0.1 * i for i in range(100)]
+        y = [signal(s, self.omega, 0.0, self.z1, 0) for s in t]
+        mean, amplitude = harmonics.first_harmonic(t, y, self.omega, 3.0, 6.0)
+        self.assertAlmostEqual(amplitude, abs(self.z1), delta=1e-14)
+        self.assertEqual(len(harmonics.in_window(t, y, 3.0, 6.0)[0]), 31)
+        with self.assertRaisesRegex(harmonics.FitError, "only 6 samples in the window 3-3.5 s"):
+            harmonics.first_harmonic(t, y, self.omega, 3.0, 3.5)
+
+
+class Reflection(unittest.TestCase):
+    def test_incident_and_reflected_waves_from_two_gauges(self):
+        k = 2 * math.pi / 2.826
+        zi, zr = 0.025 * cmath.exp(0.3j), 0.004 * cmath.exp(-1.2j)
+
+        def at(x):
+            return zi * cmath.exp(-1j * k * x) + zr * cmath.exp(1j * k * x)
+
+        x1, x2 = 3.03, 3.51
+        i, r = harmonics.incident_reflected(at(x1), at(x2), x1, x2, k)
+        self.assertAlmostEqual(abs(i - zi), 0.0, delta=1e-15)
+        self.assertAlmostEqual(abs(r - zr), 0.0, delta=1e-15)
+
+
+class Upcrossings(unittest.TestCase):
+    def test_period_of_a_sine(self):
+        t = [0.01 * i for i in range(1001)]
+        y = [0.3 + math.sin(2 * math.pi * s / 0.8 + 0.1) for s in t]
+        period, n = harmonics.upcrossing_period(t, y, 1.0)
+        self.assertAlmostEqual(period, 0.8, delta=1e-3)
+        self.assertEqual(n, 10)
+
+    def test_too_short(self):
+        period, n = harmonics.upcrossing_period([0, 1, 2], [0, 1, 0], 0)
+        self.assertTrue(math.isnan(period))
+        self.assertEqual(n, 0)
+
+
+if __name__ == "__main__":
+    unittest.main()
