@@ -9,6 +9,7 @@ the benchmarks and the tests.
   harmonics       least-squares harmonic fits (numpy), up-crossing period,
                   incident and reflected waves from two gauges
   catenary        elastic catenary with seabed contact (a mooring line)
+  scene           what tutorials/bin/renderScene draws, read from a case
   cli             the scripts' command lines (argparse) and error exits
 
 etc/bashrc puts the folder above this package on PYTHONPATH. Only

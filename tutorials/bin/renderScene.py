@@ -64,42 +64,30 @@ TANK_2D = (0.93, 0.93, 0.93)
 OUTLINE = (0.0, 0.0, 0.0)
 
 
-# The case's dictionaries and mooring lines: renderSceneCase.py, beside
-# this script
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from renderSceneCase import (  # noqa: E402
-    connector_lines, fail, moving_patch_names, near, read_boundary,
-    select_patches, up_direction)
+# The case's dictionaries and mooring lines: the project's package
+# (python/foamfmi, on PYTHONPATH from etc/bashrc)
+try:
+    from foamfmi import cli
+    from foamfmi.scene import (connector_lines, fail, moving_patch_names, near,
+                               read_boundary, select_patches, up_direction)
+except ImportError as err:
+    sys.exit("renderScene: %s (source etc/bashrc: it puts the project's python/ "
+             "on PYTHONPATH)" % err)
 
 
 # ---------------------------------------------------------------- options
 
 def parse_options(argv):
-    opts = {"time": None, "output": None, "animation": False, "fps": None,
-            "bodies": None, "lines": None, "size": None, "case": "."}
-    takes_value = {"-time", "-output", "-fps", "-bodies", "-lines", "-size"}
-    i, positional = 0, []
-    while i < len(argv):
-        arg = argv[i]
-        if arg in ("-h", "-help", "--help"):
-            sys.stdout.write(__doc__)
-            sys.exit(0)
-        elif arg == "-animation":
-            opts["animation"] = True
-        elif arg in takes_value:
-            if i + 1 >= len(argv):
-                fail("%s needs a value" % arg)
-            i += 1
-            opts[arg[1:]] = argv[i]
-        elif arg.startswith("-"):
-            fail("unknown option %s (renderScene -help lists them)" % arg)
-        else:
-            positional.append(arg)
-        i += 1
-    if len(positional) > 1:
-        fail("one case directory expected, got: %s" % " ".join(positional))
-    if positional:
-        opts["case"] = positional[0]
+    p = cli.parser("renderScene", __doc__)
+    p.add_argument("-time", help="the written time to render (or latest)")
+    p.add_argument("-output", metavar="FILE", help="the picture")
+    p.add_argument("-animation", action="store_true", help="a frame at every written time")
+    p.add_argument("-fps", metavar="F", help="animation frames per second")
+    p.add_argument("-bodies", metavar='"P ..."', help="the body patches")
+    p.add_argument("-lines", metavar='"N ..."', help="the connectors to draw")
+    p.add_argument("-size", metavar="WxH", help="picture size in pixels")
+    cli.add_case(p)
+    opts = vars(p.parse_args(argv))
     if opts["time"] is not None and opts["animation"]:
         fail("-time and -animation exclude each other")
     if opts["time"] is not None and opts["time"] != "latest":

@@ -1,8 +1,10 @@
-"""What renderScene draws from a case, read without ParaView: its
-dictionaries (the boundary, the moving patches, gravity's direction) and
-the mooring lines the fmuConnector restraints wrote (VTK/fmuConnectors/
-series, or the shape columns of their postProcessing/fmuConnectors rows).
-The lines become VTK polydata only when drawn (vtkmodules imported then).
+"""What tutorials/bin/renderScene draws from a case, read without
+ParaView: its dictionaries (the boundary, the moving patches, gravity's
+direction) and the mooring lines the fmuConnector restraints wrote
+(VTK/fmuConnectors/ series, or the shape columns of their
+postProcessing/fmuConnectors rows). The lines become VTK polydata only
+when drawn (vtkmodules imported then). Errors end the program with
+'renderScene: ...'.
 """
 
 import json
@@ -10,6 +12,8 @@ import math
 import os
 import re
 import sys
+
+from foamfmi import dictionary, postprocessing
 
 
 def fail(message):
@@ -21,13 +25,7 @@ def fail(message):
 
 def read_dict_text(path):
     """OpenFOAM dictionary text without comments ('' when absent)."""
-    try:
-        with open(path) as f:
-            text = f.read()
-    except OSError:
-        return ""
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    return re.sub(r"//[^\n]*", " ", text)
+    return dictionary.read_text(path, missing_ok=True)
 
 
 def read_boundary(case):
@@ -40,15 +38,7 @@ def read_boundary(case):
     else:
         fail("%s: no constant/polyMesh/boundary: not a meshed OpenFOAM case"
              % case)
-    patches = []
-    for m in re.finditer(r"([A-Za-z_][\w.:-]*)\s*\{([^{}]*)\}", text):
-        if m.group(1) == "FoamFile":
-            continue
-        kind = re.search(r"\btype\s+(\w+)\s*;", m.group(2))
-        faces = re.search(r"\bnFaces\s+(\d+)\s*;", m.group(2))
-        patches.append((m.group(1), kind.group(1) if kind else "",
-                        int(faces.group(1)) if faces else 0))
-    return patches
+    return dictionary.boundary_patches(text)
 
 
 def moving_patch_names(case):
@@ -80,13 +70,13 @@ def select_patches(patterns, patches, option):
 
 def up_direction(case):
     """Unit vector against gravity (constant/g), z by default."""
-    m = re.search(r"\bvalue\s*\(([^)]*)\)",
-                  read_dict_text(os.path.join(case, "constant/g")))
-    if m:
-        g = [float(v) for v in m.group(1).split()]
-        norm = math.sqrt(sum(v*v for v in g))
-        if len(g) == 3 and norm > 0:
-            return [-v/norm for v in g]
+    try:
+        g = dictionary.read_vector(os.path.join(case, "constant/g"), "value")
+    except (OSError, dictionary.DictionaryError):
+        return [0.0, 0.0, 1.0]
+    norm = math.sqrt(sum(v*v for v in g))
+    if len(g) == 3 and norm > 0:
+        return [-v/norm for v in g]
     return [0.0, 0.0, 1.0]
 
 
@@ -151,17 +141,10 @@ class DatLines:
             tables.sort(key=lambda table: table[0])
 
     def _read(self, path, name, start_time):
-        header, rows = None, []
-        with open(path) as f:
-            for line in f:
-                if line.startswith("#"):
-                    words = line[1:].split()
-                    if words and words[0] == "Time":
-                        header = words
-                elif line.strip():
-                    rows.append([float(v) for v in line.split()])
-        if header is None:
-            fail("%s: no '# Time ...' header line" % path)
+        try:
+            header, rows = postprocessing.read_named_table(path)
+        except postprocessing.PostProcessingError as error:
+            fail(str(error))
         xyz = []
         for i in range(1, len(header) + 1):
             cols = ["shape.%s[%d]" % (c, i) for c in "xyz"]
