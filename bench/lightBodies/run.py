@@ -29,9 +29,7 @@ import shutil
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "tests", "floatingStability"))
-import floatingObjectCase as foc  # noqa: E402
+from foamfmi import floatingobject as foc
 
 HAND_RELAXATION = {100: 0.15, 300: 0.3}
 

@@ -10,6 +10,7 @@ the benchmarks and the tests.
                   incident and reflected waves from two gauges
   catenary        elastic catenary with seabed contact (a mooring line)
   scene           what tutorials/bin/renderScene draws, read from a case
+  floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
   cli             the scripts' command lines (argparse) and error exits
 
 etc/bashrc puts the folder above this package on PYTHONPATH. Only

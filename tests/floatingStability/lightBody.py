@@ -32,8 +32,8 @@ import sys
 import tempfile
 import shutil
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import floatingObjectCase as foc  # noqa: E402
+from foamfmi import floatingobject as foc
+from foamfmi.dictionary import substitute
 
 DENSITY = 30
 END_TIME = 0.15
@@ -101,7 +101,7 @@ def main():
                 ("addedMassInterval", "0", "must be at least 1")):
             case = foc.make(base, os.path.join(work, "bad" + entry), DENSITY,
                             END_TIME, "addedMass", tolerance=TOLERANCE)
-            foc.sub(os.path.join(case, "constant", "dynamicMeshDict"),
+            substitute(os.path.join(case, "constant", "dynamicMeshDict"),
                     r"^(\s*report\s+on;)",
                     rf"\1\n    coupling {{ {entry} {value}; }}")
             bad = foc.solve(case)
@@ -112,7 +112,7 @@ def main():
                      f" with a FatalIOError naming it (log: {case})")
         relaxed = foc.make(base, os.path.join(work, "badRelaxation"), DENSITY,
                            END_TIME, "addedMass", tolerance=TOLERANCE)
-        foc.sub(os.path.join(relaxed, "constant", "dynamicMeshDict"),
+        substitute(os.path.join(relaxed, "constant", "dynamicMeshDict"),
                 r"^(\s*report\s+on;)", r"\1\n    accelerationRelaxation 0.5;")
         foc.solve(relaxed)
         log = open(os.path.join(relaxed, "log.solver")).read()

@@ -13,22 +13,13 @@ import re
 import shutil
 import subprocess
 
+from foamfmi.dictionary import substitute
+
 TUTORIAL = os.path.join(
     os.environ.get("FOAM_TUTORIALS", "/usr/share/doc/openfoam-examples/examples"),
     "multiphase/interFoam/RAS/floatingObject")
 
 LOCK = "/tmp/foamfmi-cfd.lock"
-
-
-def sub(path, pattern, replacement, count=1):
-    """Replace pattern in the file at path; fail if it is not there."""
-    with open(path) as f:
-        text = f.read()
-    new, n = re.subn(pattern, replacement, text, count=count, flags=re.M)
-    if n == 0:
-        raise RuntimeError(f"{path}: no match for {pattern!r}")
-    with open(path, "w") as f:
-        f.write(new)
 
 
 def run(case, *command):
@@ -87,26 +78,26 @@ def make(base, case, density, end_time, coupling, relaxation=0.7,
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(base, case, ignore=shutil.ignore_patterns("log.*"))
     dyn = os.path.join(case, "constant", "dynamicMeshDict")
-    sub(dyn, r"^(\s*rho\s+)500;", rf"\g<1>{density};")
+    substitute(dyn, r"^(\s*rho\s+)500;", rf"\g<1>{density};")
     fvs = os.path.join(case, "system", "fvSolution")
     if tether:
-        sub(dyn, r"^(\s*bodies\s*\n)", TETHER + r"\n\1")
+        substitute(dyn, r"^(\s*bodies\s*\n)", TETHER + r"\n\1")
     if coupling == "stock":
-        sub(dyn, r"accelerationRelaxation\s+[0-9.]+;",
+        substitute(dyn, r"accelerationRelaxation\s+[0-9.]+;",
             f"accelerationRelaxation {relaxation};")
-        sub(fvs, r"nOuterCorrectors\s+\d+;", f"nOuterCorrectors    {outer};")
+        substitute(fvs, r"nOuterCorrectors\s+\d+;", f"nOuterCorrectors    {outer};")
     elif coupling == "addedMass":
-        sub(dyn, r"motionSolverLibs\s+\(rigidBodyMeshMotion\);",
+        substitute(dyn, r"motionSolverLibs\s+\(rigidBodyMeshMotion\);",
             "motionSolverLibs   (rigidBodyMeshMotion foamFmiRigidBodyCoupling);")
-        sub(dyn, r"motionSolver\s+rigidBodyMotion;",
+        substitute(dyn, r"motionSolver\s+rigidBodyMotion;",
             "motionSolver       addedMassRigidBodyMotion;")
-        sub(dyn, r"rigidBodyMotionCoeffs", "addedMassRigidBodyMotionCoeffs")
-        sub(dyn, r"^\s*accelerationRelaxation\s+[0-9.]+;\n", "")
+        substitute(dyn, r"rigidBodyMotionCoeffs", "addedMassRigidBodyMotionCoeffs")
+        substitute(dyn, r"^\s*accelerationRelaxation\s+[0-9.]+;\n", "")
         if tolerance is None:
-            sub(fvs, r"nOuterCorrectors\s+\d+;",
+            substitute(fvs, r"nOuterCorrectors\s+\d+;",
                 f"nOuterCorrectors    {outer};")
         else:
-            sub(fvs, r"nOuterCorrectors\s+\d+;",
+            substitute(fvs, r"nOuterCorrectors\s+\d+;",
                 f"nOuterCorrectors    {max_outer};\n"
                 "    residualControl\n    {\n"
                 f"        rigidBodyCoupling {{ tolerance {tolerance};"
@@ -114,8 +105,8 @@ def make(base, case, density, end_time, coupling, relaxation=0.7,
     else:
         raise ValueError(coupling)
     cd = os.path.join(case, "system", "controlDict")
-    sub(cd, r"^endTime\s+[0-9.]+;", f"endTime         {end_time};")
-    sub(cd, r"^writeInterval\s+[0-9.]+;", f"writeInterval   {end_time};")
+    substitute(cd, r"^endTime\s+[0-9.]+;", f"endTime         {end_time};")
+    substitute(cd, r"^writeInterval\s+[0-9.]+;", f"writeInterval   {end_time};")
     return case
 
 
