@@ -8,6 +8,7 @@ import csv
 import math
 import os
 import resource
+import statistics
 import subprocess
 import sys
 
@@ -111,10 +112,7 @@ def order(xs, ys):
     pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys) if x > 0 and y > 0]
     if len(pts) < 2:
         return float("nan")
-    mx = sum(p[0] for p in pts) / len(pts)
-    my = sum(p[1] for p in pts) / len(pts)
-    sxx = sum((p[0] - mx) ** 2 for p in pts)
-    return sum((p[0] - mx) * (p[1] - my) for p in pts) / sxx
+    return statistics.linear_regression(*zip(*pts)).slope
 
 
 def write_csv(path, header, rows):
