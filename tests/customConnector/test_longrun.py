@@ -32,6 +32,7 @@ import sys
 import tempfile
 
 import customfmu
+from foamfmi import dictionary
 
 CASE = os.path.join(customfmu.EXAMPLE, "case")
 END_TIME = 100.0
@@ -124,16 +125,12 @@ def main():
     os.makedirs(os.path.join(case, "constant", "fmu"), exist_ok=True)
     shutil.copy(fmu, os.path.join(case, "constant", "fmu", "bungee.fmu"))
     control = os.path.join(case, "system", "controlDict")
-    with open(control) as f:
-        text = f.read()
-    text = re.sub(r"^endTime\s+[^;]+;", f"endTime         {END_TIME:g};", text, flags=re.M)
-    text = re.sub(r"^writeInterval\s+[^;]+;", f"writeInterval   {END_TIME:g};", text, flags=re.M)
-    with open(control, "w") as f:
-        f.write(text)
+    dictionary.set_entry(control, "endTime", f"{END_TIME:g}", width=16)
+    dictionary.set_entry(control, "writeInterval", f"{END_TIME:g}", width=16)
     with open(os.path.join(case, "constant", "dynamicMeshDict")) as f:
         dict_text = f.read()
     p = model(dict_text)
-    delta_t = float(re.search(r"^deltaT\s+([^;]+);", text, re.M).group(1))
+    delta_t = dictionary.read_scalar(control, "deltaT")
     solver = re.search(r"solver\s*\{[^}]*type\s+(\w+)", dict_text).group(1)
 
     # As the example's Allrun runs it: rigidBodySim, one solve per step

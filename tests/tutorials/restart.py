@@ -33,6 +33,8 @@ import subprocess
 import sys
 import tempfile
 
+from foamfmi.dictionary import set_entry
+
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 END, HALF = "0.2", "0.1"
 
@@ -55,15 +57,6 @@ def run(command, cwd, log):
         with open(os.path.join(cwd, log)) as f:
             tail = f.read()[-2000:]
         raise AssertionError(f"{' '.join(command)} failed in {cwd}:\n{tail}")
-
-
-def set_entry(path, key, value):
-    with open(path) as f:
-        text = f.read()
-    text, n = re.subn(rf"^{key}\s+[^;]*;", f"{key} {value};", text, flags=re.M)
-    assert n == 1, f"{path}: no entry {key}"
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def rows(path):
