@@ -47,6 +47,15 @@ def read_scalar(path, key):
     return float(m.group(1))
 
 
+def entry_text(text, key):
+    """The value, as written, of the first 'key value;' entry that starts a
+    line of a dictionary's text: '0.1', '(0 0 -9.81)', 'interFoam'."""
+    m = re.search(r"^\s*" + re.escape(key) + r"\s+([^;]+);", text, re.M)
+    if not m:
+        raise DictionaryError("no %s" % key)
+    return m.group(1).strip()
+
+
 def read_word(path, key):
     """The word of the first 'key word;' entry that starts a line (a
     top-level entry such as application in system/controlDict)."""

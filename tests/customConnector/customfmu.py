@@ -18,6 +18,20 @@ SOURCES = ("bungee.c", "modelDescription.xml", "Makefile")
 sys.path.insert(0, os.path.join(TOP, "tests", "bridge"))
 
 
+class Checks:
+    """Counts the checks and prints each: PASS or FAIL, name, detail."""
+
+    def __init__(self):
+        self.passed = self.failed = 0
+
+    def __call__(self, ok, name, detail):
+        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
+        if ok:
+            self.passed += 1
+        else:
+            self.failed += 1
+
+
 def copy_example(name):
     """The example's sources alone in a fresh temporary folder."""
     folder = tempfile.mkdtemp(prefix=f"customConnector.{name}.")

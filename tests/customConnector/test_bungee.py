@@ -60,18 +60,6 @@ def model(fmu, k1, k3, rest_length, z0, solver):
 """
 
 
-class Checks:
-    def __init__(self):
-        self.passed = self.failed = 0
-
-    def __call__(self, ok, name, detail):
-        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
-        if ok:
-            self.passed += 1
-        else:
-            self.failed += 1
-
-
 def bounce_exact(t, k1, rest_length, slack):
     """z(t) of the body dropped from rest with the line slack by `slack`
     (k3 = 0): free fall, harmonic motion while taut, free flight up."""
@@ -224,7 +212,7 @@ def energy(fmu, check):
 
 
 def main():
-    check = Checks()
+    check = customfmu.Checks()
     before = customfmu.openfoam_side()
 
     folder = customfmu.copy_example("good")

@@ -38,24 +38,12 @@ CASE = os.path.join(customfmu.EXAMPLE, "case")
 END_TIME = 100.0
 
 
-class Checks:
-    def __init__(self):
-        self.passed = self.failed = 0
-
-    def __call__(self, ok, name, detail):
-        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
-        if ok:
-            self.passed += 1
-        else:
-            self.failed += 1
-
-
 def entry(text, key):
     """The value of the first 'key value;' in text, as a string."""
-    found = re.search(r"^\s*" + re.escape(key) + r"\s+([^;]+);", text, re.M)
-    if not found:
-        raise SystemExit(f"{key} not found in the case's dynamicMeshDict")
-    return found.group(1).strip()
+    try:
+        return dictionary.entry_text(text, key)
+    except dictionary.DictionaryError:
+        raise SystemExit(f"{key} not found in the case's dynamicMeshDict") from None
 
 
 def vector(text):
@@ -115,7 +103,7 @@ def tension_bound(p, E0):
 
 
 def main():
-    check = Checks()
+    check = customfmu.Checks()
     folder = customfmu.copy_example("longrun")
     fmu, _ = customfmu.build(folder)
 

@@ -33,6 +33,13 @@ class Read(unittest.TestCase):
         with self.assertRaisesRegex(dictionary.DictionaryError, r"no waveHeight in .*constant/g"):
             dictionary.read_scalar(path, "waveHeight")
 
+    def test_entry_text(self):
+        path = os.path.join(WAVE_TANK, "constant", "g")
+        text = dictionary.read_text(path)
+        self.assertEqual(dictionary.entry_text(text, "value"), "( 0 0 -9.81 )")
+        with self.assertRaises(dictionary.DictionaryError):
+            dictionary.entry_text(text, "dimension")
+
     def test_comments_are_skipped(self):
         text = dictionary.strip_comments("a 1; // b 2;\n/* c 3;\n d 4; */ e 5;")
         self.assertNotIn("b 2", text)
