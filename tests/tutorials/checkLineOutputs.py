@@ -39,20 +39,19 @@ import re
 import subprocess
 import sys
 
+from foamfmi import postprocessing
+
 
 def fail(msg):
     sys.exit(f"checkLineOutputs: {msg}")
 
 
 def read_table(path):
-    """Header names (of the last '#' line before the data) and rows."""
-    names, rows = None, []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#"):
-                names = line[1:].split()
-            elif line.strip():
-                rows.append([float(v) for v in line.split()])
+    """Header names (of the '# Time ...' line) and rows."""
+    try:
+        names, rows = postprocessing.read_named_table(path)
+    except postprocessing.PostProcessingError:
+        names, rows = None, []
     if names is None or not rows:
         fail(f"{path}: no header or no rows")
     return names, rows

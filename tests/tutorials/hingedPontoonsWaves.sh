@@ -38,8 +38,8 @@
 #    surface, +-H/2);
 #  - the lines' tensions are those of an elastic catenary with touchdown
 #    (1.5 m, 10 N/m, EA = 1e5 N, no friction) between the fairlead the line
-#    was evaluated at and its anchor, solved here independently (bisection,
-#    below): H, V and the fairlead tension within 1e-6 N + 1e-6 of the
+#    was evaluated at and its anchor, solved independently of the FMU
+#    (foamfmi.catenary): H, V and the fairlead tension within 1e-6 N + 1e-6 of the
 #    tension (the FMU's Newton method stops at 1e-10 of the span, the files
 #    have 16 digits); that fairlead is the one of the logged motion within a
 #    tenth of the largest one-step motion of a fairlead (plus 1e-9 m); a
@@ -217,6 +217,8 @@ do
 import math
 import sys
 
+from foamfmi import catenary, postprocessing
+
 body_file, line_file, fairlead, anchor = sys.argv[1:5]
 L, w, EA = (float(v) for v in sys.argv[5:8])
 p = [float(v) for v in fairlead.split(",")]
@@ -236,52 +238,8 @@ def rotate(rv_deg, v):
     return [v[i] * c + x[i] * s + k[i] * d * (1 - c) for i in range(3)]
 
 
-def shape(H, V):
-    """Span and height of the fairlead over the anchor for horizontal
-    tension H and vertical tension V at the fairlead: elastic catenary, part
-    of it on the bed (V < wL, no friction) or all of it suspended."""
-    if V < w * L:  # touchdown: suspended length V/w, the rest on the bed
-        s = V / w
-        x = L - s + (H / w) * math.asinh(V / H) + H * L / EA
-        z = (H / w) * (math.hypot(1, V / H) - 1) + V * V / (2 * EA * w)
-    else:
-        Va = V - w * L  # vertical tension at the anchor
-        x = (H / w) * (math.asinh(V / H) - math.asinh(Va / H)) + H * L / EA
-        z = (H / w) * (math.hypot(1, V / H) - math.hypot(1, Va / H)) + (V * L - w * L * L / 2) / EA
-    return x, z
-
-
-def bisect(f, lo, hi):
-    """The root of an increasing f in [lo, hi]."""
-    for _ in range(200):
-        m = 0.5 * (lo + hi)
-        if f(m) < 0:
-            lo = m
-        else:
-            hi = m
-    return 0.5 * (lo + hi)
-
-
-def catenary(x, z):
-    """H, V for span x and height z (z grows with V at fixed H, x with H)."""
-    def v_for(H):
-        return bisect(lambda V: shape(H, V)[1] - z, 1e-12, 1e4)
-    H = bisect(lambda H: shape(H, v_for(H))[0] - x, 1e-9, 1e4)
-    return H, v_for(H)
-
-
-def table(path):
-    header, rows = None, []
-    for line in open(path):
-        if line.startswith("# Time "):
-            header = line[1:].split()
-        elif not line.startswith("#") and line.strip():
-            rows.append([float(v) for v in line.split()])
-    return header, rows
-
-
-_, body = table(body_file)
-header, rows = table(line_file)
+body = postprocessing.read_table(body_file)
+header, rows = postprocessing.read_named_table(line_file)
 col = {n: header.index(n) for n in ("H", "V", "fairleadTension", "shape.x[1]", "shape.y[1]", "shape.z[1]")}
 if len(rows) != len(body):
     sys.exit("%d line rows, %d body rows" % (len(rows), len(body)))
@@ -301,7 +259,7 @@ for i, row in enumerate(rows):
     worst_p = max(worst_p, e)
     x = math.hypot(P[0] - q[0], P[1] - q[1])
     z = P[2] - q[2]
-    H, V = catenary(x, z)
+    H, V = catenary.tensions(x, z, L, w, EA)
     T = math.hypot(H, V)
     tol = 1e-6 + 1e-6 * T
     got = (row[col["H"]], row[col["V"]], row[col["fairleadTension"]])

@@ -89,7 +89,7 @@ pass "at rest: $(cat "$workDir/check.out")"
 
 # --- Line tensions against an independent catenary ---------------------------
 # Every row of every line: the fairlead tension against the elastic
-# catenary with touchdown of mooringStatics (Jonkman's closed form, Newton
+# catenary with touchdown of foamfmi.catenary (Jonkman's closed form, Newton
 # to 1e-13 m; length, EA and submerged weight of the case's
 # constant/mooringLines) for the fairlead the line logged (shape.x/y/z[1])
 # and its anchor (shape.x/y/z[11]). Both solve the same equations; the tolerance, 1e-6 of the
@@ -99,29 +99,15 @@ pass "at rest: $(cat "$workDir/check.out")"
 for n in 1 2 3 4
 do
     dat=$(connectorFile "$case" line$n)
-    python3 - "$statics" "$dat" "$case/constant/mooringLines" > "$workDir/check.out" <<'PYTHON' || fail "$dat: $(cat "$workDir/check.out")"
+    python3 - "$dat" "$case/constant/mooringLines" > "$workDir/check.out" <<'PYTHON' || fail "$dat: $(cat "$workDir/check.out")"
 import sys
-from importlib.machinery import SourceFileLoader
-import re
-statics = SourceFileLoader("mooringStatics", sys.argv[1]).load_module()
-path = sys.argv[2]
+from foamfmi import catenary, dictionary, postprocessing
+path = sys.argv[1]
 # The line of the case (constant/mooringLines, lineParameters)
-with open(sys.argv[3]) as f:
-    text = re.sub(r"//.*", "", f.read())
-par = {}
-for key in ("unstretchedLength", "EA", "weight"):
-    m = re.search(r"\b" + key + r"\s+([-+0-9.eE]+)\s*;", text)
-    if not m:
-        sys.exit("no %s in %s" % (key, sys.argv[3]))
-    par[key] = float(m.group(1))
-names, rows = None, []
-with open(path) as f:
-    for line in f:
-        if line.startswith("# Time"):
-            names = line[1:].split()
-        elif not line.startswith("#") and line.strip():
-            rows.append([float(v) for v in line.split()])
-if not names or not rows:
+par = {key: dictionary.read_scalar(sys.argv[2], key)
+       for key in ("unstretchedLength", "EA", "weight")}
+names, rows = postprocessing.read_named_table(path)
+if not rows:
     sys.exit("no rows")
 c = {k: names.index(k) for k in ("shape.x[1]", "shape.y[1]", "shape.z[1]",
                                  "shape.x[11]", "shape.y[11]", "shape.z[11]",
@@ -130,8 +116,8 @@ worst = (0.0, 0.0, 0.0)
 for r in rows:
     fairlead = (r[c["shape.x[1]"]], r[c["shape.y[1]"]], r[c["shape.z[1]"]])
     anchor = (r[c["shape.x[11]"]], r[c["shape.y[11]"]], r[c["shape.z[11]"]])
-    expected = statics.line_tension(fairlead, anchor, par["unstretchedLength"],
-                                    par["weight"], par["EA"])[0]
+    expected = catenary.line_tension(fairlead, anchor, par["unstretchedLength"],
+                                     par["weight"], par["EA"])[0]
     err = abs(r[c["fairleadTension"]] - expected) / expected
     if err > worst[0]:
         worst = (err, r[0], expected)
