@@ -12,6 +12,8 @@ import sys
 import tempfile
 import time
 
+from foamfmi import cli
+
 import extremes
 import report
 import stabmaps
@@ -44,7 +46,11 @@ def measured_values(r):
     return m
 
 
-def main():
+def main(argv):
+    p = cli.parser("bench/verification/run.py", __doc__)
+    p.add_argument("--report-only", action="store_true",
+                   help="rewrite the page from the last full run's results")
+    args = p.parse_args(argv)
     start = time.time()
     os.makedirs(studies.OUT, exist_ok=True)
     r = {}
@@ -53,7 +59,7 @@ def main():
              ("damper_map", stabmaps.damper_maps), ("hinge_map", stabmaps.hinge_maps),
              ("catenary_map", stabmaps.catenary_maps), ("extremes", extremes.rows)]
     saved = os.path.join(tempfile.gettempdir(), "foamfmi-verification.pickle")
-    if "--report-only" in sys.argv:
+    if args.report_only:
         with open(saved, "rb") as f:
             r = pickle.load(f)
     else:
@@ -81,4 +87,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -32,7 +32,7 @@ import sys
 import tempfile
 import shutil
 
-from foamfmi import floatingobject as foc
+from foamfmi import cli, floatingobject as foc
 from foamfmi.dictionary import substitute
 
 DENSITY = 30
@@ -45,8 +45,10 @@ def fail(message):
     sys.exit(1)
 
 
-def main():
-    keep = "-keep" in sys.argv
+def main(argv):
+    p = cli.parser("lightBody.py", __doc__)
+    p.add_argument("-keep", action="store_true", help="keep the runs' folder")
+    keep = p.parse_args(argv).keep
     work = tempfile.mkdtemp(prefix="lightBody.")
     try:
         base = foc.mesh(os.path.join(work, "mesh"))
@@ -130,4 +132,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

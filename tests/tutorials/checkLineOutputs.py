@@ -39,7 +39,7 @@ import re
 import subprocess
 import sys
 
-from foamfmi import postprocessing
+from foamfmi import cli, postprocessing
 
 
 def fail(msg):
@@ -219,18 +219,15 @@ def check_flow(case, line, name, solver, line_rows, points, time_name):
 
 
 def main(argv):
-    args, flow, solver = [], None, None
-    it = iter(argv)
-    for a in it:
-        if a == "--flow":
-            flow = next(it)
-        elif a == "--solver":
-            solver = next(it)
-        else:
-            args.append(a)
-    if len(args) < 2 or (flow and not solver):
+    p = cli.parser("checkLineOutputs.py", __doc__)
+    p.add_argument("case", metavar="CASE")
+    p.add_argument("lines", nargs="+", metavar="LINE")
+    p.add_argument("--flow", metavar="NAME", help="the fmuConnectorFlow function object")
+    p.add_argument("--solver", metavar="APP", help="the solver, with --flow")
+    args = p.parse_args(argv)
+    if args.flow and not args.solver:
         fail("usage: checkLineOutputs.py CASE LINE... [--flow NAME --solver APP]")
-    case, lines = args[0], args[1:]
+    case, lines, flow, solver = args.case, args.lines, args.flow, args.solver
     times = write_times(case)
     if not times:
         fail(f"{case}: no written time")
