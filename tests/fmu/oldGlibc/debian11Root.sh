@@ -20,7 +20,7 @@ fail()
 [ $# -eq 1 ] || fail "usage: debian11Root.sh <dir>"
 [ "$(id -u)" = 0 ] || fail "debootstrap needs root (run the test as root)"
 command -v debootstrap >/dev/null \
-    || fail "debootstrap is not installed: run bin/setup (etc/debian-packages)"
+    || fail "debootstrap is not installed: run bin/setup -tests (etc/debian-packages-tests)"
 mkdir -p "$(dirname "$1")"
 root=$(realpath -m "$1")
 
