@@ -23,7 +23,14 @@ Description
 
     Output: postProcessing/rigidBodySim/<startTime>/bodies.dat with, per
     time step and per body, the centre of mass, its velocity, the angular
-    velocity and the orientation tensor (global frame, row by row).
+    velocity and the orientation tensor (global frame, row by row), each
+    row written when its time step is complete.
+
+    A run that starts from a time written by an earlier run needs that
+    time's rigid-body state, complete: a missing or cut short state file
+    is a FatalIOError naming the previous complete time. The state file is
+    written to a temporary name and renamed, so a kill never leaves half of
+    it.
 
 Usage
     rigidBodySim [-dict <file>] [-nIter <n>] [-case <dir>]
@@ -36,6 +43,7 @@ Usage
 #include "OFstream.H"
 #include "rigidBodyMotion.H"
 #include "rigidBody.H"
+#include "restartFiles.H"
 
 using namespace Foam;
 
@@ -79,9 +87,20 @@ dictionary modelDict(const argList& args, const Time& runTime)
 }
 
 
-//- The rigid-body state written at the start time, if there is one
+//- The rigid-body state written at the start time, if there is one: a
+//  run restarted from a time written by an earlier run must find it there,
+//  complete (restartFiles::require)
 autoPtr<IOdictionary> startState(const Time& runTime)
 {
+    restartFiles::require
+    (
+        runTime,
+        runTime.timeName(),
+        fileName("uniform")/"rigidBodyMotionState",
+        wordList({"q", "qDot", "qDdot", "t", "deltaT"}),
+        "the rigid-body state"
+    );
+
     IOobject io
     (
         "rigidBodyMotionState",
@@ -232,6 +251,10 @@ int main(int argc, char *argv[])
         // ended by an error, a crash or a kill keeps it
         bodies.flush();
 
+        // OpenFOAM's uniform/time first: a time directory that has it is
+        // known to be written by a run, and a restart from it checks that
+        // the state below is there and complete
+        runTime.write();
         if (runTime.writeTime())
         {
             IOdictionary stateDict
@@ -248,19 +271,14 @@ int main(int argc, char *argv[])
                 )
             );
             motion.state().write(stateDict);
-            #if OPENFOAM >= 2006
-            stateDict.regIOobject::writeObject(IOstreamOption(IOstream::ASCII), true);
-            #else
-            stateDict.regIOobject::writeObject
-            (
-                IOstream::ASCII,
-                IOstream::currentVersion,
-                IOstream::UNCOMPRESSED,
-                true
-            );
-            #endif
+            if (!restartFiles::write(stateDict))
+            {
+                FatalErrorInFunction
+                    << "cannot write the rigid-body state to "
+                    << stateDict.objectPath() << " (disk full?)"
+                    << exit(FatalError);
+            }
         }
-        runTime.write();
 
         if (motion.report())
         {

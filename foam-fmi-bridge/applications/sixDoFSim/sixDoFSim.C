@@ -25,7 +25,10 @@ Description
     At every write time the bodies' dictionaries with their current state
     are written to <time>/uniform/sixDoFBodies, as the point-patch condition
     writes its motion into the field file; a run that starts from a time
-    with that file continues from it.
+    with that file continues from it. A run that starts from a time written
+    by an earlier run needs it, complete: a missing or cut short file is a
+    FatalIOError naming the previous complete time. It is written to a
+    temporary name and renamed, so a kill never leaves half of it.
 
     Output: postProcessing/sixDoFSim/<startTime>/bodies.dat with, per time
     step and per body, the centre of rotation, centre of mass, velocity
@@ -48,6 +51,7 @@ Usage
 #include "IOdictionary.H"
 #include "OFstream.H"
 #include "sixDoFRigidBodyMotion.H"
+#include "restartFiles.H"
 
 using namespace Foam;
 
@@ -57,9 +61,20 @@ namespace
 {
 
 //- The bodies' file: <startTime>/uniform/sixDoFBodies when it exists (a
-//  restart), constant/sixDoFBodies otherwise
+//  restart), constant/sixDoFBodies otherwise. A run restarted from a time
+//  written by an earlier run must find it there, complete
+//  (restartFiles::require)
 IOobject bodiesIO(const Time& runTime)
 {
+    restartFiles::require
+    (
+        runTime,
+        runTime.timeName(),
+        fileName("uniform")/"sixDoFBodies",
+        wordList({"bodies"}),
+        "the bodies' state"
+    );
+
     IOobject restart
     (
         "sixDoFBodies",
@@ -245,6 +260,10 @@ int main(int argc, char *argv[])
         // ended by an error, a crash or a kill keeps it
         out.flush();
 
+        // OpenFOAM's uniform/time first: a time directory that has it is
+        // known to be written by a run, and a restart from it checks that
+        // the state below is there and complete
+        runTime.write();
         if (runTime.writeTime())
         {
             IOdictionary state
@@ -278,19 +297,14 @@ int main(int argc, char *argv[])
                 }
                 motions[i].state().write(b);
             }
-            #if OPENFOAM >= 2006
-            state.regIOobject::writeObject(IOstreamOption(IOstream::ASCII), true);
-            #else
-            state.regIOobject::writeObject
-            (
-                IOstream::ASCII,
-                IOstream::currentVersion,
-                IOstream::UNCOMPRESSED,
-                true
-            );
-            #endif
+            if (!restartFiles::write(state))
+            {
+                FatalErrorInFunction
+                    << "cannot write the bodies' state to "
+                    << state.objectPath() << " (disk full?)"
+                    << exit(FatalError);
+            }
         }
-        runTime.write();
     }
 
     Info<< "End\n" << endl;

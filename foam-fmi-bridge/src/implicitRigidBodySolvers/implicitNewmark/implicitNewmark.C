@@ -49,6 +49,8 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::read
     fdStep_ = dict.lookupOrDefault<scalar>("fdStep", 1e-6);
     maxFailedSteps_ = dict.lookupOrDefault<label>("maxFailedSteps", 3);
     report_ = dict.lookupOrDefault<Switch>("report", false);
+    const word restart(dict.lookupOrDefault<word>("restart", "exact"));
+    restartFresh_ = (restart == "fresh");
 
     if (!(rhoInf_ >= 0 && rhoInf_ <= 1))
     {
@@ -77,6 +79,13 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::read
             << " step must be in (0, 1); about the square root of the"
             << " restraints' relative accuracy (1e-6 for double precision)"
             << exit(FatalIOError);
+    }
+    if (restart != "exact" && restart != "fresh")
+    {
+        FatalIOErrorInFunction(dict)
+            << "restart " << restart << ": exact (restore the solver's"
+            << " memory written with the time the run starts from) or fresh"
+            << " (start it anew)" << exit(FatalIOError);
     }
     if (maxFailedSteps_ < 1)
     {
@@ -149,6 +158,7 @@ Foam::RBD::rigidBodySolvers::implicitNewmark::implicitNewmark
 )
 :
     rigidBodySolver(body),
+    restartFresh_(false),
     tSolve_(-GREAT),
     converged_(true),
     stepFailed_(false),
@@ -160,6 +170,8 @@ Foam::RBD::rigidBodySolvers::implicitNewmark::implicitNewmark
     nJacobians_(0)
 {
     read(dict);
+
+    memory_.reset(new implicitNewmarkState(model_.time(), *this, restartFresh_));
 
     Info<< "Rigid-body solver " << typeName << ": generalized-alpha with"
         << " alphaM " << alphaM_ << ", alphaF " << alphaF_ << ", gamma "
@@ -275,6 +287,7 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::write(Ostream& os) const
     os.writeEntry("fdStep", fdStep_);
     os.writeEntry("maxFailedSteps", maxFailedSteps_);
     os.writeEntry("report", report_);
+    os.writeEntry("restart", word(restartFresh_ ? "fresh" : "exact"));
 }
 
 

@@ -19,6 +19,7 @@ License
 #include "forces.H"
 #include "OneConstant.H"
 #include "mathematicalConstants.H"
+#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -53,6 +54,41 @@ Foam::IOobject stateIO(const Foam::polyMesh& mesh)
         Foam::IOobject::NO_WRITE,
         false
     );
+}
+
+
+
+//- The coefficients, once a run restarted from a time written by an earlier
+//  run has found that time's state complete: the bodies' state and, with
+//  the added-mass coupling (not in test mode, which estimates none), the
+//  added mass in use (restartFiles::require)
+const Foam::dictionary& checkedRestart
+(
+    const Foam::polyMesh& mesh,
+    const Foam::dictionary& coeffs
+)
+{
+    Foam::wordList entries({"q", "qDot", "qDdot", "t", "deltaT"});
+    if
+    (
+        !coeffs.getOrDefault<bool>("test", false)
+     && coeffs.subOrEmptyDict("coupling")
+       .getOrDefault<Foam::Switch>("addedMass", true)
+    )
+    {
+        entries.append("addedMass");
+    }
+
+    Foam::restartFiles::require
+    (
+        mesh.time(),
+        mesh.time().timeName(),
+        Foam::fileName("uniform")/"rigidBodyMotionState",
+        entries,
+        "the rigid-body state of addedMassRigidBodyMotion"
+    );
+
+    return coeffs;
 }
 
 } // End anonymous namespace
@@ -101,7 +137,7 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     model_
     (
         mesh.time(),
-        coeffDict(),
+        checkedRestart(mesh, coeffDict()),
         stateIO(mesh).typeHeaderOk<IOdictionary>(true)
       ? IOdictionary(stateIO(mesh))
       : coeffDict()
@@ -426,13 +462,15 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
     {
         dict.add("addedMass", M_);
     }
-    // Force ascii writing
-    #if OPENFOAM >= 2006
-    streamOpt.format(IOstream::ASCII);
-    return dict.regIOobject::writeObject(streamOpt, valid);
-    #else
-    return dict.regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
-    #endif
+    // ASCII, to a temporary file renamed over the state file: a kill
+    // leaves the old file or the new one, never half of it
+    if (!restartFiles::write(dict))
+    {
+        FatalErrorInFunction
+            << "cannot write the rigid-body state to " << dict.objectPath()
+            << " (disk full?)" << exit(FatalError);
+    }
+    return true;
 }
 
 

@@ -8,6 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnectorState.H"
+#include "restartFiles.H"
 #include "Time.H"
 #include "IOstreams.H"
 #include "stringList.H"
@@ -80,11 +81,11 @@ Foam::fmuConnectorState::fmuConnectorState
     ),
     fmu_(fmu)
 {
-    // A time written by an earlier run has a time index (uniform/time);
-    // a case's initial time has none, even when it gives the bodies' state
+    // A time written by an earlier run (restartFiles::restarted); a case's
+    // initial time is none, even when it gives the bodies' state
     const Time& runTime = time.time();
-    const bool restarted = runTime.startTimeIndex() > 0;
-    const bool stateFile = headerOk();
+    const bool restarted = restartFiles::restarted(runTime, instance());
+    const bool stateFile = isFile(objectPath());
 
     if (fresh)
     {
@@ -108,27 +109,35 @@ Foam::fmuConnectorState::fmuConnectorState
             << " initial state" << exit(FatalIOError);
     }
 
+    if (restarted && !stateFile && !fmu_.canSerialize())
+    {
+        FatalIOErrorInFunction(restraintDict)
+            << "restraint " << name << ": the run starts from t = "
+            << instance().c_str() << ", written by an earlier run, but the"
+            << " connector's state " << objectPath() << " is missing (FMU"
+            << " cannot serialize its state, so none was written). The"
+            << " connector would start from its initial state while the"
+            << " bodies continue. Set 'restart fresh;' in the restraint to"
+            << " accept that" << exit(FatalIOError);
+    }
+
+    // Missing, cut short or incomplete: the time was not written to the
+    // end
+    restartFiles::require
+    (
+        runTime,
+        instance(),
+        local()/name,
+        wordList({"fmu", "time", "state"}),
+        "restraint " + name + ": the connector's state",
+        " (or set 'restart fresh;' in the restraint to start the connector"
+        " from its initial state while the bodies continue)"
+    );
+
     if (stateFile)
     {
         readData(readStream(typeName));
         close();
-    }
-    else if (restarted)
-    {
-        FatalIOErrorInFunction(restraintDict)
-            << "restraint " << name << ": the run starts from t = "
-            << instance().c_str() << ", written by an earlier run (time"
-            << " index " << runTime.startTimeIndex() << " in "
-            << runTime.path()/instance()/"uniform"/"time"
-            << "), but the connector's state "
-            << objectPath() << " is missing"
-            << (
-                   fmu_.canSerialize() ? ""
-                 : " (FMU cannot serialize its state, so none was written)"
-               )
-            << ". The connector would start from its initial state while"
-            << " the bodies continue. Set 'restart fresh;' in the restraint"
-            << " to accept that" << exit(FatalIOError);
     }
 
     if (!fmu_.canSerialize())
@@ -227,12 +236,15 @@ bool Foam::fmuConnectorState::writeObject
         return true;
     }
 
-    #if OPENFOAM >= 2006
-    streamOpt.format(IOstream::ASCII);
-    return regIOobject::writeObject(streamOpt, valid);
-    #else
-    return regIOobject::writeObject(IOstream::ASCII, ver, cmp, valid);
-    #endif
+    // ASCII, to a temporary file renamed over the state file: a kill
+    // leaves the old file or the new one, never half of it
+    if (!restartFiles::write(*this))
+    {
+        FatalErrorInFunction
+            << "cannot write the state of connector " << name() << " to "
+            << objectPath() << " (disk full?)" << exit(FatalError);
+    }
+    return true;
 }
 
 
