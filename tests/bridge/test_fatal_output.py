@@ -13,7 +13,9 @@ misbehaves in the step that starts at its fault time:
 - nanTime 0.3: A.F[1] is NaN after the step from 0.3 to 0.31, a FatalError
   naming the output; the steps to 0.3 completed. (Before, the connector's
   rows stopped at 0.29: the row of 0.3 was written only when the next
-  step's evaluation had succeeded; and bodies.dat was empty.)
+  step's evaluation had succeeded; and bodies.dat was empty.) A second
+  connector after it, which the error reaches before its evaluation of the
+  failed step, keeps its row of 0.3 too (the exit handler writes it).
 - endTime 0.3: the step from 0.3 is refused with fmi2Discard and
   fmi2Terminated (FMI 2.0's way for a co-simulation FMU to end the
   simulation): a FatalError that says so and gives the FMU's reason.
@@ -94,6 +96,24 @@ def model(fmu, fault="nanTime", fault_time=FAULT_TIME, extra=""):
 """
 
 
+def steady_spring():
+    """A second connector, evaluated after the faulty one."""
+    return f"""
+        steady
+        {{
+            type fmuConnector;
+            body weight;
+            fmu "{fmu_path('linearSpring')}";
+            parameters
+            {{
+                stiffness 1;
+                restLength 0.5;
+                A.p {vec((0, 0, 0))};
+                B.p {vec((0, 0, 0.5))};
+            }}
+        }}"""
+
+
 def steps_to(t):
     """Ends of the completed steps of DT up to t."""
     return [DT * (i + 1) for i in range(int(round(t / DT)))]
@@ -114,11 +134,12 @@ def table_or_empty(read):
         return []
 
 
-def check_rows(label, case, last, bodies=None):
+def check_rows(label, case, last, connectors=("spring",)):
     """Failures among: connector rows to last, bodies rows 0 to last."""
     failures = 0
-    checks = [rows_check("connector spring", table_or_empty(lambda: case.connector("spring")), steps_to(last)),
-              rows_check("bodies.dat", table_or_empty(bodies or case.bodies), [0.0] + steps_to(last))]
+    checks = [rows_check(f"connector {c}", table_or_empty(lambda: case.connector(c)), steps_to(last))
+              for c in connectors]
+    checks.append(rows_check("bodies.dat", table_or_empty(case.bodies), [0.0] + steps_to(last)))
     for ok, message in checks:
         print(f"{'PASS' if ok else 'FAIL'} {label}, rows kept: {message}", flush=True)
         failures += 0 if ok else 1
@@ -173,12 +194,12 @@ def main():
     failures = 0
 
     # A NaN output: FatalError in the step from 0.3 to 0.31
-    case = Case("fatalOutput", model(fmu), END, DT, write_interval=10 * END)
+    case = Case("fatalOutput", model(fmu, extra=steady_spring()), END, DT, write_interval=10 * END)
     log = case.run(expect_failure=True)
     stopped = "output A.F[1] is not finite" in log
     print(f"{'PASS' if stopped else 'FAIL'} the NaN force stops the run: "
           f"{'FatalError names A.F[1]' if stopped else log[-1500:]}")
-    failures += (0 if stopped else 1) + check_rows("NaN output", case, FAULT_TIME)
+    failures += (0 if stopped else 1) + check_rows("NaN output", case, FAULT_TIME, ("spring", "steady"))
     case.cleanup()
 
     # The connector ends the simulation
@@ -228,7 +249,7 @@ def main():
     failures += check_rows("sixDoFSim, NaN output", case, FAULT_TIME)
     case.cleanup()
 
-    checks = 14
+    checks = 15
     print(f"{checks - failures} passed, {failures} failed")
     return 1 if failures else 0
 

@@ -41,6 +41,15 @@ Foam::DynamicList<Foam::fmuConnectorOutput*>& liveOutputs()
     return *live;
 }
 
+//- The latest time index any connector has begun: a pending row of an
+//  earlier step is final (the exit handler needs it without OpenFOAM's
+//  Time, which may be gone by then)
+Foam::label& latestTimeIndex()
+{
+    static Foam::label index = -1;
+    return index;
+}
+
 void writeCompletedRows()
 {
     for (Foam::fmuConnectorOutput* output : liveOutputs())
@@ -181,6 +190,7 @@ Foam::fmuConnectorOutput::~fmuConnectorOutput()
 
 void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 {
+    latestTimeIndex() = max(latestTimeIndex(), timeIndex);
     if (pending_ && timeIndex != pendingIndex_)
     {
         commit();
@@ -212,7 +222,7 @@ void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 
 void Foam::fmuConnectorOutput::flush(const bool final)
 {
-    if (final || time().timeIndex() != pendingIndex_)
+    if (final || latestTimeIndex() > pendingIndex_)
     {
         commit();
     }
