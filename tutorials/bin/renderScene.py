@@ -71,8 +71,9 @@ try:
     from foamfmi.scene import (connector_lines, fail, moving_patch_names, near,
                                read_boundary, select_patches, up_direction)
 except ImportError as err:
-    sys.exit("renderScene: %s (source etc/bashrc: it puts the project's python/ "
-             "on PYTHONPATH)" % err)
+    hint = (" (source etc/bashrc: it puts the project's python/ on PYTHONPATH)"
+            if err.name == "foamfmi" else "")
+    sys.exit("renderScene: %s%s" % (err, hint))
 
 
 # ---------------------------------------------------------------- options
