@@ -80,13 +80,11 @@ except ImportError as err:
 
 def parse_options(argv):
     p = cli.parser("renderScene", __doc__)
-    p.add_argument("-time", help="the written time to render (or latest)")
-    p.add_argument("-output", metavar="FILE", help="the picture")
-    p.add_argument("-animation", action="store_true", help="a frame at every written time")
-    p.add_argument("-fps", metavar="F", help="animation frames per second")
-    p.add_argument("-bodies", metavar='"P ..."', help="the body patches")
-    p.add_argument("-lines", metavar='"N ..."', help="the connectors to draw")
-    p.add_argument("-size", metavar="WxH", help="picture size in pixels")
+    # the options with a value, described above: (option, its value)
+    for option, value in (("-time", "T"), ("-output", "FILE"), ("-fps", "F"),
+                          ("-bodies", '"P ..."'), ("-lines", '"N ..."'), ("-size", "WxH")):
+        p.add_argument(option, metavar=value)
+    p.add_argument("-animation", action="store_true")
     cli.add_case(p)
     opts = vars(p.parse_args(argv))
     if opts["time"] is not None and opts["animation"]:
