@@ -68,12 +68,22 @@ const Foam::dictionary& checkedRestart
     const Foam::dictionary& coeffs
 )
 {
+    const Foam::Time& runTime = mesh.time();
+    if (!Foam::restartFiles::restarted(runTime, runTime.timeName()))
+    {
+        return coeffs;
+    }
+
+    // The coupling's entries are checked later (readCoupling)
     Foam::wordList entries({"q", "qDot", "qDdot", "t", "deltaT"});
     if
     (
         !coeffs.getOrDefault<bool>("test", false)
-     && coeffs.subOrEmptyDict("coupling")
-       .getOrDefault<Foam::Switch>("addedMass", true)
+     && (
+            !coeffs.isDict("coupling")
+         || coeffs.subDict("coupling")
+           .getOrDefault<Foam::Switch>("addedMass", true)
+        )
     )
     {
         entries.append("addedMass");
@@ -81,8 +91,8 @@ const Foam::dictionary& checkedRestart
 
     Foam::restartFiles::require
     (
-        mesh.time(),
-        mesh.time().timeName(),
+        runTime,
+        runTime.timeName(),
         Foam::fileName("uniform")/"rigidBodyMotionState",
         entries,
         "the rigid-body state of addedMassRigidBodyMotion"
@@ -160,7 +170,12 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
 
     if (rhoName_ == "rhoInf")
     {
-        readEntry("rhoInf", rhoInf_);
+        // From the coefficients, where rho is; else, as OpenFOAM's
+        // rigidBodyMotion reads it, from the top level of dynamicMeshDict
+        if (!coeffDict().readIfPresent("rhoInf", rhoInf_))
+        {
+            readEntry("rhoInf", rhoInf_);
+        }
     }
 
     if (coeffDict().found("ramp"))

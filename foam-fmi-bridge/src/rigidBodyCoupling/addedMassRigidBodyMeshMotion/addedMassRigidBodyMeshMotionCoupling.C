@@ -17,54 +17,6 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::addedMassRigidBodyMeshMotion::readCoupling()
-{
-    const dictionary& dict = coeffDict().subOrEmptyDict("coupling");
-
-    addedMass_ = dict.lookupOrDefault<Switch>("addedMass", true);
-    pName_ = dict.lookupOrDefault<word>("pressure", "p_rgh");
-    residualName_ = dict.lookupOrDefault<word>("residual", "rigidBodyCoupling");
-    maxIter_ = dict.lookupOrDefault<label>("maxIter", 10);
-    addedMassInterval_ = dict.lookupOrDefault<label>("addedMassInterval", 10);
-    tolerance_ = dict.lookupOrDefault<scalar>("tolerance", 1e-9);
-
-    if (maxIter_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxIter = " << maxIter_ << ": at least one Newton iteration"
-            << " per outer corrector is needed" << exit(FatalIOError);
-    }
-    if (addedMassInterval_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "addedMassInterval = " << addedMassInterval_ << ": the"
-            << " number of time steps between two added-mass estimates must"
-            << " be at least 1" << exit(FatalIOError);
-    }
-    if (!(tolerance_ > 0 && tolerance_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "tolerance = " << tolerance_ << ": the relative tolerance of"
-            << " the Newton iterations must be in (0, 1)"
-            << exit(FatalIOError);
-    }
-    if (addedMass_ && coeffDict().found("accelerationRelaxation"))
-    {
-        const scalar aRelax =
-            coeffDict().get<scalar>("accelerationRelaxation");
-        if (aRelax != 1)
-        {
-            FatalIOErrorInFunction(coeffDict())
-                << "accelerationRelaxation " << aRelax << " with the"
-                << " added-mass coupling: the coupling converges without"
-                << " relaxation, which would only slow it down; remove the"
-                << " entry (or set coupling { addedMass off; } to run"
-                << " OpenFOAM's relaxed coupling)" << exit(FatalIOError);
-        }
-    }
-}
-
-
 Foam::Field<Foam::spatialVector>
 Foam::addedMassRigidBodyMeshMotion::fluidLoads(const scalar ramp) const
 {

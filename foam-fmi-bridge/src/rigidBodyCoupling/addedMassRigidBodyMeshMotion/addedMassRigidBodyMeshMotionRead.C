@@ -1,0 +1,401 @@
+/*---------------------------------------------------------------------------*\
+  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
+-------------------------------------------------------------------------------
+License
+    This file is part of foam-fmi-bridge, free software under the GNU General
+    Public License version 3 or later (see LICENSE at the project's top).
+
+Description
+    The dictionary of addedMassRigidBodyMeshMotion, read strictly. A
+    misspelt keyword would silently keep a default (a 'tolerence' the
+    Newton iterations never see), so:
+
+      - the coupling sub-dictionary holds its own entries, each of its
+        type: any other entry, or one of another type, is a FatalIOError
+        that lists the valid entries or says what is expected;
+      - the coefficients hold OpenFOAM's rigidBodyMotion entries, the
+        coupling (a dictionary) and the user's own entries for $-expansion
+        (the tutorials keep a restraint's parameters there): an entry that
+        is a coupling entry out of its place, or that differs from one of
+        the known keywords by a letter or two (a quarter of its length, or
+        its case: 'couplng', 'addedMassInteval', 'accelerationRelaxaton')
+        is a FatalIOError that names the keyword it resembles and lists
+        the valid ones.
+
+\*---------------------------------------------------------------------------*/
+
+#include "addedMassRigidBodyMeshMotion.H"
+#include "Switch.H"
+
+#include <cctype>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- OpenFOAM v1912's rigidBodyMotion entries at the coefficients' level:
+//  read by rigidBodyMeshMotion (test, nIter, rho, ramp, bodies; rampCoeffs
+//  for the Function1's older form; rhoInf, which v1912 reads from the top
+//  level of dynamicMeshDict and this solver from the coefficients first),
+//  rigidBodyModel (bodies,
+//  restraints), rigidBodyMotion (solver, g, accelerationRelaxation,
+//  accelerationDamping, report) and rigidBodyModelState (q, qDot, qDdot,
+//  t, deltaT: the initial state when no state file is read)
+const Foam::wordList openFoamEntries
+({
+    "bodies", "restraints", "solver", "g", "report",
+    "accelerationRelaxation", "accelerationDamping", "test", "nIter",
+    "rho", "rhoInf", "ramp", "rampCoeffs", "q", "qDot", "qDdot", "t",
+    "deltaT"
+});
+
+//- dynamicMeshDict's own entries, when the coefficients are its top level
+//  (no addedMassRigidBodyMotionCoeffs: motionSolver::coeffDict), besides
+//  other solvers' <type>Coeffs
+const Foam::wordList meshDictEntries
+({
+    "dynamicFvMesh", "motionSolverLibs", "motionSolver"
+});
+
+//- The coupling's entries
+const Foam::wordList couplingEntries
+({
+    "addedMass", "pressure", "residual", "addedMassInterval", "maxIter",
+    "tolerance"
+});
+
+
+Foam::string listed(const Foam::wordList& words)
+{
+    Foam::string text;
+    forAll(words, i)
+    {
+        text += (i ? ", " : "") + words[i];
+    }
+    return text;
+}
+
+
+//- Edit distance between two words, letters compared without their case
+Foam::label distance(const std::string& a, const std::string& b)
+{
+    std::vector<Foam::label> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+    {
+        row[j] = Foam::label(j);
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        Foam::label diagonal = row[0];
+        row[0] = Foam::label(i);
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const Foam::label above = row[j];
+            const bool same =
+                std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+            row[j] = Foam::min
+            (
+                Foam::min(row[j] + 1, row[j - 1] + 1),
+                diagonal + (same ? 0 : 1)
+            );
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+
+//- The known keyword that key differs from by a letter or two (at most a
+//  quarter of the known keyword's length, or only in case), or empty
+Foam::word resembles(const Foam::word& key, const Foam::wordList& known)
+{
+    for (const Foam::word& k : known)
+    {
+        const Foam::label d = distance(key, k);
+        if (key != k && d <= Foam::label(k.size()/4))
+        {
+            return k;
+        }
+    }
+    return Foam::word::null;
+}
+
+
+//- Whether a keyword names some solver's coefficients, <type>Coeffs
+bool isCoeffs(const Foam::word& key)
+{
+    const std::string suffix("Coeffs");
+    return
+        key.size() > suffix.size()
+     && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+
+//- The entry's only token; FatalIOError naming the entry and what it
+//  expects when it is a dictionary or not one token
+const Foam::token& oneToken
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const char* expected
+)
+{
+    using namespace Foam;
+
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e->isStream() || e->stream().size() != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "addedMassRigidBodyMotion: coupling entry '" << key
+            << "' expects " << expected << ", got "
+            << (e->isStream() ? "several tokens" : "a dictionary")
+            << exit(FatalIOError);
+    }
+    return e->stream()[0];
+}
+
+
+//- FatalIOError: the entry holds a token of the wrong kind
+void wrongType
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const char* expected,
+    const Foam::token& tok
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "addedMassRigidBodyMotion: coupling entry '" << key
+        << "' expects " << expected << ", got '" << tok << "'"
+        << Foam::exit(Foam::FatalIOError);
+}
+
+
+bool couplingSwitch(const Foam::dictionary& dict, const Foam::word& key, bool deflt)
+{
+    using namespace Foam;
+
+    if (!dict.found(key, keyType::LITERAL))
+    {
+        return deflt;
+    }
+    const char* expected = "a switch (on/off, true/false, yes/no)";
+    const token& tok = oneToken(dict, key, expected);
+    if (tok.isWord())
+    {
+        #if OPENFOAM >= 2312
+        const Switch sw(Switch::find(tok.wordToken()));
+        if (sw.good())
+        #else
+        const Switch sw(tok.wordToken(), true);
+        if (sw.valid())
+        #endif
+        {
+            return sw;
+        }
+    }
+    wrongType(dict, key, expected, tok);
+    return deflt;
+}
+
+
+Foam::word couplingWord
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::word& deflt,
+    const char* expected
+)
+{
+    if (!dict.found(key, Foam::keyType::LITERAL))
+    {
+        return deflt;
+    }
+    const Foam::token& tok = oneToken(dict, key, expected);
+    if (!tok.isWord())
+    {
+        wrongType(dict, key, expected, tok);
+    }
+    return tok.wordToken();
+}
+
+
+Foam::label couplingInteger
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::label deflt
+)
+{
+    if (!dict.found(key, Foam::keyType::LITERAL))
+    {
+        return deflt;
+    }
+    const char* expected = "an integer";
+    const Foam::token& tok = oneToken(dict, key, expected);
+    if (!tok.isLabel())
+    {
+        wrongType(dict, key, expected, tok);
+    }
+    return tok.labelToken();
+}
+
+
+Foam::scalar couplingNumber
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar deflt
+)
+{
+    if (!dict.found(key, Foam::keyType::LITERAL))
+    {
+        return deflt;
+    }
+    const char* expected = "a number";
+    const Foam::token& tok = oneToken(dict, key, expected);
+    if (!tok.isNumber())
+    {
+        wrongType(dict, key, expected, tok);
+    }
+    return tok.number();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
+{
+    const dictionary& coeffs = coeffDict();
+
+    // Without addedMassRigidBodyMotionCoeffs the coefficients are
+    // dynamicMeshDict itself
+    const bool topLevel = !dictionary::found(word(typeName + "Coeffs"));
+
+    wordList known(openFoamEntries);
+    known.append("coupling");
+    if (topLevel)
+    {
+        known.append(meshDictEntries);
+    }
+
+    for (const entry& e : coeffs)
+    {
+        const word& key = e.keyword();
+        if (known.found(key) || (topLevel && isCoeffs(key)))
+        {
+            continue;
+        }
+
+        // Anything else is the user's (for $-expansion) unless it is a
+        // coupling entry out of its place or a misspelt keyword
+        const word like(resembles(key, known));
+        const word likeCoupling(resembles(key, couplingEntries));
+        if (!couplingEntries.found(key) && like.empty() && likeCoupling.empty())
+        {
+            continue;
+        }
+
+        FatalIOErrorInFunction(coeffs)
+            << "addedMassRigidBodyMotion: unknown entry '" << key << "'";
+        if (couplingEntries.found(key))
+        {
+            FatalIOError
+                << ", which belongs in the coupling sub-dictionary:"
+                << " coupling { " << key << " ...; }";
+        }
+        else if (like.size())
+        {
+            FatalIOError<< " (did you mean '" << like << "'?)";
+        }
+        else
+        {
+            FatalIOError
+                << " (did you mean the coupling entry '" << likeCoupling
+                << "', in the coupling sub-dictionary?)";
+        }
+        FatalIOError
+            << ". The entries are OpenFOAM's rigidBodyMotion's ("
+            << listed(openFoamEntries).c_str() << ") and coupling, a"
+            << " dictionary of " << listed(couplingEntries).c_str()
+            << exit(FatalIOError);
+    }
+
+    if (coeffs.found("coupling", keyType::LITERAL) && !coeffs.isDict("coupling"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "addedMassRigidBodyMotion: entry 'coupling' must be a"
+            << " dictionary of " << listed(couplingEntries).c_str()
+            << ", e.g. coupling { addedMass on; addedMassInterval 10; }"
+            << exit(FatalIOError);
+    }
+
+    for (const entry& e : coeffs.subOrEmptyDict("coupling"))
+    {
+        if (!couplingEntries.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(coeffs.subDict("coupling"))
+                << "addedMassRigidBodyMotion: unknown coupling entry '"
+                << e.keyword() << "'; the entries of coupling are "
+                << listed(couplingEntries).c_str() << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::addedMassRigidBodyMeshMotion::readCoupling()
+{
+    checkEntries();
+
+    const dictionary& dict = coeffDict().subOrEmptyDict("coupling");
+
+    addedMass_ = couplingSwitch(dict, "addedMass", true);
+    pName_ = couplingWord(dict, "pressure", "p_rgh", "the pressure field's name");
+    residualName_ =
+        couplingWord(dict, "residual", "rigidBodyCoupling", "a field name");
+    maxIter_ = couplingInteger(dict, "maxIter", 10);
+    addedMassInterval_ = couplingInteger(dict, "addedMassInterval", 10);
+    tolerance_ = couplingNumber(dict, "tolerance", 1e-9);
+
+    if (maxIter_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxIter = " << maxIter_ << ": at least one Newton iteration"
+            << " per outer corrector is needed" << exit(FatalIOError);
+    }
+    if (addedMassInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "addedMassInterval = " << addedMassInterval_ << ": the"
+            << " number of time steps between two added-mass estimates must"
+            << " be at least 1" << exit(FatalIOError);
+    }
+    if (!(tolerance_ > 0 && tolerance_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "tolerance = " << tolerance_ << ": the relative tolerance of"
+            << " the Newton iterations must be in (0, 1)"
+            << exit(FatalIOError);
+    }
+    if (addedMass_ && coeffDict().found("accelerationRelaxation"))
+    {
+        const scalar aRelax =
+            coeffDict().get<scalar>("accelerationRelaxation");
+        if (aRelax != 1)
+        {
+            FatalIOErrorInFunction(coeffDict())
+                << "accelerationRelaxation " << aRelax << " with the"
+                << " added-mass coupling: the coupling converges without"
+                << " relaxation, which would only slow it down; remove the"
+                << " entry (or set coupling { addedMass off; } to run"
+                << " OpenFOAM's relaxed coupling)" << exit(FatalIOError);
+        }
+    }
+}
+
+
+// ************************************************************************* //

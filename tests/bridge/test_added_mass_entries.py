@@ -1,0 +1,192 @@
+"""addedMassRigidBodyMotion reads its dictionary strictly: an unknown
+keyword in the coupling sub-dictionary, a misspelt keyword or a coupling
+entry out of its place at the coefficients' level, and an entry of the
+wrong type, stop the run when the motion solver is built, with a
+FatalIOError that names the entry and lists the valid ones or says what is
+expected. OpenFOAM's own rigidBodyMotion entries are accepted, and so are
+the user's entries for $-expansion at the coefficients' level (the
+tutorials keep restraint parameters there).
+
+Before, `coupling { maxIters 0; tolerence 7; }`, a misspelt `couplng { }`
+and a top-level `addedMassInteval 0` were ignored (exit code 0, the
+defaults in force), and `coupling 5;` gave only OpenFOAM's "not a
+sub-dictionary" warning.
+
+No CFD: a box of 2 x 2 x 2 cells whose bottom is the body's patch, moved by
+moveDynamicMesh with the solver in test mode (gravity only, no fluid
+loads), two time steps.
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+from bridgecase import foam_file
+
+BLOCK_MESH = """
+vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1));
+blocks (hex (0 1 2 3 4 5 6 7) (2 2 2) simpleGrading (1 1 1));
+boundary
+(
+    body { type wall; faces ((0 3 2 1)); }
+    walls { type wall; faces ((4 5 6 7) (0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+);
+"""
+
+POINT_DISPLACEMENT = """
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    body { type calculated; value uniform (0 0 0); }
+    walls { type fixedValue; value uniform (0 0 0); }
+}
+"""
+
+CONTROL = """
+application moveDynamicMesh;
+startFrom startTime; startTime 0; stopAt endTime; endTime 0.02; deltaT 0.01;
+writeControl timeStep; writeInterval 100; writeFormat ascii;
+writePrecision 12; timePrecision 6; runTimeModifiable false;
+"""
+
+SCHEMES = """
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes { default none; }
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+"""
+
+
+def mesh_dict(coeffs_extra="", coupling="coupling { addedMass on; maxIter 10; tolerance 1e-9; }",
+              top_level=""):
+    """dynamicMeshDict with OpenFOAM's own rigidBodyMotion entries and the
+    given coupling and extra entries."""
+    return f"""
+dynamicFvMesh dynamicMotionSolverFvMesh;
+motionSolverLibs (rigidBodyMeshMotion foamFmiRigidBodyCoupling);
+motionSolver addedMassRigidBodyMotion;
+rhoInf 1000;    // where OpenFOAM's rigidBodyMotion reads it
+{top_level}
+addedMassRigidBodyMotionCoeffs
+{{
+    test yes;
+    nIter 1;
+    report off;
+    rho rhoInf;
+    rhoInf 1000;
+    g (0 0 -9.81);
+    accelerationDamping 1;
+    solver {{ type Newmark; }}
+    bodies
+    {{
+        box
+        {{
+            type rigidBody;
+            parent root;
+            mass 1;
+            centreOfMass (0 0 0);
+            inertia (0.1 0 0 0.1 0 0.1);
+            transform (1 0 0 0 1 0 0 0 1) (0.5 0.5 0);
+            joint {{ type Pz; }}
+            patches (body);
+            innerDistance 0.1;
+            outerDistance 0.6;
+        }}
+    }}
+    {coupling}
+    {coeffs_extra}
+}}
+"""
+
+
+def make_case(work, name, dynamic_mesh_dict):
+    case = os.path.join(work, name)
+    for folder in ("system", "constant", "0"):
+        os.makedirs(os.path.join(case, folder))
+    files = {
+        "system/controlDict": ("controlDict", CONTROL),
+        "system/blockMeshDict": ("blockMeshDict", BLOCK_MESH),
+        "system/fvSchemes": ("fvSchemes", SCHEMES),
+        "system/fvSolution": ("fvSolution", ""),
+        "constant/dynamicMeshDict": ("dynamicMeshDict", dynamic_mesh_dict),
+    }
+    for path, (obj, body) in files.items():
+        with open(os.path.join(case, path), "w") as f:
+            f.write(foam_file(obj, body))
+    with open(os.path.join(case, "0", "pointDisplacement"), "w") as f:
+        f.write(foam_file("pointDisplacement", POINT_DISPLACEMENT).replace(
+            "class dictionary", "class pointVectorField"))
+    subprocess.run(["blockMesh", "-case", case], stdout=subprocess.DEVNULL,
+                   stderr=subprocess.STDOUT, check=True)
+    return case
+
+
+def run(case):
+    result = subprocess.run(["moveDynamicMesh", "-case", case], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    return result.returncode, result.stdout
+
+
+def main():
+    work = tempfile.mkdtemp(prefix="addedMassEntries.")
+    valid_coupling = "addedMass, pressure, residual, addedMassInterval, maxIter, tolerance"
+    cases = [
+        # name, dynamicMeshDict, expected phrases (None: must run)
+        ("valid", mesh_dict(), None),
+        ("couplingTypos", mesh_dict(coupling="coupling { maxIters 0; tolerence 7; }"),
+         ["unknown coupling entry 'maxIters'", valid_coupling]),
+        ("misspeltCoupling", mesh_dict(coupling="couplng { addedMass on; }"),
+         ["unknown entry 'couplng'", "accelerationRelaxation", valid_coupling]),
+        ("misspeltTopLevel", mesh_dict(coeffs_extra="addedMassInteval 0;"),
+         ["unknown entry 'addedMassInteval'", "coupling entry 'addedMassInterval'"]),
+        ("misspeltOpenFoamEntry", mesh_dict(coeffs_extra="accelerationRelaxaton 0.5;"),
+         ["unknown entry 'accelerationRelaxaton'", "did you mean 'accelerationRelaxation'"]),
+        ("wrongCase", mesh_dict(coeffs_extra="Coupling { addedMass off; }"),
+         ["unknown entry 'Coupling'", "did you mean 'coupling'"]),
+        ("userEntriesForExpansion",
+         mesh_dict(coeffs_extra="hingeParameters { stiffness 1e5; } pontoon { mass 50; } line 3;"),
+         None),
+        ("couplingEntryAtTopLevel", mesh_dict(coeffs_extra="addedMassInterval 5;"),
+         ["unknown entry 'addedMassInterval'", "belongs in the coupling sub-dictionary"]),
+        ("couplingNotADictionary", mesh_dict(coupling="coupling 5;"),
+         ["entry 'coupling' must be a dictionary"]),
+        ("fractionalMaxIter", mesh_dict(coupling="coupling { maxIter 2.5; }"),
+         ["coupling entry 'maxIter' expects an integer, got '2.5'"]),
+        ("badSwitch", mesh_dict(coupling="coupling { addedMass maybe; }"),
+         ["coupling entry 'addedMass' expects a switch", "maybe"]),
+        ("wordTolerance", mesh_dict(coupling="coupling { tolerance small; }"),
+         ["coupling entry 'tolerance' expects a number, got 'small'"]),
+        ("listPressure", mesh_dict(coupling="coupling { pressure (p_rgh p); }"),
+         ["coupling entry 'pressure' expects the pressure field's name"]),
+        ("withoutCoeffsDictionary",
+         mesh_dict(coeffs_extra="").replace("addedMassRigidBodyMotionCoeffs\n{", "").rstrip()[:-1]
+         + "\naddedMassInteval 0;\n",
+         ["unknown entry 'addedMassInteval'"]),
+    ]
+    failures = 0
+    try:
+        for name, text, expected in cases:
+            case = make_case(work, name, text)
+            code, log = run(case)
+            if expected is None:
+                ok = code == 0
+                detail = f"exit code {code}" + ("" if ok else "\n" + log[-2500:])
+            else:
+                missing = [e for e in expected if e not in log]
+                ok = code != 0 and "FOAM FATAL IO ERROR" in log and not missing
+                detail = f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if not ok else "")
+            print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
+            failures += 0 if ok else 1
+    finally:
+        if os.environ.get("KEEP_CASES") != "1":
+            shutil.rmtree(work, ignore_errors=True)
+    print(f"{len(cases) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
