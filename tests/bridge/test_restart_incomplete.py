@@ -25,8 +25,11 @@ reads: uniform/time, then the rigid-body state, the connector's, the
 solver's) and point to 0.25. Then a
 full disk for real: the connector's state of 0.5 written to /dev/full stops
 the run with a FatalError naming the file, and the restart from 0.5 is the
-same FatalIOError. The same checks for sixDoFSim's uniform/sixDoFBodies.
-And the intact copy restarts.
+same FatalIOError. The same checks for sixDoFSim's uniform/sixDoFBodies,
+and for addedMassRigidBodyMotion's rigid-body state (moveDynamicMesh on the
+box of test_added_mass_entries, in test mode): deleted, cut in half, and,
+with the added-mass coupling on, without the added mass in use. And the
+intact copies restart.
 """
 import os
 import shutil
@@ -36,6 +39,7 @@ import sys
 import time
 
 from implicitcase import ImplicitCase
+import test_added_mass_entries as added_mass
 from sixdofcase import SixDoFCase
 from test_sixdof_spring_world import CENTRE, M, J, fmu_spring
 from sixdofcase import sixdof_body
@@ -118,10 +122,11 @@ def after_kill(folder):
         stream.write("FoamFile\n{\n    version 2.0;\n    format ascii;\n")
 
 
-def check_refused(label, code, log, damaged):
-    """(ok, detail): a FatalIOError that names 0.5, the file and 0.25."""
-    path = os.path.join("0.5", *damaged.split("/"))
-    expected = ["FOAM FATAL IO ERROR", path, "t = 0.5", "previous complete time, 0.25"]
+def check_refused(label, code, log, damaged, time="0.5", previous="0.25"):
+    """(ok, detail): a FatalIOError that names the time, the file and the
+    previous complete time."""
+    path = os.path.join(time, *damaged.split("/"))
+    expected = ["FOAM FATAL IO ERROR", path, f"t = {time}", f"previous complete time, {previous}"]
     missing = [e for e in expected if e not in log]
     ok = code != 0 and not missing
     detail = f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if missing else "")
@@ -185,6 +190,57 @@ def sixdof_checks():
     return results
 
 
+def added_mass_checks():
+    """(ok, detail) of addedMassRigidBodyMotion restarts from a damaged
+    0.02 (writes every step of 0.01)."""
+    import tempfile
+
+    work = tempfile.mkdtemp(prefix="restartIncomplete.addedMass.")
+    text = added_mass.mesh_dict()
+    full = added_mass.make_case(work, "full", text)
+    path = os.path.join(full, "system", "controlDict")
+    with open(path) as f:
+        control = f.read()
+    with open(path, "w") as f:
+        f.write(control.replace("writeInterval 100;", "writeInterval 1;"))
+    code, log = added_mass.run(full)
+    results = [(code == 0, f"addedMassRigidBodyMotion: the run to restart from: exit code {code}")]
+
+    def restart(name, damage, dictionary=text):
+        case = os.path.join(work, name)
+        shutil.copytree(full, case)
+        damage(os.path.join(case, "0.02"))
+        with open(os.path.join(case, "constant", "dynamicMeshDict"), "w") as f:
+            f.write(added_mass.foam_file("dynamicMeshDict", dictionary))
+        with open(os.path.join(case, "system", "controlDict")) as f:
+            control = f.read()
+        with open(os.path.join(case, "system", "controlDict"), "w") as f:
+            f.write(control.replace("startFrom startTime;", "startFrom latestTime;")
+                    .replace("endTime 0.02;", "endTime 0.03;"))
+        return added_mass.run(case)
+
+    state = "uniform/rigidBodyMotionState"
+    for label, damage in (("deleted", delete(state)), ("cut in half", halve(state))):
+        code, log = restart(label.replace(" ", ""), damage)
+        results.append(check_refused(f"addedMassRigidBodyMotion, rigid-body state {label}", code,
+                                     log, state, "0.02", "0.01"))
+
+    # With the added-mass coupling (not in test mode) the state must carry
+    # the added mass in use; test mode writes none
+    coupled = text.replace("test yes;", "test no;")
+    code, log = restart("withoutAddedMass", lambda folder: None, coupled)
+    ok = code != 0 and "lacks its entry 'addedMass'" in log and "previous complete time" not in log
+    results.append((ok, f"addedMassRigidBodyMotion, state without the added mass: exit code {code}"
+                    + ("" if ok else "\n" + log[-2500:])))
+
+    code, log = restart("intact", lambda folder: None)
+    results.append((code == 0, f"addedMassRigidBodyMotion, intact copy restarts: exit code {code}"
+                    + ("" if code == 0 else "\n" + log[-2500:])))
+    if os.environ.get("KEEP_CASES") != "1":
+        shutil.rmtree(work, ignore_errors=True)
+    return results
+
+
 def main():
     full = ImplicitCase("restartIncomplete", model("implicitNewmark"), END, DT, write_interval=WRITE)
     full.run()
@@ -223,6 +279,7 @@ def main():
     case.cleanup()
 
     results += sixdof_checks()
+    results += added_mass_checks()
 
     # The intact copy restarts and restores everything
     case = damaged_copy(full, "restartIncomplete.intact", lambda folder: None)
