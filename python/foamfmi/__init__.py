@@ -5,12 +5,14 @@ the benchmarks and the tests.
                   vector, the boundary file, set an entry
   postprocessing  tables of postProcessing/ and of the connectors' outputs,
                   probes (wave gauges) and the free-surface elevation
-  waves           linear dispersion relation, group velocity, Stokes II
+  waves           linear dispersion relation, group velocity, Stokes II,
+                  the inlet's waves of constant/waveProperties
   harmonics       least-squares harmonic fits (numpy), up-crossing period,
                   incident and reflected waves from two gauges
   catenary        elastic catenary with seabed contact (a mooring line)
   scene           what tutorials/bin/renderScene draws, read from a case
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
+  plots           figures through gnuplot: terminal, window, a body's response
   cli             the scripts' command lines (argparse) and error exits
 
 etc/bashrc puts the folder above this package on PYTHONPATH. Only

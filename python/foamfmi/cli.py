@@ -31,6 +31,27 @@ def add_window(p):
                    help="the analysis window in s (default: see above)")
 
 
+def run(prog, doc, analyse, argv, window=False):
+    """The command line 'prog [-no-plot] [-window T0 T1] [CASE]' of a
+    case's analysis: analyse(case, plot) or, with window,
+    analyse(case, plot, (T0, T1) or None); what it raises (a missing file
+    or entry, too few samples, gnuplot failing) ends the program with
+    'prog: message'."""
+    p = parser(prog, doc)
+    add_no_plot(p)
+    if window:
+        add_window(p)
+    add_case(p)
+    args = p.parse_args(argv)
+    try:
+        if window:
+            analyse(args.case, args.plot, args.window)
+        else:
+            analyse(args.case, args.plot)
+    except (OSError, ValueError, RuntimeError) as err:
+        fail(prog, str(err))
+
+
 def fail(prog, message):
     """Exit with status 1 and 'prog: message' on standard error."""
     sys.exit("%s: %s" % (prog, message))

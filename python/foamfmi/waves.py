@@ -4,6 +4,9 @@ Units SI: omega in rad/s, depth h in m, wave number k in rad/m.
 """
 
 import math
+import os
+
+from foamfmi import dictionary
 
 G = 9.81  # m/s^2, the tutorials' gravity (constant/g)
 
@@ -57,3 +60,11 @@ def stokes2_second_harmonic(a, k, depth):
     h = depth
     return (k * a * a / 4 * math.cosh(k * h) * (2 + math.cosh(2 * k * h))
             / math.sinh(k * h) ** 3)
+
+
+def read_wave_properties(case):
+    """Height H (m), period T (s) and rampTime (s) of the waves generated at
+    the inlet, from CASE/constant/waveProperties."""
+    path = os.path.join(case, "constant", "waveProperties")
+    return tuple(dictionary.read_scalar(path, key)
+                 for key in ("waveHeight", "wavePeriod", "rampTime"))
