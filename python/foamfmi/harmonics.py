@@ -16,7 +16,8 @@ try:
     import numpy as np
 except ImportError as err:
     raise ImportError("numpy not found for %s: install Debian's python3-numpy "
-                      "(run the script with /usr/bin/python3)" % sys.executable) from err
+                      "(bin/setup -tests does) and run the script with "
+                      "/usr/bin/python3" % sys.executable) from err
 
 # A sample is in the window [t0, t1] within this much (s): times written
 # with 6 digits
