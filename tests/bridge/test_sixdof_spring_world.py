@@ -13,6 +13,12 @@ linearSpring FMU tied to the fixed world, run by sixDoFSim (no fluid).
 3. Restart: the run to 1 s, restarted from its write at 0.5 s, continues
    bit for bit (body and connector output), and a restart without the
    connector's state file stops with a message saying so.
+4. A stiffness changed in the case's constant/sixDoFBodies before the
+   restart: the restart reads the restraint from the copy the earlier run
+   wrote (0.5/uniform/sixDoFBodies, as the point-patch condition reads
+   <time>/pointDisplacement), so the change is reported with both values
+   and the run goes on with the copy's; an unchanged case reports nothing.
+   (Before, it was ignored without a word.)
 
 1 and 3 also with sixDoFSim -copyDicts, which builds each motion from a
 copy of its dictionary as a sixDoFRigidBodyMotion solver does: the
@@ -178,8 +184,34 @@ def compare_restart(args=()):
     return failures
 
 
+def changed_parameters():
+    failures = 0
+    bodies = {"fmu": sixdof_body(M, J, CENTRE, "Newmark", fmu_spring("fmu"))}
+    full = SixDoFCase("sixdofChanged.full", bodies, 1.0, 0.005, write_interval=0.5, g=(0, 0, -9.81))
+    full.run()
+    stiffer = {"fmu": sixdof_body(M, J, CENTRE, "Newmark", fmu_spring("fmu").replace(
+        f"stiffness {K};", "stiffness 80;"))}
+    for name, case_bodies in (("changed", stiffer), ("unchanged", bodies)):
+        case = SixDoFCase("sixdofChanged." + name, case_bodies, 1.0, 0.005, write_interval=0.5,
+                          g=(0, 0, -9.81))
+        shutil.copytree(os.path.join(full.dir, "0.5"), os.path.join(case.dir, "0.5"))
+        case.set_time(0.5, 1.0, 0.005, 0.5)
+        log = case.run()
+        reported = "restraint spring_fmu: the run restarts from" in log
+        if name == "changed":
+            ok = reported and "parameters.stiffness: 80 in the case's dictionary, 50 in the restored copy" in log
+        else:
+            ok = not reported
+        failures += not ok
+        print(f"{'PASS' if ok else 'FAIL'} restart, stiffness {name} in constant/sixDoFBodies: "
+              f"{'reported' if reported else 'not reported'}" + ("" if ok else "\n" + log[-2500:]))
+        case.cleanup()
+    full.cleanup()
+    return failures
+
+
 def main():
-    failures = compare_builtin() + compare_analytic() + compare_restart()
+    failures = compare_builtin() + compare_analytic() + compare_restart() + changed_parameters()
     failures += compare_restart(["-copyDicts"])
     print("all passed" if not failures else f"{failures} failed")
     return 1 if failures else 0

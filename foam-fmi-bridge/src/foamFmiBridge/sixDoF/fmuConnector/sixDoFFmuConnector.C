@@ -11,6 +11,8 @@ License
 #include "sixDoFRigidBodyMotion.H"
 #include "regIOobject.H"
 #include "Time.H"
+#include "IFstream.H"
+#include "restartFiles.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -59,6 +61,73 @@ Foam::word motionName(const Foam::dictionary& motion)
     return motion.dictName();
 }
 
+
+
+//- At a restart from a motion dictionary written by an earlier run (the
+//  file top, at the start time): the case's own copy of that file,
+//  constant/<name> (sixDoFSim's constant/sixDoFBodies) or else the file in
+//  the case's earliest time directory (the point-patch condition's
+//  0/pointDisplacement); empty when there is none or top is it
+Foam::fileName caseFileOf(const Foam::regIOobject& top)
+{
+    using namespace Foam;
+
+    const Time& runTime = top.time();
+    if (!restartFiles::restarted(runTime, top.instance()))
+    {
+        return fileName::null;
+    }
+
+    fileName file(runTime.path()/runTime.constant()/top.name());
+    if (!isFile(file))
+    {
+        file.clear();
+        for (const instant& t : Time::findTimes(runTime.path()))
+        {
+            const fileName f(runTime.path()/t.name()/top.local()/top.name());
+            if (file.empty() && t.name() != runTime.constant() && isFile(f))
+            {
+                file = f;
+            }
+        }
+    }
+    return file == top.objectPath() ? fileName::null : file;
+}
+
+
+//- The restraint dictionary at the same place in another dictionary of the
+//  same file (the keys from top down to dict), or nullptr
+const Foam::dictionary* samePlace
+(
+    const Foam::dictionary& top,
+    const Foam::dictionary& dict,
+    const Foam::dictionary& other
+)
+{
+    Foam::wordList keys;
+    for
+    (
+        const Foam::dictionary* d = &dict;
+        d != &top && d != &Foam::dictionary::null;
+        d = &d->parent()
+    )
+    {
+        keys.append(d->dictName());
+    }
+
+    const Foam::dictionary* found = &other;
+    forAllReverse(keys, i)
+    {
+        found =
+            found->isDict(keys[i]) ? &found->subDict(keys[i]) : nullptr;
+        if (!found)
+        {
+            break;
+        }
+    }
+    return found;
+}
+
 } // End anonymous namespace
 
 
@@ -82,6 +151,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
     // dictionary of dynamicMotionSolverListFvMesh): the nearest enclosing
     // dictionary that is a registered object
     const regIOobject* top = nullptr;
+    const dictionary* topDict = nullptr;
     for
     (
         const dictionary* d = &sDoFRBMRDict;
@@ -90,6 +160,7 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
     )
     {
         top = dynamic_cast<const regIOobject*>(d);
+        topDict = d;
     }
     if (!top)
     {
@@ -151,6 +222,30 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
 
     connector_ = sixDoFConnector::New(name_, sDoFRBMRCoeffs_, runTime);
     connector_->registerSide(side_, start, mass, sDoFRBMRCoeffs_);
+
+    // A restart reads the restraint from the copy the earlier run wrote:
+    // report what the case's own dictionary changed since (master rank,
+    // where the connector lives)
+    const fileName caseFile
+    (
+        Pstream::master() ? caseFileOf(*top) : fileName::null
+    );
+    if (caseFile.size())
+    {
+        IFstream is(caseFile);
+        const dictionary caseDict(is);
+        const dictionary* caseRestraint =
+            samePlace(*topDict, sDoFRBMRDict, caseDict);
+        if (caseRestraint)
+        {
+            connector_->compareWithCase
+            (
+                *caseRestraint,
+                caseFile,
+                top->objectPath()
+            );
+        }
+    }
 }
 
 
