@@ -41,6 +41,27 @@ double timeoutOption(const Args& args)
     return *seconds;
 }
 
+std::optional<fmuImport::Isolation> toIsolation(const std::string& text)
+{
+    if (text == "none")
+        return fmuImport::Isolation::none;
+    if (text == "process")
+        return fmuImport::Isolation::process;
+    return std::nullopt;
+}
+
+fmuImport::Isolation isolationOption(const Args& args)
+{
+    const std::optional<std::string> text = args.last("isolation");
+    if (!text)
+        return fmuImport::Isolation::none;
+    const std::optional<fmuImport::Isolation> isolation = toIsolation(*text);
+    if (!isolation)
+        throw UsageError("--isolation must be none or process, found '" + *text
+                         + "'");
+    return *isolation;
+}
+
 Args parseArgs(const std::vector<std::string>& args,
                const std::set<std::string>& valueOptions,
                const std::set<std::string>& flagOptions)

@@ -3,6 +3,8 @@
 #ifndef FMUSIM_ARGS_HPP
 #define FMUSIM_ARGS_HPP
 
+#include "fmuImport/fmuImport.hpp"
+
 #include <map>
 #include <optional>
 #include <set>
@@ -27,6 +29,12 @@ struct Args {
 // --timeout: the longest a call into the FMU may take [s], 0 (the default)
 // for no limit; UsageError unless a non-negative number.
 double timeoutOption(const Args& args);
+
+// --isolation: none (the default) or process; UsageError otherwise.
+fmuImport::Isolation isolationOption(const Args& args);
+
+// Parses none or process; nullopt otherwise.
+std::optional<fmuImport::Isolation> toIsolation(const std::string& text);
 
 // Throws UsageError for an option not in valueOptions or flagOptions, or an
 // option without its value.

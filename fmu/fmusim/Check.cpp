@@ -4,7 +4,6 @@
 #include "CheckProbes.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
-#include "Watchdog.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -14,6 +13,7 @@ namespace fmusim {
 const char* checkUsage()
 {
     return "fmusim check connector.fmu [--seed N] [--samples N] [--verbose] [--timeout SECONDS]\n"
+           "                           [--isolation none|process]\n"
            "  Validates a connector FMU against docs/connector-fmu-interface.md: required\n"
            "  and optional variables (causality, variability, units), capabilities and\n"
            "  parameter start values; then probes it: equal and opposite forces and zero\n"
@@ -24,7 +24,9 @@ const char* checkUsage()
            "  non-finite inputs. Prints 'PASS name', 'FAIL name: reason' or\n"
            "  'SKIP name: reason' per check and 'N passed, M failed' at the end.\n"
            "  --verbose prints the FMU's log messages. --timeout ends the check (exit code\n"
-           "  6) when one call into the FMU takes longer; default 0: no limit.\n";
+           "  6) when one call into the FMU takes longer; default 0: no limit. With\n"
+           "  --isolation process each probe's instance runs in a process of its own: a\n"
+           "  crash, exit or time-out of the FMU fails that check and the next goes on.\n";
 }
 
 namespace {
@@ -48,7 +50,7 @@ std::string joined(const std::vector<std::string>& problems)
 void instantiateQuietly(const fmuImport::Fmu& fmu, bool verbose)
 {
     try {
-        WatchedInstance(
+        fmuImport::Instance(
             fmu, "check",
             [verbose](const std::string& i, int status,
                       const std::string& category, const std::string& m) {
@@ -56,6 +58,8 @@ void instantiateQuietly(const fmuImport::Fmu& fmu, bool verbose)
                     stderrLogger(true)(i, status, category, m);
             },
             false);
+    } catch (const fmuImport::LostCall&) {
+        throw;
     } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
@@ -104,8 +108,8 @@ std::vector<CheckResult> interfaceChecks(const fmuImport::Fmu& fmu,
 
 int checkCommand(const std::vector<std::string>& arguments)
 {
-    const Args args
-        = parseArgs(arguments, {"seed", "samples", "timeout"}, {"verbose"});
+    const Args args = parseArgs(
+        arguments, {"seed", "samples", "timeout", "isolation"}, {"verbose"});
     if (args.positional.size() != 1)
         throw UsageError("check needs exactly one FMU file");
     ProbeOptions options;
@@ -121,9 +125,9 @@ int checkCommand(const std::vector<std::string>& arguments)
         options.samples = static_cast<int>(*samples);
     }
     options.verbose = args.flag("verbose");
-    startWatchdog(timeoutOption(args));
-
-    const fmuImport::Fmu fmu = loadFmu(args.positional[0]);
+    const fmuImport::Fmu fmu
+        = loadFmu(args.positional[0],
+                  {isolationOption(args), timeoutOption(args), std::string()});
     const ConnectorIo connector(fmu);
 
     int passed = 0, failed = 0;

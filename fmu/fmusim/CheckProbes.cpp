@@ -31,10 +31,10 @@ public:
     }
 
     // An instance initialised with the start values, at t = 0.
-    WatchedInstance started(const std::string& name)
+    fmuImport::Instance started(const std::string& name)
     {
         const bool verbose = options_.verbose;
-        WatchedInstance instance(
+        fmuImport::Instance instance(
             fmu_, name,
             [verbose](const std::string& i, int status,
                       const std::string& category, const std::string& m) {
@@ -64,7 +64,7 @@ public:
     }
 
     // Sets the kinematics and steps from t to t + stepSize.
-    void step(WatchedInstance& instance, double t, const Kinematics& A,
+    void step(fmuImport::Instance& instance, double t, const Kinematics& A,
               const Kinematics& B)
     {
         connector_.setKinematics(instance, A, B);
@@ -73,7 +73,7 @@ public:
 
     // A step with random kinematics of both bodies (B is the world for a
     // one-body connector); advances t.
-    void randomStep(WatchedInstance& instance, double& t,
+    void randomStep(fmuImport::Instance& instance, double& t,
                     Kinematics* A = nullptr, Kinematics* B = nullptr)
     {
         const Kinematics a = random();
@@ -86,7 +86,7 @@ public:
             *B = b;
     }
 
-    std::vector<double> outputs(WatchedInstance& instance)
+    std::vector<double> outputs(fmuImport::Instance& instance)
     {
         std::vector<unsigned int> vrs;
         for (const fmuImport::Variable* v : outputs_)
@@ -141,7 +141,7 @@ void randomProbes(Prober& p,
 {
     std::string stepError, nonFinite, forces, moments;
     try {
-        WatchedInstance instance = p.started("random");
+        fmuImport::Instance instance = p.started("random");
         double t = 0;
         for (int n = 0; n < p.options_.samples; ++n) {
             Kinematics A, B;
@@ -221,7 +221,7 @@ void restProbe(Prober& p, const std::function<void(const CheckResult&)>& report)
                            "inputs without a start value: " + noStart.front()
                                + (noStart.size() > 1 ? " and others" : "")));
     try {
-        WatchedInstance instance = p.started("rest");
+        fmuImport::Instance instance = p.started("rest");
         instance.doStep(0.0, p.options_.stepSize);
         Loads a, b;
         p.connector_.getLoads(instance, a, b);
@@ -261,11 +261,11 @@ void stateProbes(Prober& p,
     Kinematics A1, B1;
     if (md.canGetAndSetFMUstate) {
         try {
-            WatchedInstance instance = p.started("state");
+            fmuImport::Instance instance = p.started("state");
             double t = 0;
             p.randomStep(instance, t);
             p.randomStep(instance, t);
-            const WatchedInstance::State saved = instance.getState();
+            const fmuImport::Instance::State saved = instance.getState();
             savedOutputs = p.outputs(instance);
             p.randomStep(instance, t, &A1, &B1);
             first = p.outputs(instance);
@@ -303,7 +303,7 @@ void stateProbes(Prober& p,
         return report(skip("state-serialize", "no state was saved"));
     try {
         // A restart: the serialized state in a fresh instance.
-        WatchedInstance other = p.started("restart");
+        fmuImport::Instance other = p.started("restart");
         other.setState(other.deserializeState(bytes));
         const std::string restored
             = p.difference(savedOutputs, p.outputs(other));
@@ -325,7 +325,7 @@ void stepSizeProbe(Prober& p,
                    const std::function<void(const CheckResult&)>& report)
 {
     try {
-        WatchedInstance instance = p.started("stepSize");
+        fmuImport::Instance instance = p.started("stepSize");
         double t = 0;
         for (const double h : {1.0, 2.5, 0.4, 1e-3}) {
             const Kinematics A = p.random();
@@ -359,7 +359,7 @@ void nonFiniteProbe(Prober& p,
             continue; // one component per block
         const double value = bad[k++ % 3];
         try {
-            WatchedInstance instance = p.started("nonFinite");
+            fmuImport::Instance instance = p.started("nonFinite");
             double t = 0;
             p.randomStep(instance, t);
             Kinematics A = p.random(),

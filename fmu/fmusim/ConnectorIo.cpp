@@ -38,8 +38,8 @@ ConnectorIo::ConnectorIo(const fmuImport::Fmu& fmu)
 {
 }
 
-void ConnectorIo::setKinematics(WatchedInstance& instance, const Kinematics& A,
-                                const Kinematics& B) const
+void ConnectorIo::setKinematics(fmuImport::Instance& instance,
+                                const Kinematics& A, const Kinematics& B) const
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;
@@ -55,7 +55,7 @@ void ConnectorIo::setKinematics(WatchedInstance& instance, const Kinematics& A,
     instance.setReal(vrs, values);
 }
 
-void ConnectorIo::setMassProperties(WatchedInstance& instance,
+void ConnectorIo::setMassProperties(fmuImport::Instance& instance,
                                     const MassProperties& A,
                                     const MassProperties& B) const
 {
@@ -73,7 +73,8 @@ void ConnectorIo::setMassProperties(WatchedInstance& instance,
         instance.setReal(vrs, values);
 }
 
-void ConnectorIo::getLoads(WatchedInstance& instance, Loads& A, Loads& B) const
+void ConnectorIo::getLoads(fmuImport::Instance& instance, Loads& A,
+                           Loads& B) const
 {
     std::vector<unsigned int> vrs = A_.F;
     vrs.insert(vrs.end(), A_.M.begin(), A_.M.end());

@@ -4,8 +4,6 @@
 #ifndef FMUSIM_CONNECTORIO_HPP
 #define FMUSIM_CONNECTORIO_HPP
 
-#include "WatchedInstance.hpp"
-
 #include "fmuImport/fmuImport.hpp"
 
 #include <Eigen/Dense>
@@ -66,13 +64,14 @@ public:
     }
 
     // Sets the declared inputs; for a one-body connector B is ignored.
-    void setKinematics(WatchedInstance& instance, const Kinematics& A,
+    void setKinematics(fmuImport::Instance& instance, const Kinematics& A,
                        const Kinematics& B) const;
-    void setMassProperties(WatchedInstance& instance, const MassProperties& A,
+    void setMassProperties(fmuImport::Instance& instance,
+                           const MassProperties& A,
                            const MassProperties& B) const;
 
     // Loads on A and B (zero for B when B.F, B.M are not declared).
-    void getLoads(WatchedInstance& instance, Loads& A, Loads& B) const;
+    void getLoads(fmuImport::Instance& instance, Loads& A, Loads& B) const;
 
     // The value references of the declared kinematic inputs, for probing.
     std::vector<std::pair<std::string, unsigned int>> kinematicInputs() const;

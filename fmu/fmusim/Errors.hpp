@@ -14,7 +14,10 @@ enum ExitCode {
     exitFile
     = 4, // an input file is unreadable or malformed, or an output file cannot be written
     exitSimulation = 5, // an FMU call failed or the simulation broke down
-    exitTimeout = 6 // an FMU call did not return within --timeout
+    exitTimeout = 6, // an FMU call did not return within --timeout
+    exitFmuEnded = 7 // the FMU crashed or exited in a call (--isolation
+    // process; in fmusim's process a crash ends fmusim by its signal, an
+    // exit(0) with this code)
 };
 
 // The command line is wrong.

@@ -5,7 +5,6 @@
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "Settings.hpp"
-#include "Watchdog.hpp"
 
 #include <cmath>
 #include <optional>
@@ -30,6 +29,11 @@ const char* runUsage()
            "  --logging               switch on the FMU's debug logging\n"
            "  --timeout SECONDS       end the run (exit code 6) when one call into the FMU\n"
            "                          takes longer; default 0: no limit\n"
+           "  --isolation none|process\n"
+           "                          none (default): the FMU runs in fmusim's process; process:\n"
+           "                          in a process of its own, so that a crash or exit() of the\n"
+           "                          FMU ends the run with exit code 7 and a message naming the\n"
+           "                          call, as a time-out does (exit code 6)\n"
            "  Before fmi2DoStep(t, h) the inputs are set to their values at t + h, and the\n"
            "  row for t + h is written after it (the connector interface's convention).\n"
            "  A NaN or infinite value in a Real column stops the run (exit code 5).\n"
@@ -52,6 +56,7 @@ struct RunOptions {
     std::optional<std::string> outputVariables;
     bool logging = false;
     double timeout = 0; // [s], 0: none
+    fmuImport::Isolation isolation = fmuImport::Isolation::none;
 };
 
 RunOptions parseRunOptions(const std::vector<std::string>& arguments)
@@ -59,7 +64,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments)
     const Args args = parseArgs(arguments,
                                 {"start-time", "stop-time", "step-size", "set",
                                  "parameters", "input-file", "output-file",
-                                 "output-variables", "timeout"},
+                                 "output-variables", "timeout", "isolation"},
                                 {"logging"});
     if (args.positional.size() != 1)
         throw UsageError("run needs exactly one FMU file");
@@ -82,6 +87,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments)
     o.outputVariables = args.last("output-variables");
     o.logging = args.flag("logging");
     o.timeout = timeoutOption(args);
+    o.isolation = isolationOption(args);
     return o;
 }
 
@@ -107,7 +113,7 @@ std::vector<InputColumn> matchInputs(const fmuImport::Fmu& fmu,
     return columns;
 }
 
-void setInputs(WatchedInstance& instance, const InputTable* table,
+void setInputs(fmuImport::Instance& instance, const InputTable* table,
                const std::vector<InputColumn>& columns, double t)
 {
     std::vector<unsigned int> realVrs, intVrs, boolVrs;
@@ -162,8 +168,8 @@ outputVariables(const fmuImport::Fmu& fmu, const RunOptions& o)
 int runCommand(const std::vector<std::string>& arguments)
 {
     const RunOptions o = parseRunOptions(arguments);
-    startWatchdog(o.timeout);
-    const fmuImport::Fmu fmu = loadFmu(o.fmuPath);
+    const fmuImport::Fmu fmu
+        = loadFmu(o.fmuPath, {o.isolation, o.timeout, std::string()});
     const fmuImport::ModelDescription& md = fmu.modelDescription();
 
     const double t0
@@ -187,7 +193,8 @@ int runCommand(const std::vector<std::string>& arguments)
     const std::vector<const fmuImport::Variable*> outputs
         = outputVariables(fmu, o);
 
-    WatchedInstance instance = instantiate(fmu, md.modelIdentifier, o.logging);
+    fmuImport::Instance instance
+        = instantiate(fmu, md.modelIdentifier, o.logging);
     instance.setupExperiment(t0, true, t1);
     applySettings(fmu, instance, o.settings);
     instance.enterInitializationMode();

@@ -6,10 +6,11 @@
 
 namespace fmusim {
 
-fmuImport::Fmu loadFmu(const std::string& path)
+fmuImport::Fmu loadFmu(const std::string& path,
+                       const fmuImport::FmuOptions& options)
 {
     try {
-        return fmuImport::Fmu(path);
+        return fmuImport::Fmu(path, options);
     } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
@@ -29,11 +30,14 @@ fmuImport::Logger stderrLogger(bool verbose)
     };
 }
 
-WatchedInstance instantiate(const fmuImport::Fmu& fmu, const std::string& name,
-                            bool loggingOn)
+fmuImport::Instance instantiate(const fmuImport::Fmu& fmu,
+                                const std::string& name, bool loggingOn)
 {
     try {
-        return WatchedInstance(fmu, name, stderrLogger(loggingOn), loggingOn);
+        return fmuImport::Instance(fmu, name, stderrLogger(loggingOn),
+                                   loggingOn);
+    } catch (const fmuImport::LostCall&) {
+        throw;
     } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }

@@ -78,7 +78,7 @@ bool isSettable(const fmuImport::Variable& v)
         || initialExactOrApprox;
 }
 
-bool stepOrEnd(WatchedInstance& instance, double t, double h)
+bool stepOrEnd(fmuImport::Instance& instance, double t, double h)
 {
     using Result = fmuImport::Instance::StepResult;
     const Result result = instance.tryDoStep(t, h);
@@ -102,7 +102,7 @@ bool stepOrEnd(WatchedInstance& instance, double t, double h)
         + "; fmusim takes the steps it is given and cannot retry a shorter one");
 }
 
-void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance,
+void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance,
                    const std::vector<Setting>& settings)
 {
     using fmuImport::Type;
@@ -147,7 +147,7 @@ void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance,
 }
 
 std::vector<std::string>
-readValues(WatchedInstance& instance,
+readValues(fmuImport::Instance& instance,
            const std::vector<const fmuImport::Variable*>& variables)
 {
     using fmuImport::Type;
@@ -198,7 +198,7 @@ readValues(WatchedInstance& instance,
     return text;
 }
 
-std::string nonFiniteMessage(const WatchedInstance& instance,
+std::string nonFiniteMessage(const fmuImport::Instance& instance,
                              const std::string& what, double value, double time)
 {
     return "FMU '" + instance.fmuPath() + "', instance '" + instance.name()

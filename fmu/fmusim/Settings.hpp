@@ -3,8 +3,6 @@
 #ifndef FMUSIM_SETTINGS_HPP
 #define FMUSIM_SETTINGS_HPP
 
-#include "WatchedInstance.hpp"
-
 #include "fmuImport/fmuImport.hpp"
 
 #include <string>
@@ -39,24 +37,24 @@ bool isSettable(const fmuImport::Variable& v);
 // reported on stderr with the FMU's reason); a step the FMU discards without
 // asking to end throws SimulationError: fmusim takes the steps it was given
 // and cannot retry a shorter one.
-bool stepOrEnd(WatchedInstance& instance, double t, double h);
+bool stepOrEnd(fmuImport::Instance& instance, double t, double h);
 
 // Sets each setting on the instance, converted to the variable's type.
 // Unknown or unsettable variables and values of the wrong type throw
 // FileError (settings from a file) or UsageError (from --set), naming the
 // origin.
-void applySettings(const fmuImport::Fmu& fmu, WatchedInstance& instance,
+void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance,
                    const std::vector<Setting>& settings);
 
 // The current values of the variables, as text for CSV output. A NaN or
 // infinite Real throws SimulationError (nonFiniteMessage).
 std::vector<std::string>
-readValues(WatchedInstance& instance,
+readValues(fmuImport::Instance& instance,
            const std::vector<const fmuImport::Variable*>& variables);
 
 // "FMU 'x.fmu', instance 'x': output 'y' is nan at t = 0.5, expected a
 // finite number"; what: "output 'y'" or "variable 'y'".
-std::string nonFiniteMessage(const WatchedInstance& instance,
+std::string nonFiniteMessage(const fmuImport::Instance& instance,
                              const std::string& what, double value,
                              double time);
 

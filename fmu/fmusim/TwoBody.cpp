@@ -4,7 +4,6 @@
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "TwoBodyConfig.hpp"
-#include "Watchdog.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -36,6 +35,8 @@ const char* twoBodyUsage()
            "    gravity (0 0 0) [m/s2]; output-file (standard output); write-every (1)\n"
            "    timeout (0, no limit) [s]: end the run (exit code 6) when one call into\n"
            "      the FMU takes longer\n"
+           "    isolation: none (default), or process: the FMU in a process of its own (a\n"
+           "      crash or exit() of the FMU ends the run with exit code 7)\n"
            "    per body, prefix A. or B.:\n"
            "      motion: free (default), fixed, sinusoidal, world (B only; the default for\n"
            "        B when the connector declares no B. inputs)\n"
@@ -229,7 +230,7 @@ private:
 
     void implicitStep(double t, double h)
     {
-        const WatchedInstance::State start = instance_.getState();
+        const fmuImport::Instance::State start = instance_.getState();
         const LoadVector l0 = pack(loadsA_, loadsB_);
         // First guess: linear extrapolation of the loads of the last two steps.
         LoadVector guess
@@ -289,7 +290,7 @@ private:
     const TwoBodyConfig& c_;
     const fmuImport::Fmu& fmu_;
     const ConnectorIo& connector_;
-    WatchedInstance instance_;
+    fmuImport::Instance instance_;
     CsvWriter out_;
     std::vector<const fmuImport::Variable*> outputs_;
     BodyState a_, b_;
@@ -306,8 +307,8 @@ private:
 int twoBodyCommand(const std::vector<std::string>& args)
 {
     TwoBodyConfig config = parseTwoBodyConfig(args);
-    startWatchdog(config.timeout);
-    const fmuImport::Fmu fmu = loadFmu(config.fmuPath);
+    const fmuImport::Fmu fmu = loadFmu(
+        config.fmuPath, {config.isolation, config.timeout, std::string()});
     const ConnectorIo connector(fmu);
     const std::vector<std::string> missing = connector.missingRequired();
     if (!missing.empty()) {

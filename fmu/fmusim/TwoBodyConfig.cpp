@@ -143,7 +143,13 @@ void apply(TwoBodyConfig& c, const Setting& s)
         c.initialRelaxation = scalar(s);
     else if (key == "timeout")
         c.timeout = scalar(s);
-    else if (key == "scheme") {
+    else if (key == "isolation") {
+        const std::optional<fmuImport::Isolation> isolation
+            = toIsolation(s.value);
+        if (!isolation)
+            reject(s, "'" + s.value + "' is not none or process");
+        c.isolation = *isolation;
+    } else if (key == "scheme") {
         if (s.value == "explicit")
             c.scheme = Scheme::explicitEuler;
         else if (s.value == "implicit")
@@ -176,7 +182,8 @@ const std::vector<std::string>& twoBodyKeys()
                                     "coupling-tolerance",
                                     "max-coupling-iterations",
                                     "initial-relaxation",
-                                    "timeout"};
+                                    "timeout",
+                                    "isolation"};
         for (const std::string body : {"A.", "B."})
             for (const char* key :
                  {"motion", "mass", "inertia", "position", "orientation",

@@ -32,6 +32,8 @@ struct TwoBodyConfig {
     bool logging = false;
     double timeout
         = 0; // the longest one call into the FMU may take [s], 0: no limit
+    fmuImport::Isolation isolation
+        = fmuImport::Isolation::none; // where the FMU runs
 };
 
 // The configuration keys, for the help text and the option parser.

@@ -3,9 +3,10 @@
 #include "Errors.hpp"
 #include "Run.hpp"
 #include "TwoBody.hpp"
-#include "Watchdog.hpp"
 
 #include "fmuImport/fmuImport.hpp"
+
+#include <signal.h>
 
 #include <algorithm>
 #include <cstring>
@@ -25,7 +26,9 @@ const char* const exitCodes
       "     malformed, or naming an unknown variable; output file not writable\n"
       "  5  simulation error: an FMU call failed, an output became NaN or infinite,\n"
       "     the coupling did not converge or a body state became non-finite\n"
-      "  6  time-out: a call into the FMU did not return within --timeout seconds\n";
+      "  6  time-out: a call into the FMU did not return within --timeout seconds\n"
+      "  7  the FMU crashed or exited in a call (--isolation process; without it a\n"
+      "     crash ends fmusim by the FMU's signal, and an exit(0) ends it with 7)\n";
 
 void printHelp(std::ostream& out)
 {
@@ -71,11 +74,28 @@ int dispatch(const std::string& command, const std::vector<std::string>& args)
                              + "' (run, check or twobody)");
 }
 
+// How the importer reports an FMU that crashes, hangs or exits in a call in
+// fmusim's process (the default, --isolation none): a line on standard
+// error naming the call, then the FMU's signal ends fmusim, or the exit
+// codes 6 and 7. Rows are written through (CsvWriter): the output holds
+// every row before the call. The handlers run on an alternate stack, so
+// that an FMU that overflows the stack is reported too.
+void setUpReports()
+{
+    static char alternateStack[64 * 1024];
+    stack_t stack {};
+    stack.ss_sp = alternateStack;
+    stack.ss_size = sizeof alternateStack;
+    sigaltstack(&stack, nullptr);
+    fmuImport::setReports({"fmusim: ", " (--timeout)", fmusim::exitTimeout,
+                           fmusim::exitFmuEnded});
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    fmusim::installCrashReport();
+    setUpReports();
     const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
     if (argc < 2 || !std::strcmp(argv[1], "--help")
         || !std::strcmp(argv[1], "-h")) {
@@ -94,6 +114,11 @@ int main(int argc, char** argv)
     } catch (const fmusim::FileError& e) {
         std::cerr << "fmusim: bad file: " << e.what() << '\n';
         return fmusim::exitFile;
+    } catch (const fmuImport::LostCall& e) {
+        std::cerr << "fmusim: " << e.what() << '\n';
+        return e.reason() == fmuImport::LostCall::Reason::timedOut
+            ? fmusim::exitTimeout
+            : fmusim::exitFmuEnded;
     } catch (const fmusim::SimulationError& e) {
         std::cerr << "fmusim: simulation error: " << e.what() << '\n';
         return fmusim::exitSimulation;

@@ -10,7 +10,11 @@ the benchmarks and the tests.
   harmonics       least-squares harmonic fits (numpy), up-crossing period,
                   incident and reflected waves from two gauges
   catenary        elastic catenary with seabed contact (a mooring line)
+  foamdict        OpenFOAM dictionaries parsed into nested dictionaries
+                  (#include, $macros): a restraint's entries
   scene           what tutorials/bin/renderScene draws, read from a case
+  connectorscene  its springs, dampers and hinges: kinds, attachment
+                  points placed by the bodies' motion, their shapes
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
   plots           figures through gnuplot: terminal, window, a body's response
   cli             the scripts' command lines (argparse) and error exits

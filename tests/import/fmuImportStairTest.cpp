@@ -14,9 +14,11 @@ namespace {
 using fixtures::fmuPath;
 using Result = fmuImport::Instance::StepResult;
 
-struct Stair : ::testing::Test {
+// In this process and in a child process (Isolation::process)
+struct Stair : ::testing::TestWithParam<fmuImport::Isolation> {
     fmuImport::Fmu fmu {
-        fmuPath("stair")}; // loads: only common and CS functions needed
+        fmuPath("stair"),
+        {GetParam(), 0, ""}}; // loads: only common and CS functions needed
     fmuImport::Instance instance {
         fmu, "stair",
         [](const std::string&, int, const std::string&, const std::string&) {}};
@@ -35,14 +37,14 @@ struct Stair : ::testing::Test {
     }
 };
 
-TEST_F(Stair, CoSimulationOnlyBinaryLoads)
+TEST_P(Stair, CoSimulationOnlyBinaryLoads)
 {
     start();
     EXPECT_EQ(instance.tryDoStep(0.0, 1.0), Result::completed);
     EXPECT_EQ(counter(), 2);
 }
 
-TEST_F(Stair, AskingToTerminateIsNotAnError)
+TEST_P(Stair, AskingToTerminateIsNotAnError)
 {
     start();
     const double h = 0.5;
@@ -59,7 +61,7 @@ TEST_F(Stair, AskingToTerminateIsNotAnError)
     EXPECT_EQ(counter(), 11); // outputs of the last successful time
 }
 
-TEST_F(Stair, DiscardWithoutTerminating)
+TEST_P(Stair, DiscardWithoutTerminating)
 {
     start(0.75);
     EXPECT_EQ(instance.tryDoStep(0.0, 0.5), Result::completed);
@@ -82,5 +84,15 @@ TEST_F(Stair, DiscardWithoutTerminating)
             << e.what();
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Isolation, Stair,
+    ::testing::Values(fmuImport::Isolation::none,
+                      fmuImport::Isolation::process),
+    [](const ::testing::TestParamInfo<fmuImport::Isolation>& info) {
+        return std::string(info.param == fmuImport::Isolation::none
+                               ? "inProcess"
+                               : "childProcess");
+    });
 
 } // namespace

@@ -6,7 +6,9 @@
 
 #include <cctype>
 #include <cstdint>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <mutex>
 #include <tuple>
 #include <system_error>
@@ -98,14 +100,56 @@ Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
         throw Error("FMU '" + fmuPath + "' has no binary " + binary);
 
     directory.emplace();
-    archive.write(xmlName, xml, directory->path());
-    archive.extract(binary, "resources/", directory->path());
-    library = std::make_unique<Library>((directory->path() / binary).string(),
-                                        fmuPath);
+    root = directory->path();
+    archive.write(xmlName, xml, root);
+    archive.extract(binary, "resources/", root);
 }
 
-Fmu::Fmu(const std::string& fmuPath)
-    : impl_(Impl::load(fmuPath)), path_(fmuPath)
+Fmu Fmu::Impl::openUnpacked(const std::string& directory,
+                            const std::string& fmuPath)
+{
+    std::shared_ptr<Impl> impl(new Impl);
+    impl->path = fmuPath;
+    impl->root = directory;
+    std::ifstream in(impl->root / "modelDescription.xml", std::ios::binary);
+    std::stringstream xml;
+    xml << in.rdbuf();
+    if (!in)
+        throw Error("FMU '" + fmuPath
+                    + "': cannot read modelDescription.xml in '" + directory
+                    + "'");
+    impl->description = readModelDescription(xml.str(), fmuPath);
+    for (std::size_t i = 0; i < impl->description.variables.size(); ++i)
+        impl->index.emplace(impl->description.variables[i].name, i);
+    impl->loadLibrary();
+    return Fmu(impl, fmuPath);
+}
+
+void Fmu::Impl::loadLibrary()
+{
+    const std::lock_guard<std::mutex> lock(libraryMutex_);
+    if (!library_)
+        library_ = std::make_unique<Library>(
+            (root / "binaries" / "linux64"
+             / (description.modelIdentifier + ".so"))
+                .string(),
+            path);
+}
+
+std::string Fmu::Impl::resourceLocation() const
+{
+    return fileUri(root / "resources");
+}
+
+Fmu::Fmu(const std::string& fmuPath, const FmuOptions& options)
+    : impl_(Impl::load(fmuPath)), path_(fmuPath), options_(options)
+{
+    if (options_.isolation == Isolation::none)
+        impl_->loadLibrary();
+}
+
+Fmu::Fmu(std::shared_ptr<Impl> impl, const std::string& path)
+    : impl_(std::move(impl)), path_(path)
 {
 }
 
@@ -116,6 +160,11 @@ Fmu& Fmu::operator=(Fmu&&) noexcept = default;
 const std::string& Fmu::path() const
 {
     return path_;
+}
+
+const FmuOptions& Fmu::options() const
+{
+    return options_;
 }
 
 const ModelDescription& Fmu::modelDescription() const
@@ -138,12 +187,12 @@ const Variable& Fmu::variable(const std::string& name) const
 
 std::string Fmu::resourceLocation() const
 {
-    return fileUri(impl_->directory->path() / "resources");
+    return impl_->resourceLocation();
 }
 
 std::string Fmu::unpackDirectory() const
 {
-    return impl_->directory->path().string();
+    return impl_->root.string();
 }
 
 } // namespace fmuImport

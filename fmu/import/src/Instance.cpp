@@ -1,8 +1,8 @@
-#include "InstanceImpl.hpp"
+#include "ChildInstance.hpp"
+#include "LocalInstance.hpp"
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace fmuImport {
 
@@ -24,23 +24,14 @@ Instance::Instance(const Fmu& fmu, const std::string& instanceName,
 {
     if (!fmu.impl_)
         throw Error("Instance '" + instanceName + "': the FMU was moved from");
-    impl_ = std::make_shared<Impl>(fmu.impl_, fmu.path(), instanceName,
-                                   std::move(logger));
-    Impl& d = *impl_;
-    d.admit();
-    const std::string resources = fmu.resourceLocation();
-    d.beginCall();
-    d.component
-        = callFmu(d.api().Instantiate, instanceName.c_str(), fmi2CoSimulation,
-                  d.fmu->description.guid.c_str(), resources.c_str(),
-                  &d.callbacks, fmi2False, loggingOn ? fmi2True : fmi2False);
-    if (!d.component) {
-        std::string message = "fmi2Instantiate failed in FMU '" + d.fmuPath
-            + "', instance '" + instanceName + "'";
-        if (!d.lastError.empty())
-            message += ": " + d.lastError;
-        throw Error(message);
-    }
+    if (fmu.options().isolation == Isolation::process)
+        impl_ = std::make_shared<ChildInstance>(fmu.impl_, fmu.path(),
+                                                instanceName, std::move(logger),
+                                                loggingOn, fmu.options());
+    else
+        impl_ = std::make_shared<LocalInstance>(fmu.impl_, fmu.path(),
+                                                instanceName, std::move(logger),
+                                                loggingOn, fmu.options());
 }
 
 Instance::~Instance() = default;
@@ -52,43 +43,36 @@ const std::string& Instance::name() const
     return impl_->name;
 }
 
+const std::string& Instance::fmuPath() const
+{
+    return impl_->fmuPath;
+}
+
 void Instance::setupExperiment(double startTime, bool stopTimeDefined,
                                double stopTime)
 {
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SetupExperiment, impl_->component,
-                         fmi2False, 0, startTime,
-                         stopTimeDefined ? fmi2True : fmi2False, stopTime),
-                 "fmi2SetupExperiment", startTime);
+    impl_->setupExperiment(startTime, stopTimeDefined, stopTime);
     impl_->time = startTime;
 }
 
 void Instance::enterInitializationMode()
 {
-    impl_->beginCall();
-    impl_->check(
-        callFmu(impl_->api().EnterInitializationMode, impl_->component),
-        "fmi2EnterInitializationMode");
+    impl_->enterInitializationMode();
 }
 
 void Instance::exitInitializationMode()
 {
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().ExitInitializationMode, impl_->component),
-                 "fmi2ExitInitializationMode");
+    impl_->exitInitializationMode();
 }
 
 void Instance::terminate()
 {
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().Terminate, impl_->component),
-                 "fmi2Terminate", impl_->time);
+    impl_->terminate();
 }
 
 void Instance::reset()
 {
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().Reset, impl_->component), "fmi2Reset");
+    impl_->reset();
     impl_->time = 0;
 }
 
@@ -96,137 +80,77 @@ void Instance::setReal(const std::vector<unsigned int>& vrs,
                        const std::vector<double>& values)
 {
     checkSizes(vrs, values.size(), "fmi2SetReal");
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SetReal, impl_->component, vrs.data(),
-                         vrs.size(), values.data()),
-                 "fmi2SetReal", impl_->time);
+    impl_->setReal(vrs, values);
 }
 
 std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
 {
-    std::vector<double> values(vrs.size());
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().GetReal, impl_->component, vrs.data(),
-                         vrs.size(), values.data()),
-                 "fmi2GetReal", impl_->time);
-    return values;
+    return impl_->getReal(vrs);
 }
 
 void Instance::setInteger(const std::vector<unsigned int>& vrs,
                           const std::vector<int>& values)
 {
     checkSizes(vrs, values.size(), "fmi2SetInteger");
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SetInteger, impl_->component, vrs.data(),
-                         vrs.size(), values.data()),
-                 "fmi2SetInteger", impl_->time);
+    impl_->setInteger(vrs, values);
 }
 
 std::vector<int> Instance::getInteger(const std::vector<unsigned int>& vrs)
 {
-    std::vector<int> values(vrs.size());
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().GetInteger, impl_->component, vrs.data(),
-                         vrs.size(), values.data()),
-                 "fmi2GetInteger", impl_->time);
-    return values;
+    return impl_->getInteger(vrs);
 }
 
 void Instance::setBoolean(const std::vector<unsigned int>& vrs,
                           const std::vector<bool>& values)
 {
     checkSizes(vrs, values.size(), "fmi2SetBoolean");
-    const std::vector<fmi2Boolean> raw(values.begin(), values.end());
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SetBoolean, impl_->component, vrs.data(),
-                         vrs.size(), raw.data()),
-                 "fmi2SetBoolean", impl_->time);
+    impl_->setBoolean(vrs, values);
 }
 
 std::vector<bool> Instance::getBoolean(const std::vector<unsigned int>& vrs)
 {
-    std::vector<fmi2Boolean> raw(vrs.size());
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().GetBoolean, impl_->component, vrs.data(),
-                         vrs.size(), raw.data()),
-                 "fmi2GetBoolean", impl_->time);
-    return std::vector<bool>(raw.begin(), raw.end());
+    return impl_->getBoolean(vrs);
 }
 
 void Instance::setString(const std::vector<unsigned int>& vrs,
                          const std::vector<std::string>& values)
 {
     checkSizes(vrs, values.size(), "fmi2SetString");
-    std::vector<fmi2String> raw;
-    for (const std::string& s : values)
-        raw.push_back(s.c_str());
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SetString, impl_->component, vrs.data(),
-                         vrs.size(), raw.data()),
-                 "fmi2SetString", impl_->time);
+    impl_->setString(vrs, values);
 }
 
 std::vector<std::string>
 Instance::getString(const std::vector<unsigned int>& vrs)
 {
-    std::vector<fmi2String> raw(vrs.size(), nullptr);
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().GetString, impl_->component, vrs.data(),
-                         vrs.size(), raw.data()),
-                 "fmi2GetString", impl_->time);
-    std::vector<std::string> values;
-    for (const fmi2String s : raw)
-        values.emplace_back(s ? s : "");
-    return values;
+    return impl_->getString(vrs);
 }
 
 void Instance::doStep(double currentTime, double stepSize,
                       bool noSetFMUStatePriorToCurrentPoint)
 {
-    impl_->beginCall();
-    impl_->check(
-        callFmu(impl_->api().DoStep, impl_->component, currentTime, stepSize,
-                noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False),
-        "fmi2DoStep", currentTime);
+    impl_->doStep(currentTime, stepSize, noSetFMUStatePriorToCurrentPoint,
+                  false);
     impl_->time = currentTime + stepSize;
 }
 
 Instance::StepResult Instance::tryDoStep(double currentTime, double stepSize,
                                          bool noSetFMUStatePriorToCurrentPoint)
 {
-    impl_->beginCall();
-    const fmi2Status status
-        = callFmu(impl_->api().DoStep, impl_->component, currentTime, stepSize,
-                  noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False);
-    if (status != fmi2Discard) {
-        impl_->check(status, "fmi2DoStep", currentTime);
+    const StepResult result = impl_->doStep(
+        currentTime, stepSize, noSetFMUStatePriorToCurrentPoint, true);
+    if (result == StepResult::completed)
         impl_->time = currentTime + stepSize;
-        return StepResult::completed;
-    }
-    // Asking does not forget why the step was discarded
-    const std::string reason = impl_->lastNotice;
-    fmi2Boolean terminated = fmi2False;
-    impl_->check(callFmu(impl_->api().GetBooleanStatus, impl_->component,
-                         fmi2Terminated, &terminated),
-                 "fmi2GetBooleanStatus(fmi2Terminated)", currentTime);
-    impl_->lastNotice = reason;
-    return terminated ? StepResult::terminated : StepResult::discarded;
+    return result;
 }
 
 double Instance::lastSuccessfulTime()
 {
-    const std::string reason = impl_->lastNotice;
-    fmi2Real time = 0;
-    impl_->check(callFmu(impl_->api().GetRealStatus, impl_->component,
-                         fmi2LastSuccessfulTime, &time),
-                 "fmi2GetRealStatus(fmi2LastSuccessfulTime)", impl_->time);
-    impl_->lastNotice = reason;
-    return time;
+    return impl_->lastSuccessfulTime();
 }
 
 std::string Instance::lastMessage() const
 {
-    return impl_->lastNotice;
+    return impl_->lastMessage();
 }
 
 Instance::State::State()
@@ -237,7 +161,7 @@ Instance::State::State()
 Instance::State::~State()
 {
     if (owner_ && state_)
-        callFmu(owner_->api().FreeFMUstate, owner_->component, &state_);
+        owner_->freeState(state_);
 }
 
 Instance::State::State(State&& other) noexcept
@@ -266,12 +190,8 @@ bool Instance::State::valid() const
 Instance::State Instance::getState()
 {
     State s;
-    fmi2FMUstate raw = nullptr;
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().GetFMUstate, impl_->component, &raw),
-                 "fmi2GetFMUstate", impl_->time);
+    s.state_ = impl_->getState();
     s.owner_ = impl_;
-    s.state_ = raw;
     s.time_ = impl_->time;
     return s;
 }
@@ -282,10 +202,7 @@ void Instance::setState(const State& state)
         throw Error("fmi2SetFMUstate in FMU '" + impl_->fmuPath
                     + "', instance '" + impl_->name
                     + "': the state is empty or belongs to another instance");
-    impl_->beginCall();
-    impl_->check(
-        callFmu(impl_->api().SetFMUstate, impl_->component, state.state_),
-        "fmi2SetFMUstate", impl_->time);
+    impl_->setState(state.state_);
     if (!std::isnan(state.time_))
         impl_->time = state.time_;
 }
@@ -296,29 +213,14 @@ std::vector<char> Instance::serializeState(const State& state)
         throw Error("fmi2SerializeFMUstate in FMU '" + impl_->fmuPath
                     + "', instance '" + impl_->name
                     + "': the state is empty or belongs to another instance");
-    std::size_t size = 0;
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SerializedFMUstateSize, impl_->component,
-                         state.state_, &size),
-                 "fmi2SerializedFMUstateSize");
-    std::vector<char> bytes(size);
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().SerializeFMUstate, impl_->component,
-                         state.state_, bytes.data(), size),
-                 "fmi2SerializeFMUstate");
-    return bytes;
+    return impl_->serializeState(state.state_);
 }
 
 Instance::State Instance::deserializeState(const std::vector<char>& bytes)
 {
     State s;
-    fmi2FMUstate raw = nullptr;
-    impl_->beginCall();
-    impl_->check(callFmu(impl_->api().DeSerializeFMUstate, impl_->component,
-                         bytes.data(), bytes.size(), &raw),
-                 "fmi2DeSerializeFMUstate");
+    s.state_ = impl_->deserializeState(bytes);
     s.owner_ = impl_;
-    s.state_ = raw;
     return s;
 }
 

@@ -1,14 +1,15 @@
-// The state behind an Instance: the fmi2Component, its callbacks and the
-// checking of every fmi2 call.
+// The state behind an Instance: an fmi2Component in this process
+// (LocalInstance) or in a child process (ChildInstance), behind one
+// interface. Instance checks its arguments and keeps the communication
+// point; an Impl makes the calls and checks their status.
 #ifndef FMUIMPORT_INSTANCEIMPL_HPP
 #define FMUIMPORT_INSTANCEIMPL_HPP
 
 #include "FmuImpl.hpp"
-#include "FpTraps.hpp"
 
 #include <memory>
-#include <limits>
 #include <string>
+#include <vector>
 
 namespace fmuImport {
 
@@ -16,45 +17,62 @@ struct Instance::Impl {
     std::shared_ptr<Fmu::Impl> fmu;
     std::string fmuPath; // as the Fmu it was made from names it
     std::string name;
-    Logger logger;
-    fmi2CallbackFunctions callbacks; // the FMU may keep a pointer to it
-    fmi2Component component = nullptr;
-    double time = 0;
-    std::string lastError; // last error the FMU logged during the current call
-    std::string lastNotice; // last message at fmi2Warning or above, the same
-    bool admitted = false; // counted in fmu->liveInstances
+    double time = 0; // the communication point, kept by Instance
 
-    Impl(std::shared_ptr<Fmu::Impl> fmu, const std::string& fmuPath,
-         const std::string& name, Logger logger);
-    ~Impl();
+    Impl(std::shared_ptr<Fmu::Impl> fmuImpl, const std::string& path,
+         const std::string& instanceName)
+        : fmu(std::move(fmuImpl)), fmuPath(path), name(instanceName)
+    {
+    }
+    virtual ~Impl() = default;
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;
 
-    const Fmi2Api& api() const { return fmu->library->api(); }
+    virtual void setupExperiment(double startTime, bool stopTimeDefined,
+                                 double stopTime)
+        = 0;
+    virtual void enterInitializationMode() = 0;
+    virtual void exitInitializationMode() = 0;
+    virtual void terminate() = 0;
+    virtual void reset() = 0;
 
-    // Counts this instance among the live instances of its binary; throws
-    // Error if the FMU declares canBeInstantiatedOnlyOncePerProcess and
-    // another one is alive. Call before fmi2Instantiate.
-    void admit();
+    virtual void setReal(const std::vector<unsigned int>& vrs,
+                         const std::vector<double>& values)
+        = 0;
+    virtual std::vector<double> getReal(const std::vector<unsigned int>& vrs)
+        = 0;
+    virtual void setInteger(const std::vector<unsigned int>& vrs,
+                            const std::vector<int>& values)
+        = 0;
+    virtual std::vector<int> getInteger(const std::vector<unsigned int>& vrs)
+        = 0;
+    virtual void setBoolean(const std::vector<unsigned int>& vrs,
+                            const std::vector<bool>& values)
+        = 0;
+    virtual std::vector<bool> getBoolean(const std::vector<unsigned int>& vrs)
+        = 0;
+    virtual void setString(const std::vector<unsigned int>& vrs,
+                           const std::vector<std::string>& values)
+        = 0;
+    virtual std::vector<std::string>
+    getString(const std::vector<unsigned int>& vrs) = 0;
 
-    // Call before each fmi2 call: forgets the error text of earlier calls.
-    void beginCall()
-    {
-        lastError.clear();
-        lastNotice.clear();
-    }
+    // fmi2DoStep; with mayDiscard, fmi2Discard is a result (discarded, or
+    // terminated when fmi2GetBooleanStatus(fmi2Terminated) says so), else
+    // it throws.
+    virtual Instance::StepResult doStep(double currentTime, double stepSize,
+                                        bool noSetFMUStatePriorToCurrentPoint,
+                                        bool mayDiscard)
+        = 0;
+    virtual double lastSuccessfulTime() = 0;
+    virtual std::string lastMessage() const = 0;
 
-    // Throws Error for fmi2Error, fmi2Fatal, fmi2Discard and fmi2Pending,
-    // naming function, the detail (" at t = ..."), the FMU and the
-    // instance; reports fmi2Warning to the logger.
-    // Throws Error for a failed call; the message gives the time when it is
-    // not NaN. Formatting happens only on failure: calls are on hot paths.
-    void check(fmi2Status status, const char* function,
-               double time = std::numeric_limits<double>::quiet_NaN());
-
-    // Receives a formatted message from the FMU (or from check).
-    void receive(const std::string& instanceName, int status,
-                 const std::string& category, const std::string& message);
+    // FMU states: handles that only the Impl that made them understands
+    virtual void* getState() = 0;
+    virtual void setState(void* state) = 0;
+    virtual void freeState(void* state) noexcept = 0;
+    virtual std::vector<char> serializeState(void* state) = 0;
+    virtual void* deserializeState(const std::vector<char>& bytes) = 0;
 };
 
 } // namespace fmuImport

@@ -1,4 +1,4 @@
-#include "InstanceImpl.hpp"
+#include "LocalInstance.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -36,16 +36,19 @@ std::string format(const char* text, va_list args)
     return std::string(buffer.data(), static_cast<std::size_t>(n));
 }
 
+// The host's code runs here, inside the FMU's call: unmarked, so that a
+// crash or exit() in the host's logger is not blamed on the FMU.
 extern "C" void fmuImportLogger(fmi2ComponentEnvironment environment,
                                 fmi2String instanceName, fmi2Status status,
                                 fmi2String category, fmi2String message, ...)
 {
+    const UnmarkedCallback host;
     va_list args;
     va_start(args, message);
     const std::string text = format(message, args);
     va_end(args);
     try {
-        static_cast<Instance::Impl*>(environment)
+        static_cast<LocalInstance*>(environment)
             ->receive(instanceName ? instanceName : "", status,
                       category ? category : "", text);
     } catch (...) {
@@ -53,33 +56,59 @@ extern "C" void fmuImportLogger(fmi2ComponentEnvironment environment,
     }
 }
 
+const double noTime = std::numeric_limits<double>::quiet_NaN();
+
 } // namespace
 
-Instance::Impl::Impl(std::shared_ptr<Fmu::Impl> fmuImpl,
-                     const std::string& path, const std::string& instanceName,
-                     Logger log)
-    : fmu(std::move(fmuImpl)), fmuPath(path), name(instanceName),
-      logger(std::move(log))
+LocalInstance::LocalInstance(std::shared_ptr<Fmu::Impl> fmuImpl,
+                             const std::string& path,
+                             const std::string& instanceName, Logger log,
+                             bool loggingOn, const FmuOptions& options)
+    : Impl(std::move(fmuImpl), path, instanceName),
+      logger_(std::move(log)), site_ {
+                                   siteText(path, instanceName, options.owner),
+                                   options.timeout}
 {
-    callbacks.logger = fmuImportLogger;
-    callbacks.allocateMemory = std::calloc;
-    callbacks.freeMemory = std::free;
-    callbacks.stepFinished = nullptr;
-    callbacks.componentEnvironment = this;
+    callbacks_.logger = fmuImportLogger;
+    callbacks_.allocateMemory = std::calloc;
+    callbacks_.freeMemory = std::free;
+    callbacks_.stepFinished = nullptr;
+    callbacks_.componentEnvironment = this;
+    watchCalls(options.timeout);
+
+    try {
+        admit();
+    } catch (...) {
+        --fmu->liveInstances; // no destructor runs
+        throw;
+    }
+    const std::string resources = fmu->resourceLocation();
+    component_ = call("fmi2Instantiate", noTime, api().Instantiate,
+                      instanceName.c_str(), fmi2CoSimulation,
+                      fmu->description.guid.c_str(), resources.c_str(),
+                      &callbacks_, fmi2False, loggingOn ? fmi2True : fmi2False);
+    if (!component_) {
+        --fmu->liveInstances;
+        std::string message = "fmi2Instantiate failed in FMU '" + fmuPath
+            + "', instance '" + instanceName + "'";
+        if (!lastError_.empty())
+            message += ": " + lastError_;
+        throw Error(message);
+    }
 }
 
-Instance::Impl::~Impl()
+LocalInstance::~LocalInstance()
 {
-    if (component)
-        callFmu(api().FreeInstance, component);
-    if (admitted)
+    if (component_)
+        call("fmi2FreeInstance", time, api().FreeInstance, component_);
+    if (admitted_)
         --fmu->liveInstances;
 }
 
-void Instance::Impl::admit()
+void LocalInstance::admit()
 {
     const int others = fmu->liveInstances++;
-    admitted = true;
+    admitted_ = true;
     if (others > 0 && fmu->description.canBeInstantiatedOnlyOncePerProcess) {
         throw Error(
             "FMU '" + fmuPath
@@ -89,31 +118,36 @@ void Instance::Impl::admit()
     }
 }
 
-void Instance::Impl::receive(const std::string& instanceName, int status,
-                             const std::string& category,
-                             const std::string& message)
+void LocalInstance::receive(const std::string& instanceName, int status,
+                            const std::string& category,
+                            const std::string& message)
 {
     if (status >= fmi2Error)
-        lastError = message;
+        lastError_ = message;
     if (status >= fmi2Warning)
-        lastNotice = message;
-    if (logger) {
-        logger(instanceName, status, category, message);
-        return;
-    }
+        lastNotice_ = message;
+    if (logger_)
+        logger_(instanceName, status, category, message);
+    else
+        logToStderr(instanceName, status, category, message);
+}
+
+void logToStderr(const std::string& instanceName, int status,
+                 const std::string& category, const std::string& message)
+{
     std::cerr << "[" << instanceName << "] " << statusName(status) << " "
               << category << ": " << message << '\n';
 }
 
-void Instance::Impl::check(fmi2Status status, const char* function, double time)
+void LocalInstance::check(fmi2Status status, const char* function, double t)
 {
     if (status == fmi2OK)
         return;
     std::string detail;
-    if (!std::isnan(time)) {
+    if (!std::isnan(t)) {
         std::ostringstream s;
         s.precision(17);
-        s << " at t = " << time;
+        s << " at t = " << t;
         detail = s.str();
     }
     if (status == fmi2Warning) {
@@ -124,9 +158,194 @@ void Instance::Impl::check(fmi2Status status, const char* function, double time)
     std::string message = std::string(function) + " failed" + detail
         + " in FMU '" + fmuPath + "', instance '" + name + "' ("
         + statusName(status) + ")";
-    if (!lastError.empty())
-        message += ": " + lastError;
+    if (!lastError_.empty())
+        message += ": " + lastError_;
     throw Error(message);
+}
+
+void LocalInstance::setupExperiment(double startTime, bool stopTimeDefined,
+                                    double stopTime)
+{
+    check(call("fmi2SetupExperiment", startTime, api().SetupExperiment,
+               component_, fmi2False, 0, startTime,
+               stopTimeDefined ? fmi2True : fmi2False, stopTime),
+          "fmi2SetupExperiment", startTime);
+}
+
+void LocalInstance::enterInitializationMode()
+{
+    check(call("fmi2EnterInitializationMode", time,
+               api().EnterInitializationMode, component_),
+          "fmi2EnterInitializationMode");
+}
+
+void LocalInstance::exitInitializationMode()
+{
+    check(call("fmi2ExitInitializationMode", time, api().ExitInitializationMode,
+               component_),
+          "fmi2ExitInitializationMode");
+}
+
+void LocalInstance::terminate()
+{
+    check(call("fmi2Terminate", time, api().Terminate, component_),
+          "fmi2Terminate", time);
+}
+
+void LocalInstance::reset()
+{
+    check(call("fmi2Reset", time, api().Reset, component_), "fmi2Reset");
+}
+
+void LocalInstance::setReal(const std::vector<unsigned int>& vrs,
+                            const std::vector<double>& values)
+{
+    check(call("fmi2SetReal", time, api().SetReal, component_, vrs.data(),
+               vrs.size(), values.data()),
+          "fmi2SetReal", time);
+}
+
+std::vector<double> LocalInstance::getReal(const std::vector<unsigned int>& vrs)
+{
+    std::vector<double> values(vrs.size());
+    check(call("fmi2GetReal", time, api().GetReal, component_, vrs.data(),
+               vrs.size(), values.data()),
+          "fmi2GetReal", time);
+    return values;
+}
+
+void LocalInstance::setInteger(const std::vector<unsigned int>& vrs,
+                               const std::vector<int>& values)
+{
+    check(call("fmi2SetInteger", time, api().SetInteger, component_, vrs.data(),
+               vrs.size(), values.data()),
+          "fmi2SetInteger", time);
+}
+
+std::vector<int> LocalInstance::getInteger(const std::vector<unsigned int>& vrs)
+{
+    std::vector<int> values(vrs.size());
+    check(call("fmi2GetInteger", time, api().GetInteger, component_, vrs.data(),
+               vrs.size(), values.data()),
+          "fmi2GetInteger", time);
+    return values;
+}
+
+void LocalInstance::setBoolean(const std::vector<unsigned int>& vrs,
+                               const std::vector<bool>& values)
+{
+    const std::vector<fmi2Boolean> raw(values.begin(), values.end());
+    check(call("fmi2SetBoolean", time, api().SetBoolean, component_, vrs.data(),
+               vrs.size(), raw.data()),
+          "fmi2SetBoolean", time);
+}
+
+std::vector<bool>
+LocalInstance::getBoolean(const std::vector<unsigned int>& vrs)
+{
+    std::vector<fmi2Boolean> raw(vrs.size());
+    check(call("fmi2GetBoolean", time, api().GetBoolean, component_, vrs.data(),
+               vrs.size(), raw.data()),
+          "fmi2GetBoolean", time);
+    return std::vector<bool>(raw.begin(), raw.end());
+}
+
+void LocalInstance::setString(const std::vector<unsigned int>& vrs,
+                              const std::vector<std::string>& values)
+{
+    std::vector<fmi2String> raw;
+    for (const std::string& s : values)
+        raw.push_back(s.c_str());
+    check(call("fmi2SetString", time, api().SetString, component_, vrs.data(),
+               vrs.size(), raw.data()),
+          "fmi2SetString", time);
+}
+
+std::vector<std::string>
+LocalInstance::getString(const std::vector<unsigned int>& vrs)
+{
+    std::vector<fmi2String> raw(vrs.size(), nullptr);
+    check(call("fmi2GetString", time, api().GetString, component_, vrs.data(),
+               vrs.size(), raw.data()),
+          "fmi2GetString", time);
+    std::vector<std::string> values;
+    for (const fmi2String s : raw)
+        values.emplace_back(s ? s : "");
+    return values;
+}
+
+Instance::StepResult
+LocalInstance::doStep(double currentTime, double stepSize,
+                      bool noSetFMUStatePriorToCurrentPoint, bool mayDiscard)
+{
+    const fmi2Status status = call(
+        "fmi2DoStep", currentTime, api().DoStep, component_, currentTime,
+        stepSize, noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False);
+    if (status != fmi2Discard || !mayDiscard) {
+        check(status, "fmi2DoStep", currentTime);
+        return Instance::StepResult::completed;
+    }
+    // Asking does not forget why the step was discarded
+    const std::string reason = lastNotice_;
+    fmi2Boolean terminated = fmi2False;
+    check(call("fmi2GetBooleanStatus", currentTime, api().GetBooleanStatus,
+               component_, fmi2Terminated, &terminated),
+          "fmi2GetBooleanStatus(fmi2Terminated)", currentTime);
+    lastNotice_ = reason;
+    return terminated ? Instance::StepResult::terminated
+                      : Instance::StepResult::discarded;
+}
+
+double LocalInstance::lastSuccessfulTime()
+{
+    const std::string reason = lastNotice_;
+    fmi2Real t = 0;
+    check(call("fmi2GetRealStatus", time, api().GetRealStatus, component_,
+               fmi2LastSuccessfulTime, &t),
+          "fmi2GetRealStatus(fmi2LastSuccessfulTime)", time);
+    lastNotice_ = reason;
+    return t;
+}
+
+void* LocalInstance::getState()
+{
+    fmi2FMUstate raw = nullptr;
+    check(call("fmi2GetFMUstate", time, api().GetFMUstate, component_, &raw),
+          "fmi2GetFMUstate", time);
+    return raw;
+}
+
+void LocalInstance::setState(void* state)
+{
+    check(call("fmi2SetFMUstate", time, api().SetFMUstate, component_, state),
+          "fmi2SetFMUstate", time);
+}
+
+void LocalInstance::freeState(void* state) noexcept
+{
+    call("fmi2FreeFMUstate", time, api().FreeFMUstate, component_, &state);
+}
+
+std::vector<char> LocalInstance::serializeState(void* state)
+{
+    std::size_t size = 0;
+    check(call("fmi2SerializedFMUstateSize", time, api().SerializedFMUstateSize,
+               component_, state, &size),
+          "fmi2SerializedFMUstateSize");
+    std::vector<char> bytes(size);
+    check(call("fmi2SerializeFMUstate", time, api().SerializeFMUstate,
+               component_, state, bytes.data(), size),
+          "fmi2SerializeFMUstate");
+    return bytes;
+}
+
+void* LocalInstance::deserializeState(const std::vector<char>& bytes)
+{
+    fmi2FMUstate raw = nullptr;
+    check(call("fmi2DeSerializeFMUstate", time, api().DeSerializeFMUstate,
+               component_, bytes.data(), bytes.size(), &raw),
+          "fmi2DeSerializeFMUstate");
+    return raw;
 }
 
 } // namespace fmuImport

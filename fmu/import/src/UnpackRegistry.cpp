@@ -1,5 +1,6 @@
 #include "UnpackRegistry.hpp"
 
+#include "CallReport.hpp"
 #include "RemoveTree.hpp"
 
 #include <unistd.h>
@@ -52,8 +53,9 @@ bool isDefault(const struct sigaction& action)
     return !(action.sa_flags & SA_SIGINFO) && action.sa_handler == SIG_DFL;
 }
 
-// Removes the directories, then hands the signal to whatever handled it
-// before. The directory removal uses only async-signal-safe calls (see
+// Names the FMU call in progress if a fault (SIGSEGV, SIGFPE, SIGABRT,
+// SIGBUS, SIGILL) hit it (CallReport), removes the directories, then hands
+// the signal to whatever handled it before (OpenFOAM's stack trace). The directory removal uses only async-signal-safe calls (see
 // RemoveTree.hpp): the process may be stopped anywhere, in malloc or
 // holding a lock, and is about to die.
 //  - A fault (SIGSEGV, SIGFPE, SIGABRT, SIGBUS, SIGILL) ends the process:
@@ -71,6 +73,8 @@ extern "C" void onFatalSignal(int sig, siginfo_t* info, void* context)
 {
     const int savedErrno = errno;
     const struct sigaction& previous = previousActions[sig];
+    if (isFault(sig))
+        reportCrash(sig);
     if (isFault(sig) || isDefault(previous))
         UnpackRegistry::removeAll();
     if (isDefault(previous)) {
@@ -96,6 +100,8 @@ extern "C" void removeAllAtExit()
 
 void installHandlers()
 {
+    // Registered first, so that it runs last: after the removal below
+    installExitReport();
     std::atexit(removeAllAtExit);
     for (const int sig : handledSignals) {
         struct sigaction previous;

@@ -1,6 +1,7 @@
 // The process-wide registry of live unpack directories, removed on the
 // paths that skip destructors: exit() (OpenFOAM's FatalError), fatal
-// signals and termination requests.
+// signals and termination requests. Its handlers also name the FMU call
+// that a fault or an exit() happens in (CallReport).
 #ifndef FMUIMPORT_UNPACKREGISTRY_HPP
 #define FMUIMPORT_UNPACKREGISTRY_HPP
 

@@ -110,6 +110,81 @@ using Logger = std::function<void(const std::string& instanceName, int status,
                                   const std::string& category,
                                   const std::string& message)>;
 
+// Where the code of an FMU's instances runs.
+enum class Isolation {
+    // In this process, the fastest. An FMU that crashes, aborts or calls
+    // exit() in a call ends this process, after a report on standard error
+    // naming the call (the FMU, the instance, the fmi2 function and the
+    // time): the importer's handlers for SIGSEGV, SIGBUS, SIGFPE, SIGILL
+    // and SIGABRT write it and then hand the signal to the handler that was
+    // there before (the host's: OpenFOAM's stack trace); an exit hook makes
+    // the status of an exit(0) non-zero (Reports). A call that outlasts the
+    // time limit ends the process too (a watchdog thread).
+    none,
+    // Each instance in a child process of its own, the helper program
+    // fmuImportWorker (started with posix_spawn; found through the
+    // environment variable FMUIMPORT_WORKER, beside the running program,
+    // in ../bin of the library that holds the importer, in the build tree,
+    // or on PATH), driven through a socket. The FMU's binary is not loaded
+    // in this process. A crash, abort() or exit() of the FMU, or a call
+    // that outlasts the time limit (the child is killed), throws LostCall
+    // from the call; this process goes on. A call costs a round trip to
+    // the child (microseconds): calls that return nothing (fmi2Set*,
+    // fmi2GetFMUstate, fmi2SetFMUstate, fmi2FreeFMUstate) after
+    // initialization are sent with the next call that returns something,
+    // whose Error reports their failure. Not a sandbox: the child runs with
+    // this process's rights.
+    process
+};
+
+// How an Fmu's instances run and how reports name them.
+struct FmuOptions {
+    Isolation isolation = Isolation::none;
+    // The longest one fmi2 call of an instance may take [s]; 0: no limit.
+    // Isolation::none: the process ends with a report (Reports); process:
+    // the child is killed and the call throws LostCall. Loading the binary
+    // (dlopen) is not limited.
+    double timeout = 0;
+    // How reports of a lost call name the instance's owner, "restraint
+    // spring": "... in FMU 'x.fmu' of restraint spring"; empty: "... in
+    // FMU 'x.fmu', instance '<name>'".
+    std::string owner;
+};
+
+// A call into an FMU that did not come back: its process crashed or exited
+// in it, or it outlasted the time limit (Isolation::process). The message
+// names the fmi2 function, the time, the FMU and the instance: "the FMU
+// crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t = 0.75 in FMU
+// 'x.fmu', instance 'x'", "time-out: fmi2DoStep at t = 0.75 in FMU 'x.fmu',
+// instance 'x' did not return within 1 s". The instance is gone: every
+// later call throws the same.
+class LostCall : public Error {
+public:
+    enum class Reason { crashed, exited, timedOut };
+    LostCall(Reason reason, const std::string& message)
+        : Error(message), reason_(reason)
+    {
+    }
+    Reason reason() const { return reason_; }
+
+private:
+    Reason reason_;
+};
+
+// The words and exit statuses of the reports that this process writes when
+// an FMU running in it (Isolation::none) crashes, hangs or exits in a call:
+// "<prefix>the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t
+// = 0.75 in FMU 'x.fmu', instance 'x'", "<prefix>time-out: ... did not
+// return within 1 s<timeoutSource>", "<prefix>the FMU exited (status 0) in
+// ...". Process-wide; set it before the first FMU is loaded.
+struct Reports {
+    std::string prefix; // "fmusim: "; at most 255 characters, as the next
+    std::string timeoutSource; // what set the limit: " (--timeout)"
+    int timeoutStatus = 1; // exit status after a time-out
+    int exitStatus = 1; // exit status in place of an FMU's exit(0)
+};
+void setReports(const Reports& reports);
+
 // An unpacked and loaded .fmu. Reads and checks modelDescription.xml from
 // the archive (fmiVersion 2.0, <CoSimulation>), then unpacks it, the binary
 // binaries/linux64/<modelIdentifier>.so and everything under resources/
@@ -140,7 +215,10 @@ using Logger = std::function<void(const std::string& instanceName, int status,
 // destroyed or assigned to.
 class Fmu {
 public:
-    explicit Fmu(const std::string& fmuPath);
+    // With Isolation::process the binary is not loaded here: a missing
+    // fmi2 function is reported when the first instance is made.
+    explicit Fmu(const std::string& fmuPath,
+                 const FmuOptions& options = FmuOptions());
     ~Fmu();
     Fmu(Fmu&&) noexcept;
     Fmu& operator=(Fmu&&) noexcept;
@@ -148,6 +226,7 @@ public:
     Fmu& operator=(const Fmu&) = delete;
 
     const std::string& path() const; // as given to the constructor
+    const FmuOptions& options() const;
     const ModelDescription& modelDescription() const;
     bool hasVariable(const std::string& name) const;
     const Variable& variable(const std::string& name) const;
@@ -160,14 +239,19 @@ public:
 
 private:
     friend class Instance;
+    Fmu(std::shared_ptr<Impl> impl, const std::string& path);
     std::shared_ptr<Impl> impl_;
     std::string path_;
+    FmuOptions options_;
 };
 
-// One co-simulation fmi2Component. Every fmi2 call is checked: fmi2Error,
+// One co-simulation fmi2Component, in this process or in a child process
+// (the Fmu's FmuOptions). Every fmi2 call is checked: fmi2Error,
 // fmi2Fatal, fmi2Discard or fmi2Pending throw Error naming the FMU, the
 // instance and the function, with the last error the FMU logged appended;
-// fmi2Warning is reported to the logger and the call goes on.
+// fmi2Warning is reported to the logger and the call goes on. A call that
+// does not come back throws LostCall (Isolation::process) or ends the
+// process (Isolation::none). Calls come from one thread at a time.
 class Instance {
 public:
     // The FMU's log messages go to logger, or to stderr when it is empty.
@@ -182,6 +266,7 @@ public:
     Instance& operator=(const Instance&) = delete;
 
     const std::string& name() const;
+    const std::string& fmuPath() const; // as the Fmu names it
 
     void setupExperiment(double startTime, bool stopTimeDefined = false,
                          double stopTime = 0);

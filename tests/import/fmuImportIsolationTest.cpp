@@ -1,0 +1,146 @@
+// An instance in a child process (Isolation::process) whose FMU crashes or
+// hangs: the call throws LostCall naming the FMU, the instance, the fmi2
+// function and the time, and this process goes on. faultySpring
+// (tests/fmusim/fixtures/testSpring.c) crashes (SIGSEGV) or never returns
+// in the first fmi2DoStep from crashTime or hangTime on.
+#include "zipFixtures.hpp"
+
+#include "fmuImport/fmuImport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <chrono>
+
+namespace {
+
+using fixtures::fmuPath;
+
+struct FaultySpring {
+    fmuImport::Fmu fmu;
+    fmuImport::Instance instance;
+
+    // Steps of 1/4 s, exact in binary, the fault parameter set
+    FaultySpring(const fmuImport::FmuOptions& options, const char* fault,
+                 double time)
+        : fmu(fmuPath("faultySpring"), options),
+          instance(fmu, "spring",
+                   [](const std::string&, int, const std::string&,
+                      const std::string&) {})
+    {
+        instance.setupExperiment(0.0);
+        instance.setReal({fmu.variable(fault).valueReference}, {time});
+        instance.enterInitializationMode();
+        instance.exitInitializationMode();
+    }
+
+    // Steps until the call does not come back; its LostCall
+    fmuImport::LostCall stepUntilLost()
+    {
+        for (int k = 0; k < 8; ++k) {
+            try {
+                instance.doStep(0.25 * k, 0.25);
+                instance.getReal({fmu.variable("A.F[1]").valueReference});
+            } catch (const fmuImport::LostCall& lost) {
+                return lost;
+            }
+        }
+        throw std::runtime_error("the FMU did not fail");
+    }
+};
+
+// No child process left: every one was waited for.
+bool noChildLeft()
+{
+    return waitpid(-1, nullptr, WNOHANG) == -1 && errno == ECHILD;
+}
+
+TEST(ChildProcess, CrashIsALostCallThatNamesTheCall)
+{
+    {
+        FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "crashTime",
+                            0.5);
+        const fmuImport::LostCall lost = spring.stepUntilLost();
+        EXPECT_EQ(lost.reason(), fmuImport::LostCall::Reason::crashed);
+        EXPECT_EQ(std::string(lost.what()),
+                  "the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep "
+                  "at t = 0.5 in FMU '"
+                      + fmuPath("faultySpring") + "', instance 'spring'");
+        // The instance is gone: every later call says so
+        try {
+            spring.instance.getReal({0});
+            ADD_FAILURE() << "a call after the crash did not throw";
+        } catch (const fmuImport::LostCall& again) {
+            EXPECT_EQ(std::string(again.what()), lost.what());
+        }
+    }
+    EXPECT_TRUE(noChildLeft());
+    // and this process goes on, with new instances
+    FaultySpring next({fmuImport::Isolation::process, 0, ""}, "crashTime",
+                      1e300);
+    next.instance.doStep(0.0, 0.25);
+}
+
+TEST(ChildProcess, CallOverTheTimeLimitIsKilled)
+{
+    const auto start = std::chrono::steady_clock::now();
+    {
+        FaultySpring spring(
+            {fmuImport::Isolation::process, 0.5, "restraint spring"},
+            "hangTime", 0.75);
+        const fmuImport::LostCall lost = spring.stepUntilLost();
+        EXPECT_EQ(lost.reason(), fmuImport::LostCall::Reason::timedOut);
+        EXPECT_EQ(std::string(lost.what()),
+                  "time-out: fmi2DoStep at t = 0.75 in FMU '"
+                      + fmuPath("faultySpring")
+                      + "' of restraint spring did not return within 0.5 s");
+    }
+    EXPECT_LT(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count(),
+        5.0);
+    EXPECT_TRUE(noChildLeft());
+}
+
+// A time limit does not end calls that take less, however many
+TEST(ChildProcess, TimeLimitLetsShorterCallsThrough)
+{
+    FaultySpring spring({fmuImport::Isolation::process, 0.5, ""}, "hangTime",
+                        1e300);
+    for (int k = 0; k < 200; ++k)
+        spring.instance.doStep(0.25 * k, 0.25);
+}
+
+TEST(ChildProcess, ErrorOfTheBinaryComesWithTheFirstInstance)
+{
+    const fmuImport::Fmu fmu(fmuPath("missingSymbol"),
+                             {fmuImport::Isolation::process, 0, ""});
+    try {
+        fmuImport::Instance instance(fmu, "lag1");
+        ADD_FAILURE() << "instantiated an FMU with a missing function";
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("does not export fmi2GetStringStatus"),
+            std::string::npos)
+            << e.what();
+    }
+    EXPECT_TRUE(noChildLeft());
+}
+
+TEST(ChildProcess, MissingHelperProgramIsNamed)
+{
+    const fixtures::ScopedEnv worker("FMUIMPORT_WORKER", "/nonexistent/worker");
+    try {
+        FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "crashTime",
+                            1e300);
+        ADD_FAILURE() << "an instance without its helper program";
+    } catch (const fmuImport::Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "the environment variable FMUIMPORT_WORKER names "
+                  "'/nonexistent/worker', which is not an executable file");
+    }
+}
+
+} // namespace
