@@ -5,7 +5,8 @@ The connectors are the fmuConnector restraints of constant/dynamicMeshDict
 (rigidBodyMotion: `restraints` of the motion solver's coefficients) and of
 the sixDoFRigidBodyDisplacement patches of 0.orig/ (or 0/) pointDisplacement;
 their kind is the FMU's model (linearSpring: spring, linearDamper: damper,
-hinge: hinge, any other: connector). Their outputs
+hinge: hinge, catenary and mooringLine: line, drawn from their shape
+outputs by foamfmi.scene, any other: connector). Their outputs
 (postProcessing/fmuConnectors/<startTime>/<name>.dat: loads, length,
 tension) hold no positions, so the attachment points are placed here:
 
@@ -29,7 +30,8 @@ import zipfile
 from foamfmi import foamdict
 from foamfmi.dictionary import DictionaryError
 
-KINDS = {"linearSpring": "spring", "linearDamper": "damper", "hinge": "hinge"}
+KINDS = {"linearSpring": "spring", "linearDamper": "damper", "hinge": "hinge",
+         "catenary": "line", "mooringLine": "line"}
 ORDER = ("spring", "damper", "hinge", "connector")
 
 

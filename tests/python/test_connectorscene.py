@@ -81,6 +81,7 @@ class Connectors(unittest.TestCase):
             self.assertAlmostEqual(q, e)
         self.assertEqual(axis, [0, 1, 0])
         line = by_name["line1"]
+        self.assertEqual(line.kind, "line")
         self.assertIsNone(line.body_b)
         self.assertEqual(connectorscene.positions(line, motion, 0.0)[1], [0.7643976, 0.5, 0])
         # No motion written: unknown after the start

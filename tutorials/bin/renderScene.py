@@ -1,7 +1,8 @@
 """renderScene [OPTIONS] [CASE]
 
 Renders a picture of a floating-body case (CASE, default .) without a
-display: the free surface, the floating bodies and the mooring lines at one
+display: the free surface, the floating bodies, the mooring lines and the
+other connectors (springs, dampers, hinges) at one
 written time, as PNG, or at every written time as an animation.
 
   3D cases  the iso-surface alpha.water = 0.5 in translucent blue (the lines
@@ -19,6 +20,17 @@ written time, as PNG, or at every written time as an animation.
             (shape.x[i], shape.y[i], shape.z[i]) in
             postProcessing/fmuConnectors/<startTime>/<name>.dat at the row of
             the rendered time
+  connectors the fmuConnector restraints without a line shape, between
+            their attachment points: a spring as a green coil (a zig-zag
+            in 2D), a damper as a purple cylinder and a light rod, a hinge
+            as a short magenta cylinder along its axis at the joint, any
+            other connector as a grey rod; one to the fixed world (no
+            bodyB) ends in a dark ball at its anchor. The points are A.p,
+            B.p of the restraint's parameters (constant/dynamicMeshDict, or
+            the sixDoF patches of 0.orig/pointDisplacement) placed by the
+            bodies' motion, postProcessing/rigidBodyMotion/<body>.dat
+            (rigidBodyMotionFromLog, which the tutorials' Allrun runs);
+            their kinds and numbers are listed below the case name
 The case name and the time are printed in the top left corner. Cells that
 an overset mesh blanks (cellTypes 2, holes) are left out.
 
@@ -35,15 +47,18 @@ Options:
                    within 2-25)
   -bodies "P ..."  the body patches (names or regular expressions); "none"
                    for none
-  -lines "N ..."   the connectors to draw (default all that have a shape);
-                   "none" for none
+  -lines "N ..."   the connector lines to draw (default all that have a
+                   shape); "none" for none
+  -connectors "N ..."  the springs, dampers and hinges to draw (default
+                   all); "none" for none
   -size WxH        picture size in pixels (default 1280 wide, 720 high in
                    3D, the tank's aspect in 2D)
   -help            print this help and exit
 
 Runs under ParaView's pvbatch (Debian packages paraview, python3-paraview;
 xvfb when there is no display): tutorials/bin/renderScene starts it.
-It prints the camera it used (position, focal point, view up, view angle or
+It prints what it drew (lines: n of N; springs, dampers, hinges: n of N)
+and the camera it used (position, focal point, view up, view angle or
 parallel scale), so that positions in the scene can be located in the
 picture.
 """
@@ -60,6 +75,10 @@ WATER_TROUGH, WATER_CREST = (0.04, 0.22, 0.62), (0.42, 0.66, 0.98)
 WATER_OPACITY = 0.65
 BODY = (0.96, 0.47, 0.08)
 LINE = (0.12, 0.12, 0.12)
+# Springs, dampers (cylinder, rod), hinges, other connectors, fixed anchors
+CONNECTOR = {"spring": (0.05, 0.6, 0.2), "damper": (0.5, 0.2, 0.8),
+             "rod": (0.75, 0.65, 0.9), "hinge": (0.85, 0.05, 0.45),
+             "connector": (0.35, 0.35, 0.35), "anchor": (0.12, 0.12, 0.12)}
 TANK_2D = (0.93, 0.93, 0.93)
 OUTLINE = (0.0, 0.0, 0.0)
 
@@ -67,9 +86,11 @@ OUTLINE = (0.0, 0.0, 0.0)
 # The case's dictionaries and mooring lines: the project's package
 # (python/foamfmi, on PYTHONPATH from etc/bashrc)
 try:
-    from foamfmi import cli
+    from foamfmi import cli, connectorscene
+    from foamfmi.dictionary import DictionaryError
     from foamfmi.scene import (connector_lines, fail, moving_patch_names, near,
-                               read_boundary, select_patches, up_direction)
+                               polyline, read_boundary, select_patches,
+                               up_direction)
 except ImportError as err:
     hint = (" (source etc/bashrc: it puts the project's python/ on PYTHONPATH)"
             if err.name == "foamfmi" else "")
@@ -82,7 +103,8 @@ def parse_options(argv):
     p = cli.parser("renderScene", __doc__)
     # the options with a value, described above: (option, its value)
     for option, value in (("-time", "T"), ("-output", "FILE"), ("-fps", "F"),
-                          ("-bodies", '"P ..."'), ("-lines", '"N ..."'), ("-size", "WxH")):
+                          ("-bodies", '"P ..."'), ("-lines", '"N ..."'),
+                          ("-connectors", '"N ..."'), ("-size", "WxH")):
         p.add_argument(option, metavar=value)
     p.add_argument("-animation", action="store_true")
     cli.add_case(p)
@@ -99,7 +121,7 @@ def parse_options(argv):
             fail("-size: expected WIDTHxHEIGHT in pixels, each at least 64,"
                  " got '%s'" % opts["size"])
         opts["size"] = (int(m.group(1)), int(m.group(2)))
-    for key in ("bodies", "lines"):
+    for key in ("bodies", "lines", "connectors"):
         if opts[key] is not None:
             opts[key] = [] if opts[key].strip() == "none" else opts[key].split()
     return opts
@@ -132,6 +154,7 @@ def load_vtk():
         vtkElevationFilter, vtkPolyDataNormals, vtkThreshold, vtkTubeFilter)
     from vtkmodules.vtkFiltersGeneral import vtkContourTriangulator
     from vtkmodules.vtkFiltersModeling import vtkOutlineFilter
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
     from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
     from vtkmodules.vtkIOImage import vtkPNGWriter
     from vtkmodules.vtkIOParallel import vtkPOpenFOAMReader
@@ -315,7 +338,72 @@ class Scene:
         self.renderer.AddActor(actor)
         return prop
 
-    def build(self, time, lines):
+    def tube(self, points, radius, sides=12):
+        """A capped tube of radius (in units of the tank's diagonal) along
+        the polyline through points."""
+        tube = self.vtk.vtkTubeFilter()
+        tube.SetInputData(polyline(points))
+        tube.SetRadius(radius*self.diagonal)
+        tube.SetNumberOfSides(sides)
+        tube.CappingOn()
+        tube.Update()
+        return tube.GetOutput()
+
+    def add_connectors(self, connectors):
+        """Springs (a coil), dampers (a cylinder and its rod), hinges (a
+        short cylinder along the axis at the joint), other connectors (a
+        rod) between their attachment points P and Q; a fixed anchor (no
+        body B) as a ball. In 2D the spring is a zig-zag in the view plane
+        and all is drawn flat in front of the bodies."""
+        offset = 0.0025 if self.two_d else 0.0
+        shapes = connectorscene
+        for kind, P, Q, axis, fixed in connectors:
+            length = math.dist(P, Q)
+            if kind == "spring":
+                radius = min(0.012*self.diagonal, 0.15*length)
+                points = shapes.coil(P, Q, radius, flat_normal=self.normal
+                                     if self.two_d else None)
+                parts = [(points, 0.0022, "spring")]
+            elif kind == "damper":
+                cylinder, rod = shapes.damper(P, Q)
+                parts = [(rod, 0.003, "rod"), (cylinder, 0.008, "damper")]
+            elif kind == "hinge":
+                parts = [(shapes.hinge(P, Q, axis, 0.05*self.diagonal),
+                          0.008, "hinge")]
+            else:
+                parts = [([P, Q], 0.0025, "connector")]
+            for points, radius, colour in parts:
+                self.add(self.tube(points, radius, 20), CONNECTOR[colour],
+                         offset=offset)
+            if fixed:
+                ball = self.vtk.vtkSphereSource()
+                ball.SetCenter(Q)
+                ball.SetRadius(0.006*self.diagonal)
+                ball.SetThetaResolution(16)
+                ball.SetPhiResolution(12)
+                ball.Update()
+                self.add(ball.GetOutput(), CONNECTOR["anchor"], offset=offset)
+
+    def add_legend(self, connectors, font):
+        """The kinds of connectors drawn, each in its colour, below the
+        case name."""
+        x = font//2
+        for kind in connectorscene.ORDER:
+            n = sum(1 for c in connectors if c[0] == kind)
+            if not n:
+                continue
+            label = "%s%s" % (kind, "s" if n > 1 else "")
+            text = self.vtk.vtkTextActor()
+            text.SetInput(("%d " % n if n > 1 else "") + label)
+            prop = text.GetTextProperty()
+            prop.SetFontSize(int(0.8*font))
+            prop.SetColor(CONNECTOR[kind])
+            prop.BoldOn()
+            text.SetDisplayPosition(x, self.size[1] - 2*font - font)
+            self.renderer.AddActor2D(text)
+            x += int(0.8*font*0.62*(len(text.GetInput()) + 2))
+
+    def build(self, time, lines, connectors=()):
         vtk = self.vtk
         self.renderer.RemoveAllViewProps()
         mesh, bodies = self.read(time)
@@ -343,6 +431,7 @@ class Scene:
                 self.add(loop, [0.6*c for c in BODY], width=2, offset=0.0015)
             for line in lines:
                 self.add(line, LINE, width=3, offset=0.002)
+            self.add_connectors(connectors)
         else:
             contour = vtk.vtkContourFilter()
             contour.SetInputData(water)
@@ -373,6 +462,7 @@ class Scene:
                 tube.CappingOn()
                 tube.Update()
                 self.add(tube.GetOutput(), LINE)
+            self.add_connectors(connectors)
         text = vtk.vtkTextActor()
         text.SetInput("%s    t = %g s" % (self.case_name, time))
         font = max(14, int(min(0.017*self.size[0], 0.05*self.size[1])))
@@ -380,6 +470,7 @@ class Scene:
         text.GetTextProperty().SetColor(0.0, 0.0, 0.0)
         text.SetDisplayPosition(font//2, self.size[1] - font - font//2)
         self.renderer.AddActor2D(text)
+        self.add_legend(connectors, font)
 
     def elevation(self, surface):
         """The surface with its height as scalars, 0 to 1 from trough to
@@ -471,9 +562,9 @@ class Scene:
             largest = max(largest, abs(view[0]), abs(view[1]))
         return largest
 
-    def render(self, time, lines, png):
+    def render(self, time, lines, png, connectors=()):
         vtk = self.vtk
-        self.build(time, lines)
+        self.build(time, lines, connectors)
         if not self.camera_set:
             self.set_camera()
         self.renderer.ResetCameraClippingRange()
@@ -515,6 +606,8 @@ def main():
     else:
         bodies = select_patches(opts["bodies"], patches, "-bodies")
     lines, line_names = connector_lines(case, opts["lines"])
+    connectors, totals, motion = read_connectors(case, lines.names(),
+                                                 opts["connectors"])
     two_d = any(p[1] == "empty" and p[2] > 0 for p in patches)
 
     scene = Scene(case, bodies, two_d, up_direction(case))
@@ -540,18 +633,62 @@ def main():
             shape = lines.polydata(name, time)
             if shape is not None:
                 shapes.append(shape)
-        scene.render(time, shapes, png)
-        return len(shapes)
+        placed = []
+        for c in connectors:
+            where = connectorscene.positions(c, motion, time)
+            if where is not None:
+                placed.append((c.kind,) + where + (c.body_b is None,))
+        scene.render(time, shapes, png, placed)
+        return len(shapes), placed
 
     if not opts["animation"]:
-        n = draw(render_times[0], output)
-        print("renderScene: wrote %s (t = %g s; bodies: %s; lines: %d of %d)"
-              % (output, render_times[0], " ".join(bodies) or "none", n,
-                 len(line_names)))
+        n, placed = draw(render_times[0], output)
+        counts = ["lines: %d of %d" % (n, len(line_names))]
+        for kind in connectorscene.ORDER:
+            total = totals.get(kind, 0)
+            if total or kind != "connector":
+                counts.append("%ss: %d of %d" % (
+                    kind, sum(1 for p in placed if p[0] == kind), total))
+        print("renderScene: wrote %s (t = %g s; bodies: %s; %s)"
+              % (output, render_times[0], " ".join(bodies) or "none",
+                 "; ".join(counts)))
     else:
         scene.keep_levels = True
         animate(render_times, output, opts["fps"], draw)
     print(scene.camera_text())
+
+
+def read_connectors(case, line_names, wanted):
+    """The connectors without a line shape (springs, dampers, hinges) to
+    draw, the case's number of each kind and the bodies' motion that places
+    them. A dictionary that cannot
+    be read is a warning: the picture is drawn without them."""
+    try:
+        found, placements = connectorscene.read_connectors(case)
+    except DictionaryError as error:
+        sys.stderr.write("renderScene: warning: %s: springs, dampers and hinges"
+                         " not drawn\n" % error)
+        found, placements = [], {}
+    found = [c for c in found if c.name not in line_names and c.kind != "line"]
+    names = [c.name for c in found]
+    totals = {}
+    for c in found:
+        totals[c.kind] = totals.get(c.kind, 0) + 1
+    if wanted is not None:
+        for name in wanted:
+            if name not in names:
+                fail("-connectors: no spring, damper or hinge '%s' in the case;"
+                     " connectors: %s" % (name, " ".join(names) or "none"))
+        found = [c for c in found if c.name in wanted]
+    motion = connectorscene.BodyMotion(case, placements)
+    for c in found:
+        for body in (c.body_a, c.body_b):
+            if body and not motion.has_rows(body):
+                sys.stderr.write(
+                    "renderScene: warning: %s: no motion of %s (postProcessing/"
+                    "rigidBodyMotion/%s.dat, rigidBodyMotionFromLog writes it):"
+                    " drawn at the start only\n" % (c.name, body, body))
+    return found, totals, motion
 
 
 def default_output(case, opts):
