@@ -1,6 +1,6 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
-# Test of tutorials/bin/renderScene: renders two short runs and checks the
+# Test of tutorials/bin/renderScene: renders three short runs and checks the
 # pictures against the scene projected here, independently, through the
 # camera that renderScene reports (position, focal point, view up, view angle
 # or parallel scale):
@@ -22,10 +22,17 @@
 #    centre), and the picture without the body differs only there; an
 #    animation has a frame per written time, encoded to a GIF when ffmpeg
 #    or ImageMagick is there;
+#  - hingedFloatingObjects with a spring and a damper to anchors in the
+#    fixed world added (3D, 0.1 s): the summary counts the spring, the
+#    damper and the hinge; each drawn alone differs from the picture
+#    without them only along the segment between its attachment points
+#    (placed independently from the bodies' logged motion, checked against
+#    the connector's length output; the hinge along its axis at the joint),
+#    with enough pixels, and in its colour;
 #  - a time that was not written is an error naming -time.
 # Needs ParaView (pvbatch, pvpython; Debian packages paraview,
 # python3-paraview), xvfb-run without a display (xvfb), ffmpeg or ImageMagick
-# for the GIF, and what the two tutorials need (./Allwmake).
+# for the GIF, and what the three tutorials need (./Allwmake).
 # Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/tutorialTestFunctions"
@@ -37,7 +44,10 @@ command -v pvbatch > /dev/null 2>&1 \
     || fail "pvbatch not found (Debian packages paraview, python3-paraview)"
 requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
     "the bridge library (build it: ./Allwmake)"
-requireFile "$FOAMFMI_FMU_DIR/catenary.fmu" "the catenary FMU (build it: ./Allwmake)"
+for fmu in catenary hinge linearSpring linearDamper
+do
+    requireFile "$FOAMFMI_FMU_DIR/$fmu.fmu" "the $fmu FMU (build it: ./Allwmake)"
+done
 
 makeWorkDir
 checker="$workDir/checkPicture.py"
@@ -303,6 +313,148 @@ def check_2d(png, nobody, case, time):
             square, 3, 0.6*square.sum())
 
 
+def rotation(vector_deg):
+    """Rotation matrix of a rotation vector in degrees (Rodrigues)."""
+    w = np.radians(np.asarray(vector_deg, float))
+    angle = np.linalg.norm(w)
+    if angle < 1e-15:
+        return np.eye(3)
+    k = w/angle
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle)*K + (1 - math.cos(angle))*K @ K
+
+
+def body_pose(case, body, time):
+    """Origin and rotation of a body at `time` from its logged motion."""
+    rows = [list(map(float, l.split())) for l in open(os.path.join(
+        case, "postProcessing/rigidBodyMotion/%s.dat" % body))
+            if l.strip() and not l.startswith("#")]
+    row = min(rows, key=lambda r: abs(r[0] - time))
+    return np.array(row[1:4]), rotation(row[5:8])
+
+
+def dat_value(case, name, column, time):
+    path = os.path.join(case, "postProcessing/fmuConnectors/0/%s.dat" % name)
+    head = [l for l in open(path) if l.startswith("# Time")][0][1:].split()
+    rows = [list(map(float, l.split())) for l in open(path)
+            if l.strip() and not l.startswith("#")]
+    return min(rows, key=lambda r: abs(r[0] - time))[head.index(column)]
+
+
+# The test's connectors (renderScene.sh writes them): name, kind, body A,
+# A.p, body B (None: the fixed world), B.p, hinge axis in A
+CONNECTORS = [
+    ("spring", "spring", "floatingObject1", [-0.1, 0, 0.12], None, [-0.7, 0.5, 0.55], None),
+    ("damper", "damper", "floatingObject2", [0.1, 0, 0.12], None, [0.7, 0.5, 0.55], None),
+    ("hinge", "hinge", "floatingObject1", [0.2, 0, 0.17], "floatingObject2",
+     [-0.2, 0, 0.17], [0, 1, 0]),
+]
+COLOURS = {
+    "spring": lambda p: (p[..., 1] > p[..., 0] + 60) & (p[..., 1] > p[..., 2] + 40),
+    "damper": lambda p: (p[..., 2] > p[..., 1] + 60) & (p[..., 0] > p[..., 1] + 20),
+    "hinge": lambda p: (p[..., 0] > 150) & (p[..., 1] < 90) & (p[..., 2] > 60),
+}
+
+
+def segment_mask(shape, a, b):
+    mask = np.zeros(shape, bool)
+    steps = int(np.linalg.norm(b - a)) + 1
+    for s in np.linspace(0, 1, steps + 1):
+        c, r = (a + s*(b - a)).astype(int)
+        if 0 <= r < shape[0] and 0 <= c < shape[1]:
+            mask[r, c] = True
+    return mask, steps
+
+
+def check_connectors(png, none, case, time):
+    """Each connector alone (png_<name>.png) against none of them: the
+    pixels that differ lie along the segment between its attachment points
+    (from the bodies' logged motion, independently of renderScene), a
+    hinge's along its axis at the joint, and have its colour; all of them
+    together (png) likewise."""
+    cam = Camera(png + ".camera")
+    p0 = read_png(none)
+    h, w = p0.shape[:2]
+    font = max(14, int(min(0.017*w, 0.05*h)))
+    band = np.zeros((h, w), bool)
+    band[4*font:, :] = True          # below the case name and the legend
+    diagonal = math.sqrt(6.0)        # the tank, (-1 0 0) to (1 1 1)
+    everywhere = np.zeros((h, w), bool)
+    widest = 0
+    for name, kind, body_a, p_a, body_b, p_b, axis in CONNECTORS:
+        c, R = body_pose(case, body_a, time)
+        P = c + R @ p_a
+        if body_b is None:
+            Q = np.array(p_b, float)
+        else:
+            c, RB = body_pose(case, body_b, time)
+            Q = c + RB @ p_b
+        # The points agree with the connector's own output (1 mm: the
+        # output is of the step's last solve, the log of its end)
+        gap = dat_value(case, name, "length", time)
+        if abs(np.linalg.norm(Q - P) - gap) > 1e-3:
+            fail("%s: |Q - P| = %.5f m, its output's length %.5f m"
+                 % (name, np.linalg.norm(Q - P), gap))
+        if kind == "hinge":
+            e = R @ axis
+            middle = (P + Q)/2
+            P, Q = middle - 0.025*diagonal*e, middle + 0.025*diagonal*e
+        a, b = cam.project([P, Q])
+        # margin: the coil's radius, 0.012 diagonals, and a little, in pixels
+        centre = (P + Q)/2
+        scale = np.linalg.norm(cam.project([centre + 0.016*diagonal*cam.u])[0]
+                               - cam.project([centre])[0])
+        near, length = segment_mask((h, w), a, b)
+        margin = int(math.ceil(scale)) + 2
+        widest = max(widest, margin)
+        alone = read_png(png[:-4] + "_" + name + ".png")
+        located("%s (alone against none)" % name, differ(alone, p0) & band,
+                near, margin, max(30, 2*length))
+        located("%s colour" % name, COLOURS[kind](alone) & band, near, margin,
+                max(20, length))
+        everywhere |= near
+    located("connectors (all against none)", differ(read_png(png), p0) & band,
+            everywhere, widest, 200)
+
+
+def add_connectors(case):
+    """hingedFloatingObjects with the spring and the damper of CONNECTORS
+    added, their FMUs copied by its Allrun."""
+    path = os.path.join(case, "constant/dynamicMeshDict")
+    text = open(path).read()
+    entries = ""
+    for name, kind, body, p_a, _, p_b, _ in CONNECTORS[:2]:
+        entries += """
+        %s
+        {
+            type        fmuConnector;
+            fmu         "<constant>/fmu/%s.fmu";
+            body        %s;
+            parameters
+            {
+                %s
+                A.p         (%s);
+                B.p         (%s);
+            }
+        }
+""" % (name, {"spring": "linearSpring", "damper": "linearDamper"}[kind], body,
+       "stiffness 100; restLength 0.4; damping 0;" if kind == "spring"
+       else "damping 10;", " ".join(map(str, p_a)), " ".join(map(str, p_b)))
+    if text.count("    restraints\n    {\n") != 1:
+        fail("%s: no restraints dictionary to add to" % path)
+    with open(path, "w") as f:
+        f.write(text.replace("    restraints\n    {\n",
+                             "    restraints\n    {\n" + entries))
+    allrun = os.path.join(case, "Allrun")
+    text = open(allrun).read()
+    if "copyFmus hinge\n" not in text:
+        fail("%s: no 'copyFmus hinge' line" % allrun)
+    with open(allrun, "w") as f:
+        f.write(text.replace("copyFmus hinge\n",
+                             "copyFmus hinge linearSpring linearDamper\n"))
+    print("ok: spring and damper added to %s" % case)
+
+
 def make_vtk(case):
     """The bridge's connector files from the lines' .dat outputs."""
     dat = os.path.join(case, "postProcessing/fmuConnectors/0")
@@ -350,6 +502,10 @@ if args[0] == "make_vtk":
     make_vtk(args[1])
 elif args[0] == "3d":
     check_3d(*args[1:6], float(args[6]), int(args[7]), int(args[8]))
+elif args[0] == "add_connectors":
+    add_connectors(args[1])
+elif args[0] == "connectors":
+    check_connectors(args[1], args[2], args[3], float(args[4]))
 elif args[0] == "2d":
     check_2d(args[1], args[2], args[3], float(args[4]))
 else:
@@ -362,8 +518,9 @@ runTutorial mooredFloatingObject "$moored" -mesh-factor 0.5 -end-time $endTime -
 [ -d "$moored/$endTime" ] || fail "no time $endTime written in $moored"
 check make_vtk "$moored"
 renderTo "$moored" "$workDir/moored.png" -time $endTime -size 960x540
-grep -q "lines: 4 of 4" "$workDir/moored.png.log" \
-    || fail "not the four lines drawn: $(head -n 1 "$workDir/moored.png.log")"
+grep -q "lines: 4 of 4; springs: 0 of 0; dampers: 0 of 0; hinges: 0 of 0)" \
+    "$workDir/moored.png.log" \
+    || fail "not the four lines alone drawn: $(head -n 1 "$workDir/moored.png.log")"
 renderTo "$moored" "$workDir/mooredNoBody.png" -time $endTime -size 960x540 -bodies none
 renderTo "$moored" "$workDir/mooredNoLines.png" -time $endTime -size 960x540 -lines none
 mv "$moored/VTK" "$moored/VTK.off"
@@ -381,6 +538,28 @@ fi
 grep -q -- "-time 0.05: not a written time" "$workDir/badTime.log" \
     || { cat "$workDir/badTime.log" 1>&2; fail "no error naming -time"; }
 pass "-time 0.05 (not written): $(grep -- '-time' "$workDir/badTime.log")"
+
+# 3D: a spring, a damper and a hinge: hingedFloatingObjects (its hinge
+# between the cubes) with a spring and a damper from the cubes' outer faces
+# to anchors in the fixed world
+conn=$workDir/connectors
+cp -r "$FOAMFMI_DIR/tutorials/hingedFloatingObjects" "$conn" \
+    || fail "cannot copy hingedFloatingObjects"
+"$conn/Allclean" > /dev/null 2>&1 || fail "hingedFloatingObjects: Allclean failed"
+check add_connectors "$conn"
+echo "Running hingedFloatingObjects with a spring and a damper in $conn"
+"$conn/Allrun" -end-time $endTime -no-plot > "$conn/log.Allrun" 2>&1 \
+    || { tail -n 25 "$conn/log.Allrun" 1>&2; fail "Allrun failed (see $conn/log.Allrun)"; }
+renderTo "$conn" "$workDir/conn.png" -time $endTime -size 960x540
+grep -q "springs: 1 of 1; dampers: 1 of 1; hinges: 1 of 1)" "$workDir/conn.png.log" \
+    || fail "not the spring, the damper and the hinge drawn: $(head -n 1 "$workDir/conn.png.log")"
+pass "$(head -n 1 "$workDir/conn.png.log")"
+renderTo "$conn" "$workDir/connNone.png" -time $endTime -size 960x540 -connectors none
+for name in spring damper hinge
+do
+    renderTo "$conn" "$workDir/conn_$name.png" -time $endTime -size 960x540 -connectors $name
+done
+check connectors "$workDir/conn.png" "$workDir/connNone.png" "$conn" $endTime
 
 # 2D: the overset cube, side view, default picture and animation
 overset=$workDir/mooredFloatingBodyOverset
