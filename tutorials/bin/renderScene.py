@@ -356,7 +356,7 @@ class Scene:
         body B) as a ball. In 2D the spring is a zig-zag in the view plane
         and all is drawn flat in front of the bodies."""
         offset = 0.0025 if self.two_d else 0.0
-        shapes = connectorscene
+        shapes = connectorscene      # the polylines' points
         for kind, P, Q, axis, fixed in connectors:
             length = math.dist(P, Q)
             if kind == "spring":
@@ -661,8 +661,8 @@ def main():
 def read_connectors(case, line_names, wanted):
     """The connectors without a line shape (springs, dampers, hinges) to
     draw, the case's number of each kind and the bodies' motion that places
-    them. A dictionary that cannot
-    be read is a warning: the picture is drawn without them."""
+    them. A dictionary that cannot be read is a warning: the picture is
+    drawn without them."""
     try:
         found, placements = connectorscene.read_connectors(case)
     except DictionaryError as error:
