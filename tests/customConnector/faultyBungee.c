@@ -36,12 +36,12 @@ static void fault(void)
     abort();
 #elif defined(FAULT_HANG)
     volatile int spinning = 1;
-    while (spinning) {
-    }
+    while (spinning) { }
 #elif defined(FAULT_EXIT)
     exit(0);
 #else
-#error "define one of FAULT_SEGFAULT, FAULT_DIVIDE_BY_ZERO, FAULT_ABORT, FAULT_HANG, FAULT_EXIT"
+#error                                                                         \
+    "define one of FAULT_SEGFAULT, FAULT_DIVIDE_BY_ZERO, FAULT_ABORT, FAULT_HANG, FAULT_EXIT"
 #endif
 }
 
