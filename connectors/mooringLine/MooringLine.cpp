@@ -84,6 +84,22 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
                        "1");
     requireNonNegative(lawName, "seabedStiffness", p.seabedStiffness, "Pa/m");
     requireNonNegative(lawName, "seabedDamping", p.seabedDamping, "Pa.s/m");
+    if (p.seabedContact) {
+        // The seabed's penalty acts on the contact area (diameter times
+        // length): without either the line would sink through the seabed
+        if (!(p.diameter > 0.0)) {
+            throw ParameterError(
+                lawName, "diameter", p.diameter, "m",
+                "> 0 with seabedContact = 1: the seabed carries the line "
+                "over its contact area, diameter times length");
+        }
+        if (!(p.seabedStiffness > 0.0)) {
+            throw ParameterError(
+                lawName, "seabedStiffness", p.seabedStiffness, "Pa/m",
+                "> 0 with seabedContact = 1: the seabed carries the line "
+                "by its penalty stiffness");
+        }
+    }
     if (p.segments < 2 || p.segments > 1000) {
         throw ConnectorError(
             "mooringLine: parameter segments = " + std::to_string(p.segments)
@@ -147,6 +163,21 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
             + " m is below the seabed (z = " + formatValue(Q[2])
             + " m, the height of the anchor B.p); with "
               "seabedContact = 1 it must not be");
+    }
+    // A line far shorter than the distance between its ends would start
+    // stretched beyond what any mooring material bears, its elastic law
+    // far out of its range. Not named as "parameter ...": it depends on
+    // the inputs (docs/connector-fmu-interface.md)
+    const double chord = (P - Q).norm();
+    if (chord > (1.0 + maxStartStrain) * p.length) {
+        throw UndefinedStateError(
+            "mooringLine: unstretchedLength = " + formatValue(p.length)
+            + " m is out of range for the ends at the start (allowed: at least "
+            + formatValue(chord / (1.0 + maxStartStrain))
+            + " m, the distance from the fairlead A.p to B.p, "
+            + formatValue(chord) + " m, over 1 + " + formatValue(maxStartStrain)
+            + ": a start strain of at most "
+            + formatValue(100.0 * maxStartStrain) + " %)");
     }
     CatenaryParameters c;
     c.p_AoP_A = p.p_AoP_A;

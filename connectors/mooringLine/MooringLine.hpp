@@ -153,14 +153,22 @@ struct MooringLineOutput {
 
 class MooringLine {
 public:
-    //- Validates the parameters (ParameterError naming the first bad one)
+    //- Largest strain a line may start with [-]: beyond the breaking
+    //  strain of mooring materials (chain and wire about 0.02, polyester
+    //  0.1 to 0.15, nylon 0.2 to 0.3), where the linear elastic law means
+    //  nothing; a taut line with a pretension starts below it
+    static constexpr double maxStartStrain = 0.3;
+
+    //- Validates the parameters (ParameterError naming the first bad one;
+    //  with seabedContact, diameter and seabedStiffness must be > 0)
     explicit MooringLine(const MooringLineParameters& parameters);
     ~MooringLine();
 
     //- At rest in the static equilibrium of the discrete line through the
     //  attachment points of A and B (damped Newton from the quasi-static
     //  elastic catenary shape; that shape where Newton finds none).
-    //  UndefinedStateError for a fairlead below the seabed.
+    //  UndefinedStateError for a fairlead below the seabed, and for ends
+    //  farther apart than (1 + maxStartStrain) L.
     MooringLineState initialState(const BodyKinematics& A,
                                   const BodyKinematics& B, double time) const;
 

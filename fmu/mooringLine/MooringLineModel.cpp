@@ -71,13 +71,18 @@ struct Scalar {
 // Model-scale start values: a 1.5 m line of 0.5 kg/m between two points
 // 1 m apart, in two-body mode
 const Scalar scalars[] = {
-    {"unstretchedLength", "m", "unstretched length L, > 0", 1.5},
+    {"unstretchedLength", "m",
+     "unstretched length L, > 0, at least the ends' distance at the start "
+     "over 1.3",
+     1.5},
     {"EA", "N", "axial stiffness, > 0", 1e4},
     {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
      10.0},
     {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5},
     {"diameter", "m",
-     "volume-equivalent diameter (buoyancy, drag, added mass), >= 0", 0.01},
+     "volume-equivalent diameter (buoyancy, drag, added mass, seabed contact), "
+     ">= 0 (> 0 with seabedContact = 1)",
+     0.01},
     {"waterDensity", "kg/m3", "water density, >= 0", 1025.0},
     {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81},
     {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2},
@@ -91,7 +96,9 @@ const Scalar scalars[] = {
      "seabed",
      0.0},
     {"seabedStiffness", "Pa/m",
-     "seabed penalty stiffness per contact area, >= 0", 3e6},
+     "seabed penalty stiffness per contact area, >= 0 (> 0 with "
+     "seabedContact = 1)",
+     3e6},
     {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
      3e5},
     {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},

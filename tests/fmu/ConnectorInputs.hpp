@@ -76,11 +76,15 @@ inline BodyKinematics genericB()
 }
 
 //- Parameters of the FMU with non-zero, non-special values (only those
-//  the FMU declares)
+//  the FMU declares). The lines' unstretchedLength exceeds the 2.57 m
+//  between the generic attachment points (mooringLine refuses to start a
+//  line stretched beyond 30 %)
 inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
 {
-    std::map<std::string, double> all
-        = {{"stiffness", 250.0}, {"restLength", 0.7}, {"damping", 15.0}};
+    std::map<std::string, double> all = {{"stiffness", 250.0},
+                                         {"restLength", 0.7},
+                                         {"damping", 15.0},
+                                         {"unstretchedLength", 3.0}};
     addVector(all, "A.p", Vector3(0.1, -0.2, 0.3));
     addVector(all, "B.p", Vector3(-0.4, 0.05, 0.2));
     std::map<std::string, double> declared;

@@ -1,7 +1,9 @@
 // mooringLine.fmu through its C entry points: outputs equal the law, steps
 // repeated after fmi2SetFMUstate (PIMPLE outer correctors) equal the
 // uninterrupted run, serialized states continue identically in another
-// instance, parameter errors, and the SUNDIALS linked into the binary.
+// instance, parameter errors (a seabed without diameter or stiffness, a
+// line far shorter than its ends), and the SUNDIALS linked into the
+// binary.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -219,12 +221,53 @@ TEST(MooringLineFmu, ParameterErrorsAreNamed)
           "mooringLine: parameter massPerLength = 0 kg/m is out of range (allowed: "
           "finite and > 0)"},
          {"seabedContact", 2.0,
-          "mooringLine: parameter seabedContact = 2 is out of range (allowed: 0 or 1)"}}) {
+          "mooringLine: parameter seabedContact = 2 is out of range (allowed: 0 or 1)"},
+         // With seabedContact = 1 the seabed would hold nothing up: the line
+         // sank through it while groundedLength reported it grounded
+         {"diameter", 0.0,
+          "mooringLine: parameter diameter = 0 m is out of range (allowed: > 0 "
+          "with seabedContact = 1: the seabed carries the line over its "
+          "contact area, diameter times length)"},
+         {"seabedStiffness", 0.0,
+          "mooringLine: parameter seabedStiffness = 0 Pa/m is out of range "
+          "(allowed: > 0 with seabedContact = 1: the seabed carries the line "
+          "by its penalty stiffness)"}}) {
         Instance in(fmu);
         std::map<std::string, double> p = chainParameters;
         p[name] = value;
         EXPECT_EQ(in.initialize(p), fmi2Error);
         EXPECT_EQ(in.lastMessage(), "fmi2ExitInitializationMode: " + message);
+    }
+}
+
+TEST(MooringLineFmu, LineFarShorterThanItsEndsIsRefused)
+{
+    // The chain's ends start 89.4 m apart (fairlead at (80, 0, 40), anchor
+    // at the origin): 60 m of line would start at 49 % strain (before: it
+    // ran, at 119 % on a lab line), 70 m is a taut line at 28 %
+    LoadedFmu fmu("mooringLine");
+    const double chord = std::hypot(80.0, 40.0);
+    for (const double length : {60.0, 70.0}) {
+        Instance in(fmu);
+        const fmi2Status s
+            = initialise(fmu, in, {{"unstretchedLength", length}});
+        if (length < chord / 1.3) {
+            EXPECT_EQ(s, fmi2Error);
+            const std::string m = in.lastMessage();
+            EXPECT_EQ(m.rfind("fmi2ExitInitializationMode: mooringLine: "
+                              "unstretchedLength = 60 m is out of range for "
+                              "the ends at the start (allowed: at least 68.8",
+                              0),
+                      0u)
+                << m;
+            EXPECT_NE(m.find("a start strain of at most 30 %)"),
+                      std::string::npos)
+                << m;
+            // not "parameter unstretchedLength": it depends on the inputs
+            EXPECT_EQ(m.find("parameter"), std::string::npos) << m;
+        } else {
+            EXPECT_EQ(s, fmi2OK) << in.lastMessage();
+        }
     }
 }
 
