@@ -3,6 +3,7 @@
 #include "CallReport.hpp"
 #include "RemoveTree.hpp"
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -98,8 +99,20 @@ extern "C" void removeAllAtExit()
     UnpackRegistry::removeAll();
 }
 
+// The handlers below are code of the importer, which may live in a shared
+// library the host loaded with dlopen and closes before it exits
+// (OpenFOAM's libs entry): kept loaded (RTLD_NODELETE), so that the exit
+// hook and a late signal never jump into unmapped code.
+void keepLoaded()
+{
+    Dl_info info;
+    if (dladdr(reinterpret_cast<void*>(&keepLoaded), &info) && info.dli_fname)
+        dlopen(info.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+}
+
 void installHandlers()
 {
+    keepLoaded();
     // Registered first, so that it runs last: after the removal below
     installExitReport();
     std::atexit(removeAllAtExit);
