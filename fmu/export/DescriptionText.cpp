@@ -1,0 +1,118 @@
+#include "DescriptionText.hpp"
+
+#include <stdexcept>
+
+namespace fmuExport {
+
+namespace {
+
+struct UnitDefinition {
+    const char* name;
+    const char* baseUnit; // BaseUnit attributes: SI exponents
+};
+
+//- SI base-unit exponents of every unit a variable may use
+constexpr UnitDefinition unitDefinitions[] = {
+    {"1", ""},
+    {"m", "m=\"1\""},
+    {"kg", "kg=\"1\""},
+    {"rad", "rad=\"1\""},
+    {"s", "s=\"1\""},
+    {"m/s", "m=\"1\" s=\"-1\""},
+    {"rad/s", "s=\"-1\" rad=\"1\""},
+    {"N", "kg=\"1\" m=\"1\" s=\"-2\""},
+    {"N.m", "kg=\"1\" m=\"2\" s=\"-2\""},
+    {"N.m/rad", "kg=\"1\" m=\"2\" s=\"-2\" rad=\"-1\""},
+    {"N.m.s/rad", "kg=\"1\" m=\"2\" s=\"-1\" rad=\"-1\""},
+    {"J", "kg=\"1\" m=\"2\" s=\"-2\""},
+    {"W", "kg=\"1\" m=\"2\" s=\"-3\""},
+    {"N/m", "kg=\"1\" s=\"-2\""},
+    {"N.s/m", "kg=\"1\" s=\"-1\""},
+    {"kg.m2", "kg=\"1\" m=\"2\""},
+    {"N.s", "kg=\"1\" m=\"1\" s=\"-1\""},
+    {"kg/m", "kg=\"1\" m=\"-1\""},
+    {"kg/m3", "kg=\"1\" m=\"-3\""},
+    {"m/s2", "m=\"1\" s=\"-2\""},
+    {"Pa/m", "kg=\"1\" m=\"-2\" s=\"-2\""},
+    {"Pa.s/m", "kg=\"1\" m=\"-2\" s=\"-1\""},
+};
+
+} // namespace
+
+const char* causalityName(Causality c)
+{
+    switch (c) {
+    case Causality::parameter:
+        return "parameter";
+    case Causality::input:
+        return "input";
+    case Causality::output:
+        return "output";
+    case Causality::local:
+        return "local";
+    }
+    return "";
+}
+
+const char* variabilityName(Variability v)
+{
+    switch (v) {
+    case Variability::constant:
+        return "constant";
+    case Variability::fixed:
+        return "fixed";
+    case Variability::continuous:
+        return "continuous";
+    }
+    return "";
+}
+
+const char* initialName(Initial i)
+{
+    switch (i) {
+    case Initial::none:
+        return "";
+    case Initial::exact:
+        return "exact";
+    case Initial::calculated:
+        return "calculated";
+    }
+    return "";
+}
+
+const char* baseUnitOf(const std::string& unit)
+{
+    for (const UnitDefinition& d : unitDefinitions) {
+        if (unit == d.name) {
+            return d.baseUnit;
+        }
+    }
+    throw std::logic_error("unit \"" + unit
+                           + "\" has no SI base-unit definition");
+}
+
+std::string escape(const std::string& text)
+{
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
+        }
+    }
+    return out;
+}
+
+} // namespace fmuExport
