@@ -12,6 +12,20 @@ namespace fmuTest {
 
 namespace {
 
+void recordLog(fmi2ComponentEnvironment env, fmi2String, fmi2Status status,
+               fmi2String category, fmi2String format, ...)
+{
+    char buffer[2048];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_end(args);
+    static_cast<std::vector<LogRecord>*>(env)->push_back(
+        {status, category ? category : "", buffer});
+}
+
+} // namespace
+
 void unzip(const std::string& archive, const std::filesystem::path& target)
 {
     int error = 0;
@@ -42,20 +56,6 @@ void unzip(const std::string& archive, const std::filesystem::path& target)
     }
     zip_close(zip);
 }
-
-void recordLog(fmi2ComponentEnvironment env, fmi2String, fmi2Status status,
-               fmi2String category, fmi2String format, ...)
-{
-    char buffer[2048];
-    va_list args;
-    va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
-    va_end(args);
-    static_cast<std::vector<LogRecord>*>(env)->push_back(
-        {status, category ? category : "", buffer});
-}
-
-} // namespace
 
 std::string fmuPath(const std::string& name)
 {

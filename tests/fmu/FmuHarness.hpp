@@ -70,6 +70,9 @@ struct Fmi2Api {
 #undef FMU_TEST_DECLARE
 };
 
+//- Extracts every file of a zip archive (an .fmu) into `target`
+void unzip(const std::string& archive, const std::filesystem::path& target);
+
 //- Path of <FOAMFMI_FMU_DIR>/<name>.fmu
 std::string fmuPath(const std::string& name);
 

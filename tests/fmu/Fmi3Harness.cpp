@@ -1,0 +1,233 @@
+#include "Fmi3Harness.hpp"
+
+#include <dlfcn.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "FmuHarness.hpp"
+
+namespace fmuTest {
+
+namespace {
+
+void recordLog(fmi3InstanceEnvironment env, fmi3Status status,
+               fmi3String category, fmi3String message)
+{
+    static_cast<std::vector<LogRecord3>*>(env)->push_back(
+        {status, category ? category : "", message ? message : ""});
+}
+
+std::vector<double> numbers(const std::string& text, bool boolean)
+{
+    std::vector<double> out;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) {
+        out.push_back(boolean ? (word == "true" ? 1.0 : 0.0) : std::stod(word));
+    }
+    return out;
+}
+
+} // namespace
+
+std::string fmu3Path(const std::string& name)
+{
+    return std::string(FOAMFMI_FMU_DIR) + "/fmi3/" + name + ".fmu";
+}
+
+LoadedFmu3::LoadedFmu3(const std::string& modelName) : name(modelName)
+{
+    std::string pattern
+        = (std::filesystem::temp_directory_path() / "fmuTest3-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) {
+        throw std::runtime_error("mkdtemp failed");
+    }
+    directory = pattern;
+    unzip(fmu3Path(name), directory);
+    const std::string xml = (directory / "modelDescription.xml").string();
+    if (!description.load_file(xml.c_str())) {
+        throw std::runtime_error("cannot parse " + xml);
+    }
+    const std::string t
+        = (directory / "terminalsAndIcons" / "terminalsAndIcons.xml").string();
+    if (!terminals.load_file(t.c_str())) {
+        throw std::runtime_error("cannot parse " + t);
+    }
+    const pugi::xml_node root = description.child("fmiModelDescription");
+    token = root.attribute("instantiationToken").value();
+    for (const pugi::xml_node v : root.child("ModelVariables").children()) {
+        Variable3 var;
+        var.name = v.attribute("name").value();
+        var.valueReference = v.attribute("valueReference").as_uint();
+        var.type = v.name();
+        var.causality = v.attribute("causality").value();
+        for (const pugi::xml_node d : v.children("Dimension")) {
+            var.dimensions.push_back(d.attribute("start").as_ullong());
+            var.size *= var.dimensions.back();
+        }
+        var.start
+            = numbers(v.attribute("start").value(), var.type == "Boolean");
+        variables.push_back(var);
+    }
+    const std::string so
+        = (directory / "binaries" / "x86_64-linux" / (name + ".so")).string();
+    library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (library_ == nullptr) {
+        throw std::runtime_error("dlopen " + so + ": " + dlerror());
+    }
+#define FMU_TEST_RESOLVE(function)                                             \
+    api.function = reinterpret_cast<fmi3##function##TYPE*>(                    \
+        dlsym(library_, "fmi3" #function));                                    \
+    if (api.function == nullptr) {                                             \
+        missing.push_back("fmi3" #function);                                   \
+    }
+    FMU_TEST_FMI3_FUNCTIONS(FMU_TEST_RESOLVE)
+#undef FMU_TEST_RESOLVE
+}
+
+LoadedFmu3::~LoadedFmu3()
+{
+    if (library_ != nullptr) {
+        dlclose(library_);
+    }
+    std::error_code ignored;
+    std::filesystem::remove_all(directory, ignored);
+}
+
+const Variable3& LoadedFmu3::variable(const std::string& variableName) const
+{
+    for (const Variable3& v : variables) {
+        if (v.name == variableName) {
+            return v;
+        }
+    }
+    throw std::runtime_error(name + " (FMI 3.0) has no variable "
+                             + variableName);
+}
+
+Instance3::Instance3(const LoadedFmu3& fmu, const char* token) : fmu_(fmu)
+{
+    c = fmu.api.InstantiateCoSimulation(
+        "test", token ? token : fmu.token.c_str(), nullptr, false, false, false,
+        false, nullptr, 0, &log, recordLog, nullptr);
+}
+
+Instance3::~Instance3()
+{
+    if (c != nullptr) {
+        fmu_.api.FreeInstance(c);
+    }
+}
+
+fmi3Status Instance3::initialize(
+    const std::map<std::string, std::vector<double>>& parameters)
+{
+    fmi3Status s
+        = fmu_.api.EnterInitializationMode(c, false, 0.0, 0.0, false, 0.0);
+    if (s == fmi3OK) {
+        s = set(parameters);
+    }
+    return s == fmi3OK ? fmu_.api.ExitInitializationMode(c) : s;
+}
+
+fmi3Status
+Instance3::set(const std::map<std::string, std::vector<double>>& values)
+{
+    std::vector<fmi3ValueReference> refs;
+    std::vector<double> v;
+    for (const auto& [name, value] : values) {
+        refs.push_back(fmu_.variable(name).valueReference);
+        v.insert(v.end(), value.begin(), value.end());
+    }
+    return fmu_.api.SetFloat64(c, refs.data(), refs.size(), v.data(), v.size());
+}
+
+std::vector<double> Instance3::get(const std::string& name)
+{
+    const Variable3& v = fmu_.variable(name);
+    std::vector<double> values(v.size);
+    if (fmu_.api.GetFloat64(c, &v.valueReference, 1, values.data(),
+                            values.size())
+        != fmi3OK) {
+        throw std::runtime_error("fmi3GetFloat64(" + name
+                                 + ") failed: " + lastMessage());
+    }
+    return values;
+}
+
+fmi3Status Instance3::doStep(double t, double h)
+{
+    fmi3Boolean event = true, terminate = true, early = true;
+    fmi3Float64 last = -1.0;
+    const fmi3Status s
+        = fmu_.api.DoStep(c, t, h, false, &event, &terminate, &early, &last);
+    if (s == fmi3OK && (event || terminate || early || last != t + h)) {
+        throw std::runtime_error("fmi3DoStep: unexpected flags or "
+                                 "lastSuccessfulTime");
+    }
+    return s;
+}
+
+std::vector<std::string> fmi2ElementNames(const Variable3& v,
+                                          const LoadedFmu& fmu2)
+{
+    const auto index = [](std::size_t i) { return std::to_string(i + 1); };
+    std::vector<std::string> names;
+    if (v.dimensions.empty()) {
+        names.push_back(v.name);
+    } else if (v.dimensions.size() == 1) {
+        for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
+            names.push_back(v.name + "[" + index(i) + "]");
+        }
+    } else if (v.dimensions[1] == 3 && fmu2.vr.count(v.name + ".x[1]")) {
+        for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
+            for (const char* axis : {".x[", ".y[", ".z["}) {
+                names.push_back(v.name + axis + index(i) + "]");
+            }
+        }
+    } else {
+        for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
+            for (std::size_t j = 0; j < v.dimensions[1]; ++j) {
+                names.push_back(v.name + "[" + index(i) + "," + index(j) + "]");
+            }
+        }
+    }
+    return names;
+}
+
+std::map<std::string, std::vector<double>>
+arrayValues(const std::map<std::string, double>& scalars,
+            const LoadedFmu3& fmu3, const LoadedFmu& fmu2)
+{
+    std::map<std::string, std::vector<double>> arrays;
+    std::size_t used = 0;
+    for (const Variable3& v : fmu3.variables) {
+        const std::vector<std::string> names = fmi2ElementNames(v, fmu2);
+        std::vector<double> values = v.start;
+        values.resize(names.size());
+        bool any = false;
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            const auto it = scalars.find(names[i]);
+            if (it != scalars.end()) {
+                values[i] = it->second;
+                any = true;
+                ++used;
+            }
+        }
+        if (any) {
+            arrays[v.name] = values;
+        }
+    }
+    if (used != scalars.size()) {
+        throw std::runtime_error("arrayValues: a scalar is in no FMI 3.0 "
+                                 "variable");
+    }
+    return arrays;
+}
+
+std::string Instance3::lastMessage() const
+{
+    return log.empty() ? std::string() : log.back().message;
+}
+
+} // namespace fmuTest

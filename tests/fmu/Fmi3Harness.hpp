@@ -1,0 +1,138 @@
+// Test harness for the FMI 3.0 connector FMUs through their C entry points:
+// unzips <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu, dlopens
+// binaries/x86_64-linux/<name>.so, resolves the fmi3 functions the tests
+// call and reads modelDescription.xml and terminalsAndIcons.xml.
+#ifndef TESTS_FMU_FMI3HARNESS_HPP
+#define TESTS_FMU_FMI3HARNESS_HPP
+
+#include <pugixml.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fmi3FunctionTypes.h"
+
+namespace fmuTest {
+
+// The fmi3 functions the tests call, without the fmi3 prefix
+// clang-format off
+#define FMU_TEST_FMI3_FUNCTIONS(X) \
+    X(GetVersion) \
+    X(InstantiateCoSimulation) \
+    X(InstantiateModelExchange) \
+    X(FreeInstance) \
+    X(EnterInitializationMode) \
+    X(ExitInitializationMode) \
+    X(EnterEventMode) \
+    X(Terminate) \
+    X(Reset) \
+    X(GetFloat64) \
+    X(SetFloat64) \
+    X(GetBoolean) \
+    X(GetInt32) \
+    X(GetFMUState) \
+    X(SetFMUState) \
+    X(FreeFMUState) \
+    X(SerializedFMUStateSize) \
+    X(SerializeFMUState) \
+    X(DeserializeFMUState) \
+    X(GetDirectionalDerivative) \
+    X(DoStep)
+// clang-format on
+
+struct Fmi3Api {
+#define FMU_TEST_DECLARE(name) fmi3##name##TYPE* name = nullptr;
+    FMU_TEST_FMI3_FUNCTIONS(FMU_TEST_DECLARE)
+#undef FMU_TEST_DECLARE
+};
+
+//- Path of <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu
+std::string fmu3Path(const std::string& name);
+
+//- A variable of an FMI 3.0 modelDescription.xml
+struct Variable3 {
+    std::string name;
+    fmi3ValueReference valueReference = 0;
+    std::string type; // Float64 or Boolean
+    std::string causality;
+    std::vector<std::size_t> dimensions;
+    //- Number of elements: the product of the dimensions
+    std::size_t size = 1;
+    //- Start values (empty for a calculated one)
+    std::vector<double> start;
+};
+
+class LoadedFmu3 {
+public:
+    explicit LoadedFmu3(const std::string& name);
+    ~LoadedFmu3();
+    LoadedFmu3(const LoadedFmu3&) = delete;
+    LoadedFmu3& operator=(const LoadedFmu3&) = delete;
+
+    Fmi3Api api;
+    std::vector<std::string> missing;
+    std::string name;
+    std::string token;
+    pugi::xml_document description;
+    pugi::xml_document terminals;
+    //- In the order of modelDescription.xml
+    std::vector<Variable3> variables;
+    std::filesystem::path directory;
+
+    const Variable3& variable(const std::string& name) const;
+
+private:
+    void* library_ = nullptr;
+};
+
+struct LogRecord3 {
+    fmi3Status status;
+    std::string category;
+    std::string message;
+};
+
+//- An instance with its own log; freed on destruction
+class Instance3 {
+public:
+    explicit Instance3(const LoadedFmu3& fmu, const char* token = nullptr);
+    ~Instance3();
+    Instance3(const Instance3&) = delete;
+    Instance3& operator=(const Instance3&) = delete;
+
+    fmi3Instance c = nullptr;
+    std::vector<LogRecord3> log;
+
+    //- Instantiated -> step mode, with parameters set in between
+    fmi3Status
+    initialize(const std::map<std::string, std::vector<double>>& parameters);
+    fmi3Status set(const std::map<std::string, std::vector<double>>& values);
+    //- The elements of an array variable, row-major
+    std::vector<double> get(const std::string& name);
+    fmi3Status doStep(double t, double h);
+    std::string lastMessage() const;
+
+private:
+    const LoadedFmu3& fmu_;
+};
+
+class LoadedFmu;
+
+//- The FMI 2.0 scalar names of the elements of an FMI 3.0 variable, in
+//  its (row-major) order, by the mapping of docs/connector-fmu-interface.md:
+//  X -> X; X of n -> X[1..n]; X of r x c -> X[i,j]; X of n x 3 where the
+//  2.0 FMU has X.x[1] -> X.x[i], X.y[i], X.z[i] for i = 1..n
+std::vector<std::string> fmi2ElementNames(const Variable3& v,
+                                          const LoadedFmu& fmu2);
+
+//- FMI 2.0 scalar values (name -> value) as FMI 3.0 array values: every
+//  3.0 variable with an element in `scalars`, the other elements at their
+//  start values
+std::map<std::string, std::vector<double>>
+arrayValues(const std::map<std::string, double>& scalars,
+            const LoadedFmu3& fmu3, const LoadedFmu& fmu2);
+
+} // namespace fmuTest
+
+#endif
