@@ -8,6 +8,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnectorFlow.H"
+#include "restartFiles.H"
 #include "fmuConnectorCore.H"
 #include "interpolation.H"
 #include "volFields.H"
@@ -40,8 +41,32 @@ Foam::fileName Foam::functionObjects::fmuConnectorFlow::statePath
 
 void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
 {
+    // When the run starts (read() is called again when the dictionary
+    // changes), on the master, where the connectors are
     const fileName path(statePath(time_.timeName()));
-    if (!Pstream::master() || !isFile(path))
+    if (!Pstream::master() || time_.timeIndex() != time_.startTimeIndex())
+    {
+        return;
+    }
+
+    // A run restarted from a time written by an earlier run needs the
+    // velocities written with it, complete
+    if (!fresh_)
+    {
+        restartFiles::require
+        (
+            time_,
+            time_.timeName(),
+            fileName("uniform")/"fmuConnectorFlow"/name(),
+            connectors_,
+            "function object " + name() + ": the water velocity at the"
+            " lines",
+            " (or, when the function object or one of its connectors is new"
+            " since that time, set 'restart fresh;' in the function object:"
+            " the lines then take still water in their first time step)"
+        );
+    }
+    if (fresh_ || !isFile(path))
     {
         return;
     }
@@ -67,19 +92,19 @@ void Foam::functionObjects::fmuConnectorFlow::writeFlow
 ) const
 {
     const fileName path(statePath(time_.timeName()));
-    mkDir(path.path());
-    OFstream os(path);
+    OStringStream os;
     // Every digit: the restarted run sets the same inputs
     os.precision(17);
     forAll(connectors_, i)
     {
         os.writeEntry(connectors_[i], flows[i]);
     }
-    if (!os.good())
+    // To a temporary name, renamed: a kill never leaves half of it
+    if (!restartFiles::writeText(path, os.str()))
     {
         FatalErrorInFunction
             << "function object " << name() << ": cannot write " << path
-            << exit(FatalError);
+            << " (disk full?)" << exit(FatalError);
     }
 }
 
@@ -115,7 +140,8 @@ Foam::functionObjects::fmuConnectorFlow::fmuConnectorFlow
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    logFiles(obr_, name)
+    logFiles(obr_, name),
+    fresh_(false)
 {
     read(dict);
 }
@@ -130,6 +156,14 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
     connectors_ = dict.get<wordList>("connectors");
     UName_ = dict.getOrDefault<word>("U", "U");
     scheme_ = dict.getOrDefault<word>("interpolationScheme", "cellPoint");
+    fresh_ =
+        fmuConnectorCore::restartModeNames.getOrDefault
+        (
+            "restart",
+            dict,
+            fmuConnectorCore::restartMode::exact
+        )
+     == fmuConnectorCore::restartMode::fresh;
 
     if (connectors_.empty())
     {
