@@ -1,6 +1,10 @@
 #include "DescriptionText.hpp"
 
+#include <set>
+#include <sstream>
 #include <stdexcept>
+
+#include "ModelDescription.hpp"
 
 namespace fmuExport {
 
@@ -113,6 +117,35 @@ std::string escape(const std::string& text)
         }
     }
     return out;
+}
+
+std::string unitsAndLogCategoriesXml(const VariableTable& table,
+                                     const char* prefix)
+{
+    std::set<std::string> used;
+    for (const ScalarVariable& v : table.variables()) {
+        if (v.type == Type::Real) {
+            used.insert(v.unit);
+        }
+    }
+    std::ostringstream x;
+    x << "  <UnitDefinitions>\n";
+    for (const std::string& unit : used) {
+        const std::string base = baseUnitOf(unit);
+        x << "    <Unit name=\"" << escape(unit) << "\"><BaseUnit " << base
+          << (base.empty() ? "" : " ") << "/></Unit>\n";
+    }
+    x << "  </UnitDefinitions>\n";
+
+    x << "  <LogCategories>\n"
+      << "    <Category name=\"" << logCategoryError
+      << "\" description=\"Errors: the function, the variable and its "
+         "value\"/>\n"
+      << "    <Category name=\"" << logCategoryCalls
+      << "\" description=\"Every " << prefix
+      << " call (when debug logging is on)\"/>\n"
+      << "  </LogCategories>\n";
+    return x.str();
 }
 
 } // namespace fmuExport

@@ -22,6 +22,12 @@ const char* baseUnitOf(const std::string& unit);
 //- Text with & < > " escaped for an XML attribute or element
 std::string escape(const std::string& text);
 
+//- The UnitDefinitions (every unit of a Real variable, SI base units) and
+//  LogCategories elements of modelDescription.xml; `prefix` "fmi2" or
+//  "fmi3" names the functions logged in category logCalls
+std::string unitsAndLogCategoriesXml(const VariableTable& table,
+                                     const char* prefix);
+
 } // namespace fmuExport
 
 #endif

@@ -1,8 +1,11 @@
 // Helpers shared by the fmi2 entry points (fmi2Functions.cpp,
-// fmi2CoSimulation.cpp): the state masks of FMI 2.0 co-simulation and the
-// guard that every call goes through.
+// fmi2CoSimulation.cpp) and, through EntryPoints3.hpp, the fmi3 ones: the
+// state masks of FMI 2.0 co-simulation and the guard that every call goes
+// through.
 #ifndef FMU_EXPORT_ENTRYPOINTS_HPP
 #define FMU_EXPORT_ENTRYPOINTS_HPP
+
+#include <string>
 
 #include "FmuInstance.hpp"
 
@@ -25,6 +28,14 @@ inline fmi2Status guarded(fmi2Component c, const char* function,
         return fmi2Error;
     }
     return static_cast<FmuInstance*>(c)->call(function, allowed, body);
+}
+
+//- UsageError "<argument> is NULL" for a NULL pointer argument
+inline void requireNonNull(const void* pointer, const char* argument)
+{
+    if (pointer == nullptr) {
+        throw UsageError(std::string(argument) + " is NULL");
+    }
 }
 
 //- Every function of the standard that a co-simulation FMU does not provide

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -105,27 +104,7 @@ std::string modelDescriptionXml(const Model& model)
       << "    canGetAndSetFMUstate=\"true\" canSerializeFMUstate=\"true\" "
          "providesDirectionalDerivative=\"false\"/>\n";
 
-    std::set<std::string> used;
-    for (const ScalarVariable& v : variables) {
-        if (v.type == Type::Real) {
-            used.insert(v.unit);
-        }
-    }
-    x << "  <UnitDefinitions>\n";
-    for (const std::string& unit : used) {
-        const std::string base = baseUnitOf(unit);
-        x << "    <Unit name=\"" << escape(unit) << "\"><BaseUnit " << base
-          << (base.empty() ? "" : " ") << "/></Unit>\n";
-    }
-    x << "  </UnitDefinitions>\n";
-
-    x << "  <LogCategories>\n"
-      << "    <Category name=\"" << logCategoryError
-      << "\" description=\"Errors: the function, the variable and its "
-         "value\"/>\n"
-      << "    <Category name=\"" << logCategoryCalls
-      << "\" description=\"Every fmi2 call (when debug logging is on)\"/>\n"
-      << "  </LogCategories>\n";
+    x << unitsAndLogCategoriesXml(model.variables(), "fmi2");
 
     x << "  <ModelVariables>\n";
     for (const ScalarVariable& v : variables) {

@@ -1,5 +1,6 @@
 // modelDescription.xml (FMI 2.0 and 3.0), terminalsAndIcons.xml,
-// documentation/index.html and the GUID, all generated from a model's identity and variable table.
+// documentation/index.html and the GUID, all generated from a model's
+// identity and variable table.
 #ifndef FMU_EXPORT_MODELDESCRIPTION_HPP
 #define FMU_EXPORT_MODELDESCRIPTION_HPP
 

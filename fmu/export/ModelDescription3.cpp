@@ -110,27 +110,7 @@ std::string modelDescription3Xml(const Model& model)
       << "    canReturnEarlyAfterIntermediateUpdate=\"false\" "
          "hasEventMode=\"false\"/>\n";
 
-    std::set<std::string> used;
-    for (const ScalarVariable& v : table.variables()) {
-        if (v.type == Type::Real) {
-            used.insert(v.unit);
-        }
-    }
-    x << "  <UnitDefinitions>\n";
-    for (const std::string& unit : used) {
-        const std::string base = baseUnitOf(unit);
-        x << "    <Unit name=\"" << escape(unit) << "\"><BaseUnit " << base
-          << (base.empty() ? "" : " ") << "/></Unit>\n";
-    }
-    x << "  </UnitDefinitions>\n";
-
-    x << "  <LogCategories>\n"
-      << "    <Category name=\"" << logCategoryError
-      << "\" description=\"Errors: the function, the variable and its "
-         "value\"/>\n"
-      << "    <Category name=\"" << logCategoryCalls
-      << "\" description=\"Every fmi3 call (when debug logging is on)\"/>\n"
-      << "  </LogCategories>\n";
+    x << unitsAndLogCategoriesXml(table, "fmi3");
 
     x << "  <ModelVariables>\n";
     for (const ArrayVariable& v : arrays.variables()) {

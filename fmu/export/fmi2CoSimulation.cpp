@@ -10,6 +10,7 @@ namespace {
 using fmuExport::anyLiveState;
 using fmuExport::FmuInstance;
 using fmuExport::guarded;
+using fmuExport::requireNonNull;
 using fmuExport::savableState;
 using fmuExport::unsupported;
 using fmuExport::UsageError;
@@ -20,13 +21,6 @@ constexpr const char* modelExchangeOnly
 FmuInstance& instance(fmi2Component c)
 {
     return *static_cast<FmuInstance*>(c);
-}
-
-void requireNonNull(const void* pointer, const char* argument)
-{
-    if (pointer == nullptr) {
-        throw UsageError(std::string(argument) + " is NULL");
-    }
 }
 
 } // namespace

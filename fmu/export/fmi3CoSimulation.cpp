@@ -11,6 +11,7 @@ namespace {
 using fmuExport::anyLiveState;
 using fmuExport::Fmi3Instance;
 using fmuExport::guarded3;
+using fmuExport::requireNonNull;
 using fmuExport::savableState;
 using fmuExport::unsupported3;
 using fmuExport::UsageError;
@@ -19,13 +20,6 @@ constexpr const char* modelExchangeOnly
     = "model exchange is not supported: this is a co-simulation FMU";
 constexpr const char* noEventMode = "hasEventMode is false: no event mode";
 constexpr const char* noClocks = "the FMU declares no clocks";
-
-void requireNonNull(const void* pointer, const char* argument)
-{
-    if (pointer == nullptr) {
-        throw UsageError(std::string(argument) + " is NULL");
-    }
-}
 
 } // namespace
 

@@ -37,13 +37,7 @@ std::string fmu3Path(const std::string& name)
 
 LoadedFmu3::LoadedFmu3(const std::string& modelName) : name(modelName)
 {
-    std::string pattern
-        = (std::filesystem::temp_directory_path() / "fmuTest3-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) {
-        throw std::runtime_error("mkdtemp failed");
-    }
-    directory = pattern;
-    unzip(fmu3Path(name), directory);
+    directory = unpack(fmu3Path(name));
     const std::string xml = (directory / "modelDescription.xml").string();
     if (!description.load_file(xml.c_str())) {
         throw std::runtime_error("cannot parse " + xml);

@@ -57,6 +57,17 @@ void unzip(const std::string& archive, const std::filesystem::path& target)
     zip_close(zip);
 }
 
+std::filesystem::path unpack(const std::string& archive)
+{
+    std::string pattern
+        = (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) {
+        throw std::runtime_error("mkdtemp failed");
+    }
+    unzip(archive, pattern);
+    return pattern;
+}
+
 std::string fmuPath(const std::string& name)
 {
     return std::string(FOAMFMI_FMU_DIR) + "/" + name + ".fmu";
@@ -64,13 +75,7 @@ std::string fmuPath(const std::string& name)
 
 LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
 {
-    std::string pattern
-        = (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) {
-        throw std::runtime_error("mkdtemp failed");
-    }
-    directory = pattern;
-    unzip(fmuPath(name), directory);
+    directory = unpack(fmuPath(name));
     const std::string xml = (directory / "modelDescription.xml").string();
     if (!description.load_file(xml.c_str())) {
         throw std::runtime_error("cannot parse " + xml);

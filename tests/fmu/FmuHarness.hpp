@@ -73,6 +73,9 @@ struct Fmi2Api {
 //- Extracts every file of a zip archive (an .fmu) into `target`
 void unzip(const std::string& archive, const std::filesystem::path& target);
 
+//- Extracts an .fmu into a new temporary directory, returned
+std::filesystem::path unpack(const std::string& archive);
+
 //- Path of <FOAMFMI_FMU_DIR>/<name>.fmu
 std::string fmuPath(const std::string& name);
 
