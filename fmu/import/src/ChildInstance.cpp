@@ -37,6 +37,10 @@ namespace {
 const char* const workerName = "fmuImportWorker";
 const double noTime = std::numeric_limits<double>::quiet_NaN();
 
+// How long the parent waits for a reply on the page (Protocol.hpp) before
+// it sleeps on the socket
+const int pageWaitMicroseconds = 50;
+
 bool isProgram(const std::string& path)
 {
     struct stat st;
@@ -302,26 +306,11 @@ bool ChildInstance::waitForReply()
     }
 }
 
-void ChildInstance::spinFor(std::uint64_t seq) const
-{
-    using Clock = std::chrono::steady_clock;
-    const Clock::time_point until
-        = Clock::now() + std::chrono::microseconds(50);
-    for (int i = 0; page_->finished.load(std::memory_order_acquire) < seq;
-         ++i) {
-        if (i % 64 == 63 && Clock::now() > until)
-            return;
-#if defined(__x86_64__) || defined(__i386__)
-        __builtin_ia32_pause();
-#endif
-    }
-}
-
 FrameReader ChildInstance::exchange()
 {
     if (!sendQueue())
         lose(false);
-    spinFor(seq_);
+    protocol::waitOnPage(page_->finished, seq_, pageWaitMicroseconds);
     for (;;) {
         FrameReader frame(nullptr, nullptr);
         while (inbox_.next(frame)) {

@@ -102,11 +102,6 @@ private:
     // Throws the LostCall of a child that is gone.
     void checkAlive() const;
 
-    // Waits for the reply to the request seq by reading the page, for a
-    // few microseconds: the child of a fast FMU answers before a wait on
-    // the socket would have put this process to sleep and woken it again.
-    void spinFor(std::uint64_t seq) const;
-
     // Writes the queue; false if the child is gone.
     bool sendQueue();
 

@@ -2,9 +2,11 @@
 
 #include "fmuImport/fmuImport.hpp"
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 
 namespace fmuImport {
 namespace protocol {
@@ -60,6 +62,20 @@ const char* functionOf(Op op)
         return "fmi2FreeInstance";
     }
     return "an fmi2 function";
+}
+
+bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,
+                int microseconds)
+{
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point until
+        = Clock::now() + std::chrono::microseconds(microseconds);
+    while (counter.load(std::memory_order_acquire) < value) {
+        if (Clock::now() > until)
+            return false;
+        sched_yield();
+    }
+    return true;
 }
 
 FrameWriter::FrameWriter(std::vector<char>& out) : out_(out), start_(out.size())

@@ -74,13 +74,22 @@ enum class Kind : std::uint8_t { log, reply };
 // the request runs; finished is set to it afterwards. A request is in
 // progress while started > finished.
 // While reading is set, the request in progress is a step's read of the
-// outputs (below). The parent may wait for finished by reading the page,
-// without a system call, before it waits on the socket.
+// outputs (below). The parent waits for finished on the page a few
+// microseconds (waitOnPage) before it waits on the socket: the reply of a
+// fast FMU then costs no sleep and wake-up of the parent.
 struct CallPage {
     std::atomic<std::uint64_t> started {0};
     std::atomic<std::uint64_t> finished {0};
     std::atomic<std::uint32_t> reading {0};
 };
+
+// Reads counter until it reaches value, for at most the given
+// microseconds; whether it did. It yields the processor between reads
+// (sched_yield), so that on a machine with more processes than cores the
+// child it waits for can run: a busy loop of pause instructions there
+// took the child's time and made a call ten times slower.
+bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,
+                int microseconds);
 static_assert(std::atomic<std::uint64_t>::is_always_lock_free,
               "the page is shared between processes");
 
