@@ -27,7 +27,7 @@ public:
           core_(std::move(model), instanceName,
                 fmi2CallbackFunctions {&Fmi3Instance::forward, nullptr, nullptr,
                                        nullptr, this},
-                loggingOn)
+                loggingOn, "fmi3")
     {
     }
 

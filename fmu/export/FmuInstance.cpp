@@ -9,9 +9,11 @@
 namespace fmuExport {
 
 FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
-                         const fmi2CallbackFunctions& callbacks, bool loggingOn)
+                         const fmi2CallbackFunctions& callbacks, bool loggingOn,
+                         const char* fmiPrefix)
     : model_(std::move(model)), instanceName_(std::move(instanceName)),
-      guid_(modelGuid(*model_)), callbacks_(callbacks), logCalls_(loggingOn)
+      guid_(modelGuid(*model_)), callbacks_(callbacks), logCalls_(loggingOn),
+      fmiPrefix_(fmiPrefix)
 {
     for (const ScalarVariable& v : model_->variables().variables()) {
         realAccess_.push_back(
@@ -164,8 +166,8 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
             && (state_ & (instantiated | initializationMode)) == 0) {
             throw UsageError("parameter " + variableName(vr[i])
                              + " (value reference " + std::to_string(vr[i])
-                             + ") is fixed: set it before "
-                               "fmi2ExitInitializationMode");
+                             + ") is fixed: set it before " + fmiPrefix_
+                             + "ExitInitializationMode");
         }
     }
     for (std::size_t i = 0; i < n; ++i) {

@@ -17,8 +17,10 @@ namespace fmuExport {
 
 class FmuInstance {
 public:
+    //- `fmiPrefix` ("fmi2", "fmi3") names the FMI functions in messages
     FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
-                const fmi2CallbackFunctions& callbacks, bool loggingOn);
+                const fmi2CallbackFunctions& callbacks, bool loggingOn,
+                const char* fmiPrefix = "fmi2");
 
     FmuInstance(const FmuInstance&) = delete;
     FmuInstance& operator=(const FmuInstance&) = delete;
@@ -97,6 +99,7 @@ private:
     std::string guid_;
     fmi2CallbackFunctions callbacks_;
     bool logCalls_;
+    const char* fmiPrefix_;
     ModelState state_ = instantiated;
     double time_ = 0.0;
     bool outputsValid_ = false;

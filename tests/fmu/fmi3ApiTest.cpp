@@ -116,6 +116,11 @@ TEST_P(Fmi3Functions, RefusesWrongValueCountsAndElementReferences)
     EXPECT_EQ(fmu3->api.SetFloat64(in.c, &F, 1, values, 3), fmi3Error);
     EXPECT_NE(in.lastMessage().find("is an output"), std::string::npos);
     EXPECT_EQ(fmu3->api.GetInt32(in.c, &F, 1, nullptr, 1), fmi3Error);
+    const fmi3ValueReference p = fmu3->variable("A.p").valueReference;
+    EXPECT_EQ(fmu3->api.SetFloat64(in.c, &p, 1, values, 3), fmi3Error);
+    EXPECT_NE(in.lastMessage().find("set it before fmi3ExitInitialization"),
+              std::string::npos)
+        << in.lastMessage();
     // The instance is still usable
     EXPECT_EQ(in.doStep(0.5, 0.25), fmi3OK) << in.lastMessage();
 }
