@@ -9,7 +9,6 @@ License
 
 #include "implicitNewmarkState.H"
 #include "implicitNewmark.H"
-#include "restartFiles.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -50,7 +49,7 @@ Foam::RBD::rigidBodySolvers::implicitNewmarkState::implicitNewmarkState
     const bool fresh
 )
 :
-    regIOobject
+    restartFiles::stateFile
     (
         IOobject
         (
@@ -163,39 +162,6 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmarkState::writeData
     os.precision(precision);
 
     return os.good();
-}
-
-
-#if OPENFOAM >= 2006
-bool Foam::RBD::rigidBodySolvers::implicitNewmarkState::writeObject
-(
-    IOstreamOption streamOpt,
-    const bool valid
-) const
-#else
-bool Foam::RBD::rigidBodySolvers::implicitNewmarkState::writeObject
-(
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
-) const
-#endif
-{
-    if (!Pstream::master())
-    {
-        return true;
-    }
-
-    // ASCII, to a temporary file renamed over the file: a kill leaves the
-    // old file or the new one, never half of it
-    if (!restartFiles::write(*this))
-    {
-        FatalErrorInFunction
-            << "cannot write the state of the rigid-body solver to "
-            << objectPath() << " (disk full?)" << exit(FatalError);
-    }
-    return true;
 }
 
 

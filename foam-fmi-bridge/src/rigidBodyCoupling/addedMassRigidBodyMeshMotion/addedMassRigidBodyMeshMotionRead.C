@@ -173,40 +173,18 @@ void wrongType
 }
 
 
-bool couplingSwitch(const Foam::dictionary& dict, const Foam::word& key, bool deflt)
-{
-    using namespace Foam;
-
-    if (!dict.found(key, keyType::LITERAL))
-    {
-        return deflt;
-    }
-    const char* expected = "a switch (on/off, true/false, yes/no)";
-    const token& tok = oneToken(dict, key, expected);
-    if (tok.isWord())
-    {
-        #if OPENFOAM >= 2312
-        const Switch sw(Switch::find(tok.wordToken()));
-        if (sw.good())
-        #else
-        const Switch sw(tok.wordToken(), true);
-        if (sw.valid())
-        #endif
-        {
-            return sw;
-        }
-    }
-    wrongType(dict, key, expected, tok);
-    return deflt;
-}
-
-
-Foam::word couplingWord
+//- A coupling entry: its only token, of the kind accepts takes, read by
+//  value; deflt when absent. FatalIOError naming the entry and what it
+//  expects for any other token
+template<class Type, class Accepts, class Value>
+Type couplingEntry
 (
     const Foam::dictionary& dict,
     const Foam::word& key,
-    const Foam::word& deflt,
-    const char* expected
+    const Type& deflt,
+    const char* expected,
+    const Accepts& accepts,
+    const Value& value
 )
 {
     if (!dict.found(key, Foam::keyType::LITERAL))
@@ -214,53 +192,32 @@ Foam::word couplingWord
         return deflt;
     }
     const Foam::token& tok = oneToken(dict, key, expected);
-    if (!tok.isWord())
+    if (!accepts(tok))
     {
         wrongType(dict, key, expected, tok);
     }
-    return tok.wordToken();
+    return value(tok);
 }
 
 
-Foam::label couplingInteger
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::label deflt
-)
+//- A switch's value, or an invalid switch for any other word
+Foam::Switch switchOf(const Foam::token& tok)
 {
-    if (!dict.found(key, Foam::keyType::LITERAL))
-    {
-        return deflt;
-    }
-    const char* expected = "an integer";
-    const Foam::token& tok = oneToken(dict, key, expected);
-    if (!tok.isLabel())
-    {
-        wrongType(dict, key, expected, tok);
-    }
-    return tok.labelToken();
+    #if OPENFOAM >= 2312
+    return Foam::Switch::find(tok.wordToken());
+    #else
+    return Foam::Switch(tok.wordToken(), true);
+    #endif
 }
 
 
-Foam::scalar couplingNumber
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar deflt
-)
+bool isSwitch(const Foam::token& tok)
 {
-    if (!dict.found(key, Foam::keyType::LITERAL))
-    {
-        return deflt;
-    }
-    const char* expected = "a number";
-    const Foam::token& tok = oneToken(dict, key, expected);
-    if (!tok.isNumber())
-    {
-        wrongType(dict, key, expected, tok);
-    }
-    return tok.number();
+    #if OPENFOAM >= 2312
+    return tok.isWord() && switchOf(tok).good();
+    #else
+    return tok.isWord() && switchOf(tok).valid();
+    #endif
 }
 
 } // End anonymous namespace
@@ -353,13 +310,39 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
 
     const dictionary& dict = coeffDict().subOrEmptyDict("coupling");
 
-    addedMass_ = couplingSwitch(dict, "addedMass", true);
-    pName_ = couplingWord(dict, "pressure", "p_rgh", "the pressure field's name");
-    residualName_ =
-        couplingWord(dict, "residual", "rigidBodyCoupling", "a field name");
-    maxIter_ = couplingInteger(dict, "maxIter", 10);
-    addedMassInterval_ = couplingInteger(dict, "addedMassInterval", 10);
-    tolerance_ = couplingNumber(dict, "tolerance", 1e-9);
+    const auto isWord = [](const token& t) { return t.isWord(); };
+    const auto isLabel = [](const token& t) { return t.isLabel(); };
+    const auto isNumber = [](const token& t) { return t.isNumber(); };
+    const auto wordOf = [](const token& t) { return t.wordToken(); };
+    const auto labelOf = [](const token& t) { return t.labelToken(); };
+    const auto numberOf = [](const token& t) { return t.number(); };
+
+    addedMass_ = couplingEntry<bool>
+    (
+        dict, "addedMass", true, "a switch (on/off, true/false, yes/no)",
+        isSwitch, [](const token& t) { return bool(switchOf(t)); }
+    );
+    pName_ = couplingEntry<word>
+    (
+        dict, "pressure", "p_rgh", "the pressure field's name",
+        isWord, wordOf
+    );
+    residualName_ = couplingEntry<word>
+    (
+        dict, "residual", "rigidBodyCoupling", "a field name", isWord, wordOf
+    );
+    maxIter_ = couplingEntry<label>
+    (
+        dict, "maxIter", 10, "an integer", isLabel, labelOf
+    );
+    addedMassInterval_ = couplingEntry<label>
+    (
+        dict, "addedMassInterval", 10, "an integer", isLabel, labelOf
+    );
+    tolerance_ = couplingEntry<scalar>
+    (
+        dict, "tolerance", 1e-9, "a number", isNumber, numberOf
+    );
 
     if (maxIter_ < 1)
     {

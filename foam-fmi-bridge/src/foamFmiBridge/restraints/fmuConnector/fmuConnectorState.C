@@ -8,7 +8,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnectorState.H"
-#include "restartFiles.H"
 #include "Time.H"
 #include "IOstreams.H"
 #include "stringList.H"
@@ -67,7 +66,7 @@ Foam::fmuConnectorState::fmuConnectorState
     const word& startTimeName
 )
 :
-    regIOobject
+    restartFiles::stateFile
     (
         IOobject
         (
@@ -212,39 +211,6 @@ bool Foam::fmuConnectorState::writeData(Ostream& os) const
     os.writeEntry("state", lines);
 
     return os.good();
-}
-
-
-#if OPENFOAM >= 2006
-bool Foam::fmuConnectorState::writeObject
-(
-    IOstreamOption streamOpt,
-    const bool valid
-) const
-#else
-bool Foam::fmuConnectorState::writeObject
-(
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
-) const
-#endif
-{
-    if (!Pstream::master() || !fmu_.canSerialize())
-    {
-        return true;
-    }
-
-    // ASCII, to a temporary file renamed over the state file: a kill
-    // leaves the old file or the new one, never half of it
-    if (!restartFiles::write(*this))
-    {
-        FatalErrorInFunction
-            << "cannot write the state of connector " << name() << " to "
-            << objectPath() << " (disk full?)" << exit(FatalError);
-    }
-    return true;
 }
 
 
