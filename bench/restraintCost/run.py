@@ -1,6 +1,7 @@
 """Cost of one restraint evaluation: the linearSpring FMU through the
-fmuConnector restraint against OpenFOAM's built-in linearSpring, measured
-side by side in one run of restraintCost, printed as a ratio.
+fmuConnector restraint against OpenFOAM's built-in linearSpring, and the
+same FMU with isolation process (in a process of its own), measured side
+by side in one run of restraintCost, printed as ratios and differences.
 
 Run in the project's environment: tests/run-with-openfoam python3 bench/restraintCost/run.py
 """
@@ -10,6 +11,25 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "bridge"))
 from bridgecase import Case, fmu_path, rigid_body, vec  # noqa: E402
+
+
+def fmu_restraint(name, isolation):
+    return f"""        {name}
+        {{
+            type fmuConnector;
+            body hull;
+            fmu "{fmu_path('linearSpring')}";
+            isolation {isolation};
+            parameters
+            {{
+                stiffness 50;
+                damping 0.5;
+                restLength 0.5;
+                A.p {vec((0.1, 0, 0.05))};
+                B.p {vec((0.3, 0.2, 1.2))};
+            }}
+        }}"""
+
 
 MODEL = f"""
     solver {{ type symplectic; }}
@@ -29,20 +49,8 @@ MODEL = f"""
             damping 0.5;
             restLength 0.5;
         }}
-        fmu
-        {{
-            type fmuConnector;
-            body hull;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness 50;
-                damping 0.5;
-                restLength 0.5;
-                A.p {vec((0.1, 0, 0.05))};
-                B.p {vec((0.3, 0.2, 1.2))};
-            }}
-        }}
+{fmu_restraint("fmu", "none")}
+{fmu_restraint("fmuProcess", "process")}
     }}
 """
 
@@ -57,9 +65,9 @@ def main():
     rows = {}
     for line in out.splitlines():
         parts = line.split()
-        if len(parts) == 7 and parts[0] in ("builtin", "fmu"):
+        if len(parts) == 7 and parts[0] in ("builtin", "fmu", "fmuProcess"):
             rows[parts[0]] = [float(x) for x in parts[2:]]
-    b, f = rows["builtin"], rows["fmu"]
+    b, f, p = rows["builtin"], rows["fmu"], rows["fmuProcess"]
     print("Cost of one restraint evaluation, ns (fastest of 5 rounds of 20000):")
     print("                                  new step  repeated solve")
     print(f"  built-in linearSpring           {b[0]:8.0f}  {b[1]:8.0f}")
@@ -74,6 +82,15 @@ def main():
     print(f"  new step {'met' if f[0] <= 2000 else 'NOT met'}, "
           f"repeated solve {'met' if f[1] <= 1000 else 'NOT met'}")
     print("A repeated solve restores the state, steps the FMU and reads its outputs.")
+    print()
+    print("The same FMU in a process of its own (isolation process), ns:")
+    print("                                  new step  repeated solve")
+    print(f"  isolation none (in process)     {f[0]:8.0f}  {f[1]:8.0f}")
+    print(f"  isolation process               {p[0]:8.0f}  {p[1]:8.0f}")
+    print(f"  difference                      {p[0] - f[0]:8.0f}  {p[1] - f[1]:8.0f}")
+    print("Goal: isolation process within 20000 ns of in process")
+    print(f"  new step {'met' if p[0] - f[0] <= 20000 else 'NOT met'}, "
+          f"repeated solve {'met' if p[1] - f[1] <= 20000 else 'NOT met'}")
 
 
 if __name__ == "__main__":

@@ -20,6 +20,12 @@ Description
     step (it restores its state and steps again), as PIMPLE outer correctors
     cause.
 
+    An fmuConnector with isolation process runs its FMU in a process of
+    its own: a model with the same connector twice, once with isolation
+    none and once with isolation process, gives the cost of the isolation
+    side by side (bench/restraintCost/run.py). Its parts are timed with
+    the FMU in this process all the same.
+
     For an fmuConnector the first evaluation of a step is also split into
     its parts, each timed on its own in the same rounds: the evaluation
     (inputs set, FMU stepped, outputs read), the state save
@@ -119,7 +125,11 @@ public:
             name,
             dict,
             dict.subOrEmptyDict("parameters"),
-            0
+            0,
+            fmuConnectorCore::runSettings
+            {
+                fmuConnectorCore::isolationMode::none, 0, string()
+            }
         ),
         output_("cost." + name, runTime, fmu_, "restraintCost " + name),
         rawFmu_(fmu_.file()),

@@ -13,6 +13,8 @@ License
 #include "error.H"
 #include "messageStream.H"
 
+#include <cctype>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::Enum<Foam::fmuConnectorCore::restartMode>
@@ -21,6 +23,86 @@ Foam::fmuConnectorCore::restartModeNames
     { restartMode::exact, "exact" },
     { restartMode::fresh, "fresh" },
 });
+
+const Foam::Enum<Foam::fmuConnectorCore::isolationMode>
+Foam::fmuConnectorCore::isolationModeNames
+({
+    { isolationMode::none, "none" },
+    { isolationMode::process, "process" },
+});
+
+
+// * * * * * * * * * * * * * * * * Run settings  * * * * * * * * * * * * * * //
+
+Foam::fmuConnectorCore::runSettings Foam::fmuConnectorCore::runSettings::read
+(
+    const word& restraintName,
+    const dictionary& dict
+)
+{
+    runSettings run;
+    run.isolation = isolationModeNames.getOrDefault
+    (
+        "isolation",
+        dict,
+        isolationMode::none
+    );
+
+    run.timeout = dict.getOrDefault<scalar>("timeout", 0);
+    if (!(run.timeout >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "restraint " << restraintName << ": entry timeout is "
+            << run.timeout << "; expected the longest one call into the FMU"
+            << " may take, in seconds, >= 0 (0: no limit)"
+            << exit(FatalIOError);
+    }
+
+    // A quoted string: unquoted, OpenFOAM reads hexadecimal digits that
+    // start with a digit as a number
+    if (dict.found("sha256", keyType::LITERAL))
+    {
+        const ITstream& is = dict.lookup("sha256");
+        const bool one =
+            is.size() == 1 && (is[0].isWord() || is[0].isString());
+        run.sha256 =
+            !one ? string()
+          : is[0].isWord() ? string(is[0].wordToken())
+          : is[0].stringToken();
+        bool hex = run.sha256.size() == 64;
+        for (char& c : run.sha256)
+        {
+            c = std::tolower(static_cast<unsigned char>(c));
+            hex = hex && std::isxdigit(static_cast<unsigned char>(c));
+        }
+        if (!hex)
+        {
+            FatalIOErrorInFunction(dict)
+                << "restraint " << restraintName << ": entry sha256 must be"
+                << " the 64 hexadecimal digits of the .fmu file's SHA-256"
+                << " in double quotes, as sha256sum prints them:"
+                << " sha256 \"<digits>\";" << exit(FatalIOError);
+        }
+    }
+    return run;
+}
+
+
+void Foam::fmuConnectorCore::runSettings::write(Ostream& os) const
+{
+    if (isolation != isolationMode::none)
+    {
+        os.writeEntry("isolation", isolationModeNames[isolation]);
+    }
+    if (timeout > 0)
+    {
+        os.writeEntry("timeout", timeout);
+    }
+    if (!sha256.empty())
+    {
+        os.writeEntry("sha256", sha256);
+    }
+}
 
 // * * * * * * * * * * * * * * * * * Kinematics  * * * * * * * * * * * * * * //
 
@@ -117,7 +199,7 @@ void Foam::fmuConnectorCore::checkEntries
     const wordList keywords
     ({
         typeKeyword, "body", "bodyB", "fmu", "parameters", "report",
-        "restart"
+        "restart", "isolation", "timeout", "sha256"
     });
     for (const entry& e : dict)
     {
@@ -206,7 +288,8 @@ Foam::fmuConnectorCore::fmuConnectorCore
     const word& restraintName,
     const dictionary& restraintDict,
     const dictionary& parameters,
-    const scalar startTime
+    const scalar startTime,
+    const runSettings& run
 )
 :
     file_(file),
@@ -222,9 +305,42 @@ Foam::fmuConnectorCore::fmuConnectorCore
 {
     file_.expand();
 
+    // How the importer reports an FMU that crashes, hangs or exits in a
+    // call in this process: in OpenFOAM's words, before the solver dies
+    fmuImport::setReports
+    ({
+        "\n--> FOAM FATAL ERROR: ",
+        " (the restraint's timeout entry)",
+        1,
+        1
+    });
+
     try
     {
-        fmu_.reset(new fmuImport::Fmu(file_));
+        if (!run.sha256.empty())
+        {
+            const std::string actual(fmuImport::fileSha256(file_));
+            if (actual != run.sha256)
+            {
+                FatalIOErrorInFunction(restraintDict)
+                    << "restraint " << restraintName_ << ": FMU " << file_
+                    << " has SHA-256 " << actual.c_str() << ", but entry"
+                    << " sha256 expects " << run.sha256.c_str() << ": it is"
+                    << " not the file the case was set up with. An FMU is"
+                    << " native code run with the solver's rights: check"
+                    << " where this file came from before changing sha256"
+                    << exit(FatalIOError);
+            }
+        }
+
+        fmuImport::FmuOptions options;
+        options.isolation =
+            run.isolation == isolationMode::process
+          ? fmuImport::Isolation::process
+          : fmuImport::Isolation::none;
+        options.timeout = run.timeout;
+        options.owner = "restraint " + restraintName_;
+        fmu_.reset(new fmuImport::Fmu(file_, options));
 
         const fmuImport::ModelDescription& md = fmu_->modelDescription();
         canRollback_ = md.canGetAndSetFMUstate;

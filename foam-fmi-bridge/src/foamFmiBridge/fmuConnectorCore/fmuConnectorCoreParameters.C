@@ -336,6 +336,11 @@ void Foam::fmuConnectorCore::checkParameters
         {
             probe.exitInitializationMode();
         }
+        catch (const fmuImport::LostCall&)
+        {
+            // A crash or time-out is no refusal: the restraint's error
+            throw;
+        }
         catch (const fmuImport::Error& err)
         {
             refusal = err.what();

@@ -137,7 +137,8 @@ void Foam::RBD::restraints::fmuConnector::load()
             name_,
             coeffs_,
             parameters_,
-            runTime.value()
+            runTime.value(),
+            run_
         )
     );
     fmu_->checkBodyB(bodyBName_, coeffs_);
@@ -269,6 +270,7 @@ bool Foam::RBD::restraints::fmuConnector::read
         coeffs_,
         fmuConnectorCore::restartMode::exact
     );
+    run_ = fmuConnectorCore::runSettings::read(name_, coeffs_);
 
     bodyBName_ = coeffs_.lookupOrDefault<word>("bodyB", word::null);
     bodyBID_ = -1;
@@ -299,6 +301,7 @@ void Foam::RBD::restraints::fmuConnector::write
     }
     os.writeEntry("report", report_);
     os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
+    run_.write(os);
     os.beginBlock("parameters");
     parameters_.write(os, false);
     os.endBlock();

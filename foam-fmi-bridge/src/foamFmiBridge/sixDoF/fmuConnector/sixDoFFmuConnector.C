@@ -313,6 +313,7 @@ bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
         sDoFRBMRCoeffs_,
         fmuConnectorCore::restartMode::exact
     );
+    run_ = fmuConnectorCore::runSettings::read(name_, sDoFRBMRCoeffs_);
 
     return true;
 }
@@ -331,6 +332,7 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::write
     }
     os.writeEntry("report", report_);
     os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
+    run_.write(os);
     os.beginBlock("parameters");
     parameters_.write(os, false);
     os.endBlock();

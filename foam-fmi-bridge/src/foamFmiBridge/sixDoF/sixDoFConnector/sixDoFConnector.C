@@ -170,7 +170,8 @@ Foam::sixDoFConnector::sixDoFConnector
             name_,
             dict_,
             dict_.subOrEmptyDict("parameters"),
-            stepTime_
+            stepTime_,
+            fmuConnectorCore::runSettings::read(name_, dict_)
         )
     );
     fmu_->checkBodyB(bodyB_, dict_);

@@ -1,0 +1,114 @@
+"""The entries that say how an fmuConnector's FMU runs: isolation (none or
+process), timeout (seconds per FMU call, 0: no limit) and sha256 (the
+.fmu file's hash, which must match), in both restraints.
+
+- Wrong values stop the run with a FatalIOError naming the restraint, the
+  entry and what is expected: an unknown isolation with the valid ones, a
+  negative timeout, a sha256 that is not 64 hexadecimal digits in quotes,
+  a sha256 that is not the file's with both hashes (rigidBodySim and
+  sixDoFSim).
+- The file's own sha256 (in any case of letters) runs, and isolation
+  process gives the spring's motion and outputs bit for bit as isolation
+  none does.
+"""
+import hashlib
+import os
+import sys
+
+from bridgecase import Case, fmu_path, rigid_body, vec
+from sixdofcase import SixDoFCase, sixdof_body
+
+PARAMETERS = f"stiffness 50; damping 0.5; restLength 0.5; A.p {vec((0.1, 0, 0.05))}; B.p {vec((0.3, 0.2, 1.2))};"
+
+
+def model(fmu, extra):
+    return f"""
+    solver {{ type symplectic; }}
+    g (0 0 -9.81);
+    bodies
+    {{
+{rigid_body("hull", 2, 0.1, (0, 0, 0), "floating")}
+    }}
+    restraints
+    {{
+        mooring
+        {{
+            type fmuConnector;
+            body hull;
+            fmu "{fmu}";
+            {extra}
+            parameters {{ {PARAMETERS} }}
+        }}
+    }}
+"""
+
+
+def sixdof_bodies(fmu, extra):
+    restraint = f"""            mooring
+            {{
+                sixDoFRigidBodyMotionRestraint fmuConnector;
+                fmu "{fmu}";
+                body hull;
+                {extra}
+                parameters {{ {PARAMETERS} }}
+            }}
+"""
+    return {"hull": sixdof_body(2.0, 0.1, (0, 0, 0), restraints=restraint)}
+
+
+def main():
+    spring = fmu_path("linearSpring")
+    with open(spring, "rb") as f:
+        actual = hashlib.sha256(f.read()).hexdigest()
+    wrong = hashlib.sha256(b"another file").hexdigest()
+
+    refused = {
+        "unknown isolation": ("isolation thread;", ["isolation", "thread", "none", "process"]),
+        "negative timeout": ("timeout -1;", ["restraint mooring: entry timeout is -1", ">= 0"]),
+        "sha256 unquoted": (f"sha256 {actual.replace(actual[0], '7', 1)};",
+                            ["restraint mooring: entry sha256 must be the 64 hexadecimal digits",
+                             "double quotes"]),
+        "sha256 too short": ('sha256 "abc123";', ["restraint mooring: entry sha256", "64 hexadecimal digits"]),
+        "sha256 of another file": (f'sha256 "{wrong}";',
+                                   ["restraint mooring", spring, f"has SHA-256 {actual}",
+                                    f"sha256 expects {wrong}", "native code"]),
+    }
+    failures, count = 0, 0
+    for name, (extra, expected) in refused.items():
+        for kind in ("rigidBody", "sixDoF"):
+            if kind == "sixDoF" and name not in ("unknown isolation", "sha256 of another file"):
+                continue
+            case = (Case("runSettings", model(spring, extra), 0.1, 0.01) if kind == "rigidBody"
+                    else SixDoFCase("runSettings", sixdof_bodies(spring, extra), 0.1, 0.01))
+            log = case.run(expect_failure=True)
+            missing = [e for e in expected if e not in log]
+            count += 1
+            failures += 1 if missing else 0
+            print(f"{'FAIL' if missing else 'PASS'} {kind}, {name}: "
+                  + (f"message lacks {missing}\n{log[-1500:]}" if missing else "refused"))
+            case.cleanup()
+
+    outputs = {}
+    for name, extra in (("none", f'isolation none; sha256 "{actual.upper()}";'),
+                        ("process", f'isolation process; timeout 10; sha256 "{actual}";')):
+        case = Case("runSettings", model(spring, extra), 0.5, 0.01)
+        case.run(n_iter=3)
+        outputs[name] = (case.connector("mooring"), case.bodies())
+        case.cleanup()
+        case = SixDoFCase("runSettings", sixdof_bodies(spring, extra), 0.5, 0.01)
+        case.run(n_iter=3)
+        outputs[name + " sixDoF"] = (case.bodies(),)
+        case.cleanup()
+    for kind in ("", " sixDoF"):
+        same = outputs["none" + kind] == outputs["process" + kind] and len(outputs["none" + kind][0]["Time"]) >= 50
+        count += 1
+        failures += 0 if same else 1
+        print(f"{'PASS' if same else 'FAIL'}{kind or ' rigidBody'}: the file's sha256 runs; isolation process and "
+              "none give the same outputs bit for bit (3 solves per step)")
+
+    print(f"{count - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
