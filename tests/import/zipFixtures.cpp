@@ -191,8 +191,14 @@ void addZeroEntry(const std::string& path, const std::string& name,
     }
 }
 
-void patchDeclaredSize(const std::string& path, const std::string& name,
-                       std::uint32_t size)
+namespace {
+
+// Calls patch(bytes, header, central) for the local header and the central
+// directory entry of the entry name in the archive at path (header: the
+// offset of the header, central: whether it is the directory's), then
+// writes the bytes back; both must be found.
+template <class Patch>
+void patchHeaders(const std::string& path, const std::string& name, Patch patch)
 {
     std::string bytes;
     {
@@ -204,17 +210,12 @@ void patchDeclaredSize(const std::string& path, const std::string& name,
     int patched = 0;
     for (std::size_t at = 0; at + 46 <= bytes.size(); ++at) {
         const std::uint32_t signature = readLe32(bytes, at);
-        if (signature == 0x04034b50u
-            && bytes.compare(at + 30, name.size(), name) == 0) // local header
-        {
-            writeLe32(bytes, at + 22, size);
-            ++patched;
-        }
-        if (signature == 0x02014b50u
-            && bytes.compare(at + 46, name.size(), name)
-                == 0) // central directory
-        {
-            writeLe32(bytes, at + 24, size);
+        const bool local = signature == 0x04034b50u
+            && bytes.compare(at + 30, name.size(), name) == 0;
+        const bool central = signature == 0x02014b50u
+            && bytes.compare(at + 46, name.size(), name) == 0;
+        if (local || central) {
+            patch(bytes, at, central);
             ++patched;
         }
     }
@@ -224,34 +225,27 @@ void patchDeclaredSize(const std::string& path, const std::string& name,
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
+} // namespace
+
+void patchDeclaredSize(const std::string& path, const std::string& name,
+                       std::uint32_t size)
+{
+    patchHeaders(path, name,
+                 [size](std::string& bytes, std::size_t at, bool central) {
+                     writeLe32(bytes, at + (central ? 24 : 22), size);
+                 });
+}
+
 void renameEntry(const std::string& path, const std::string& from,
                  const std::string& to)
 {
     if (from.size() != to.size())
         throw std::runtime_error("renameEntry: '" + from + "' and '" + to
                                  + "' differ in length");
-    std::string bytes;
-    {
-        std::ifstream in(path, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        bytes = s.str();
-    }
-    int patched = 0;
-    for (std::size_t at = 0; at + 46 <= bytes.size(); ++at) {
-        const std::uint32_t signature = readLe32(bytes, at);
-        const std::size_t name = signature == 0x04034b50u ? at + 30 // local
-            : signature == 0x02014b50u                    ? at + 46 // central
-                                                          : 0;
-        if (name && bytes.compare(name, from.size(), from) == 0) {
-            bytes.replace(name, to.size(), to);
-            ++patched;
-        }
-    }
-    if (patched != 2)
-        throw std::runtime_error("cannot find both headers of " + from + " in "
-                                 + path);
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    patchHeaders(path, from,
+                 [&to](std::string& bytes, std::size_t at, bool central) {
+                     bytes.replace(at + (central ? 46 : 30), to.size(), to);
+                 });
 }
 
 ScopedEnv::ScopedEnv(const std::string& name, const std::string& value)

@@ -58,6 +58,30 @@ bool marked(std::uint64_t count)
     return count % 2 == 1;
 }
 
+// The call in progress: its function, time and site, or false when no
+// call is marked. Async-signal-safe.
+struct MarkedCallText {
+    const CallSite* site = nullptr;
+    const char* function = nullptr;
+    double time = 0;
+
+    bool read() noexcept
+    {
+        const std::uint64_t count
+            = current.count.load(std::memory_order_acquire);
+        site = current.site.load(std::memory_order_relaxed);
+        function = current.function.load(std::memory_order_relaxed);
+        time = current.time.load(std::memory_order_relaxed);
+        return marked(count) && site && function;
+    }
+
+    // "fmi2DoStep at t = 0.75 in FMU 'x.fmu', instance 'x'"
+    void describe(SignalSafeText& text) const noexcept
+    {
+        describeCall(text, function, time, site->text.c_str());
+    }
+};
+
 // Flushes standard output if no other thread holds it (the FMU may hang in
 // printf): the host's log before the report. Not async-signal-safe: for
 // the watchdog thread and the exit hook only.
@@ -130,15 +154,13 @@ void watch()
 // standard output is flushed here, since _exit skips the rest.
 extern "C" void onExit(int status, void*)
 {
-    const std::uint64_t count = current.count.load(std::memory_order_acquire);
-    const CallSite* site = current.site.load(std::memory_order_relaxed);
-    const char* function = current.function.load(std::memory_order_relaxed);
-    if (!marked(count) || !site || !function)
+    MarkedCallText call;
+    if (!call.read())
         return;
     SignalSafeText text;
     text << words.prefix << "the FMU exited (status " << long(status)
          << ") in ";
-    describeCall(text, function, current.time.load(), site->text.c_str());
+    call.describe(text);
     text << "\n";
     std::cout.flush();
     std::cerr.flush();
@@ -218,17 +240,14 @@ void watchCalls(double timeout)
 
 void reportCrash(int signal) noexcept
 {
-    const std::uint64_t count = current.count.load(std::memory_order_acquire);
-    const CallSite* site = current.site.load(std::memory_order_relaxed);
-    const char* function = current.function.load(std::memory_order_relaxed);
-    if (!marked(count) || !site || !function)
+    MarkedCallText call;
+    if (!call.read())
         return;
     SignalSafeText text;
     text << words.prefix << "the FMU crashed (";
     describeSignal(text, signal);
     text << ") in ";
-    describeCall(text, function, current.time.load(std::memory_order_relaxed),
-                 site->text.c_str());
+    call.describe(text);
     text << "\n";
     text.writeToStderr();
 }
