@@ -232,19 +232,38 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
     );
     if (caseFile.size())
     {
-        IFstream is(caseFile);
-        const dictionary caseDict(is);
-        const dictionary* caseRestraint =
-            samePlace(*topDict, sDoFRBMRDict, caseDict);
-        if (caseRestraint)
+        // Read as a field file is read (its header sets the format: binary
+        // lists); a file that does not read is not compared
+        const bool throwing = FatalError.throwExceptions();
+        const bool ioThrowing = FatalIOError.throwExceptions();
+        try
         {
-            connector_->compareWithCase
+            IFstream is(caseFile);
+            IOobject header(caseFile.name(), runTime.timeName(), runTime);
+            const dictionary caseDict
             (
-                *caseRestraint,
-                caseFile,
-                top->objectPath()
+                header.readHeader(is) ? dictionary(is) : dictionary()
             );
+            const dictionary* caseRestraint =
+                samePlace(*topDict, sDoFRBMRDict, caseDict);
+            if (caseRestraint)
+            {
+                connector_->compareWithCase
+                (
+                    *caseRestraint,
+                    caseFile,
+                    top->objectPath()
+                );
+            }
         }
+        catch (const Foam::error& err)
+        {
+            Info<< "Restraint " << name_ << ": " << caseFile << " does not"
+                << " read, so it is not compared with the copy the run"
+                << " restarts from: " << err.message().c_str() << endl;
+        }
+        FatalError.throwExceptions(throwing);
+        FatalIOError.throwExceptions(ioThrowing);
     }
 }
 
