@@ -30,7 +30,7 @@ set -u -o pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd -P)
 testName=compileV2312
 [ "$#" -eq 1 ] || { echo "Usage: $0 BUILD_DIR" 1>&2; exit 2; }
-work="$1/openfoam-v2312"
+work="$(realpath -m "$1")/openfoam-v2312"
 start=$SECONDS
 
 fail()
