@@ -1,7 +1,7 @@
 """Harmonic analysis of periodic records (wave gauges, body motion, line
 tensions): least-squares fits of a mean and harmonics of a known frequency
 (numpy.linalg.lstsq), the period from up-crossings, and the incident and
-reflected waves from two gauges.
+reflected waves from two or more gauges.
 
 Convention: a harmonic n of complex amplitude Z_n = a_n - i b_n is
 a_n cos(n omega t) + b_n sin(n omega t) = Re(Z_n exp(i n omega t)).
@@ -103,3 +103,18 @@ def incident_reflected(z1, z2, x1, x2, k):
     zi = (z1 * cmath.exp(1j * k * x2) - z2 * cmath.exp(1j * k * x1)) / d
     zr = (z2 * cmath.exp(-1j * k * x1) - z1 * cmath.exp(-1j * k * x2)) / d
     return zi, zr
+
+
+def separate_waves(z, x, k):
+    """Complex amplitudes at x = 0 of the incident wave Z_I exp(-i k x) and
+    the reflected wave Z_R exp(i k x) from the complex amplitudes z_j of
+    their sum at two or more gauges x_j: the least-squares solution
+    (Mansard and Funke 1980; with two gauges, Goda and Suzuki's exact one).
+    Spacings near a multiple of half a wavelength leave it ill-posed."""
+    if len(z) != len(x) or len(z) < 2:
+        raise ValueError("separate_waves: %d amplitudes at %d gauges (two or more)"
+                         % (len(z), len(x)))
+    xs = np.asarray(x, dtype=float)
+    a = np.column_stack([np.exp(-1j * k * xs), np.exp(1j * k * xs)])
+    c = np.linalg.lstsq(a, np.asarray(z, dtype=complex), rcond=None)[0]
+    return complex(c[0]), complex(c[1])
