@@ -6,7 +6,8 @@
 #  - run again on the extract (-no-plot, into a scratch file), it reproduces
 #    the committed experiment/measured.dat: the same header, rows and
 #    columns, every value within 1e-9 relative (the same arithmetic on the
-#    same data);
+#    same data), and the committed measured series (experiment/series)
+#    byte for byte;
 #  - extractData on a clone-like tree (plain CSV files with more columns, as
 #    the data repository has them, made from the extract of two cases)
 #    writes an extract whose files decompress to those columns verbatim, and
@@ -30,6 +31,19 @@ makeWorkDir
     > "$workDir/log.experimentRao" 2>&1 \
     || { cat "$workDir/log.experimentRao" 1>&2; fail "experimentRao failed"; }
 pass "experimentRao ran on $data"
+
+# The measured series of every scenario B run (experiment/series, the
+# overlays' data): the same files, byte for byte (the same arithmetic)
+nSeries=0
+for f in "$tutorial"/experiment/series/*.dat
+do
+    cmp -s "$f" "$workDir/series/$(basename "$f")" \
+        || fail "experimentRao: series/$(basename "$f") differs from the committed $f"
+    nSeries=$((nSeries + 1))
+done
+[ "$nSeries" -eq "$(ls "$workDir"/series/*.dat | wc -l)" ] && [ "$nSeries" -eq 13 ] \
+    || fail "experimentRao: $nSeries committed series, $(ls "$workDir"/series/*.dat | wc -l) written (13 runs expected)"
+pass "experimentRao: the 13 runs' measured series as committed"
 
 # A clone-like tree of two cases (PP 6 H 1 and PP 14 H 2): the extract's
 # columns decompressed, with a column of the data repository's files that
