@@ -38,6 +38,7 @@ from foamfmi import dictionary, harmonics, plots, postprocessing, waves
 STILL_WATER_DEPTH = 1.0  # m, system/setFieldsDict
 SECTION_X = 0.0  # m, the section's centre (system/blockMeshDict)
 DEFAULT_PERIODS = 6  # window of a wave the experiment did not measure
+EXPERIMENT_GENERATOR = 7.0  # m, the experiment's wavemaker before the section
 SAMPLES_PER_PERIOD = 32
 SPRINGS = {"tensionWeather": "springWeather", "tensionLee": "springLee"}
 # Gauges: their key in constant/runSettings by their name in series.dat
@@ -257,16 +258,20 @@ def experiment_case(cases, period, height):
 
 def window(run, experiment):
     """The window: the experiment's for this wave, the same time after the
-    generator's start (both 7 m before the section) over the same whole
+    generator's start (both 7 m before the section; in a flume of
+    another length moved by the waves' travel time at the linear group
+    velocity over the difference) over the same whole
     periods; without one, from the end of the ramp at the section (the
     front's travel at the linear group velocity from the generator, plus
     the ramp) over DEFAULT_PERIODS periods."""
     T = run["period"]
+    cg = waves.group_velocity_of_period(T, STILL_WATER_DEPTH)
     if experiment and "windowDelay" in experiment:
-        t0 = experiment["windowDelay"]
+        # In another flume than the experiment's, moved by the travel time
+        # of the difference
+        t0 = experiment["windowDelay"] + (SECTION_X - run["xIn"] - EXPERIMENT_GENERATOR) / cg
     else:
-        t0 = ((SECTION_X - run["xIn"]) / waves.group_velocity_of_period(T, STILL_WATER_DEPTH)
-              + run["rampTime"])
+        t0 = (SECTION_X - run["xIn"]) / cg + run["rampTime"]
     n = int(round(experiment["windowPeriods"])) if experiment else DEFAULT_PERIODS
     return t0, t0 + n * T, n
 
