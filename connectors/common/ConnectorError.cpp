@@ -19,6 +19,12 @@ std::string formatValue(double value)
     return buffer;
 }
 
+std::string formatVector(const Vector3& value)
+{
+    return "(" + formatValue(value[0]) + ", " + formatValue(value[1]) + ", "
+        + formatValue(value[2]) + ")";
+}
+
 ParameterError::ParameterError(const std::string& law, const std::string& name,
                                double value, const std::string& unit,
                                const std::string& allowed)
@@ -40,6 +46,14 @@ void requireNonNegative(const char* law, const char* name, double value,
 {
     if (!(std::isfinite(value) && value >= 0.0)) {
         throw ParameterError(law, name, value, unit, "finite and >= 0");
+    }
+}
+
+void requirePositive(const char* law, const char* name, double value,
+                     const char* unit)
+{
+    if (!(std::isfinite(value) && value > 0.0)) {
+        throw ParameterError(law, name, value, unit, "finite and > 0");
     }
 }
 

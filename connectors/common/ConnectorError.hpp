@@ -23,6 +23,9 @@ public:
     ParameterError(const std::string& law, const std::string& name,
                    double value, const std::string& unit,
                    const std::string& allowed);
+    //- A message of another form; it names the parameter as
+    //  "parameter <name>" all the same (the bridge finds the entry by it)
+    using ConnectorError::ConnectorError;
 };
 
 //- A non-finite input
@@ -40,12 +43,19 @@ public:
 //- Shortest printable form of a double that reads back exactly ("-1", "0.5")
 std::string formatValue(double value);
 
+//- A vector as "(x, y, z)", each component as formatValue
+std::string formatVector(const Vector3& value);
+
 // The checks below build no string unless they throw: they run on every
 // evaluation.
 
 //- Throws ParameterError unless value is finite and >= 0
 void requireNonNegative(const char* law, const char* name, double value,
                         const char* unit);
+
+//- Throws ParameterError unless value is finite and > 0
+void requirePositive(const char* law, const char* name, double value,
+                     const char* unit);
 
 //- Throws ParameterError naming "<name>[i]" unless every component is finite
 void requireFinite(const char* law, const char* name, const Vector3& value,

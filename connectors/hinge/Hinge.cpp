@@ -19,12 +19,6 @@ constexpr double minimumAxisNorm = 1e-12;
 //- A reference direction within this sine of its axis counts as parallel
 constexpr double minimumReferenceSine = 1e-6;
 
-std::string formatVector(const Vector3& v)
-{
-    return "(" + formatValue(v[0]) + ", " + formatValue(v[1]) + ", "
-        + formatValue(v[2]) + ")";
-}
-
 Vector3 unitAxis(const char* name, const Vector3& axis)
 {
     requireFinite(lawName, name, axis, "1");
