@@ -377,11 +377,13 @@ void ChildInstance::lose(bool timedOut)
             call = &s;
     if (timedOut && !call && !sent_.empty())
         call = &sent_.back();
-    const char* function = call ? protocol::functionOf(call->op) : "a call";
+    const int version = fmu->description.fmiMajorVersion;
+    const char* function
+        = call ? protocol::functionOf(call->op, version) : "a call";
     double t = call ? call->time : noTime;
     if (call && call->op == Op::doStep && page_->reading.load()) {
         // the read of the outputs after the step
-        function = "fmi2GetReal";
+        function = version == 3 ? "fmi3GetFloat64" : "fmi2GetReal";
         t = call->endTime;
     }
 

@@ -65,8 +65,8 @@ std::vector<std::string> componentNames(const std::string& base, Shape shape)
 const char* causalityName(Causality c)
 {
     static const char* const names[]
-        = {"parameter", "calculatedParameter", "input", "output",
-           "local",     "independent"};
+        = {"parameter",   "calculatedParameter", "input", "output", "local",
+           "independent", "structuralParameter"};
     return names[static_cast<int>(c)];
 }
 
@@ -77,8 +77,62 @@ const char* variabilityName(Variability v)
     return names[static_cast<int>(v)];
 }
 
+namespace {
+
+std::string dimensionsText(const std::vector<std::size_t>& dimensions)
+{
+    std::string text = "[";
+    for (std::size_t d = 0; d < dimensions.size(); ++d)
+        text += (d ? ", " : "") + std::to_string(dimensions[d]);
+    return text + "]";
+}
+
+const char* shapeText(Shape shape)
+{
+    return shape == Shape::scalar ? "a scalar"
+        : shape == Shape::vector  ? "an array of dimensions [3]"
+                                  : "an array of dimensions [3, 3] (row-major)";
+}
+
+// FMI 3.0: how a term's variable departs from the term's shape (A.r a
+// Float64 array of dimensions [3], A.R [3, 3], A.m a scalar), or empty.
+std::string shapeProblem(const Fmu& fmu, const Term& term)
+{
+    const std::vector<std::size_t> expected = term.shape == Shape::scalar
+        ? std::vector<std::size_t>()
+        : term.shape == Shape::vector ? std::vector<std::size_t> {3}
+                                      : std::vector<std::size_t> {3, 3};
+    const char* what = shapeText(term.shape);
+    const std::vector<std::size_t>* declared = nullptr;
+    const Variable* found = nullptr;
+    for (const Variable& v : fmu.modelDescription().variables) {
+        if (v.arrayName == term.base) {
+            declared = &v.dimensions;
+            found = &v;
+            break;
+        }
+        if (v.name == term.base && v.arrayName.empty()) {
+            found = &v;
+            break;
+        }
+    }
+    if (!found)
+        return std::string();
+    const std::vector<std::size_t> none;
+    const std::vector<std::size_t>& has = declared ? *declared : none;
+    if (has == expected)
+        return std::string();
+    return term.base + " is "
+        + (declared ? "an array of dimensions " + dimensionsText(has)
+                    : std::string("a scalar"))
+        + ", expected " + what;
+}
+
+} // namespace
+
 Variables::Variables(const Fmu& fmu) : twoBody_(false)
 {
+    const bool v3 = fmu.modelDescription().fmiMajorVersion == 3;
     for (const Variable& v : fmu.modelDescription().variables)
         if (v.causality == Causality::input && v.name.compare(0, 2, "B.") == 0)
             twoBody_ = true;
@@ -99,16 +153,32 @@ Variables::Variables(const Fmu& fmu) : twoBody_(false)
         refs_.push_back(refs);
 
         const bool isRequired = required(term);
+        auto problem = [&](Problem::Kind kind, const std::string& name,
+                           const std::string& text) {
+            problems_.push_back({kind, isRequired, &term, name, text});
+        };
+        if (v3) {
+            // One FMI 3.0 variable per term: its dimensions first
+            const std::string wrongShape = shapeProblem(fmu, term);
+            if (!wrongShape.empty()) {
+                refs_.back().clear();
+                problem(Problem::Kind::dimensions, term.base, wrongShape);
+                continue;
+            }
+        }
         const bool anyDeclared = std::any_of(
             names.begin(), names.end(),
             [&](const std::string& n) { return fmu.hasVariable(n); });
         if (!anyDeclared && !isRequired)
             continue;
+        if (v3 && !anyDeclared) {
+            problem(Problem::Kind::missing, term.base,
+                    "missing " + term.base + ": expected an "
+                        + causalityName(term.causality) + " Float64 "
+                        + term.base + ", " + shapeText(term.shape));
+            continue;
+        }
 
-        auto problem = [&](Problem::Kind kind, const std::string& name,
-                           const std::string& text) {
-            problems_.push_back({kind, isRequired, &term, name, text});
-        };
         for (const std::string& name : names) {
             if (!fmu.hasVariable(name)) {
                 problem(Problem::Kind::missing, name,
@@ -122,6 +192,9 @@ Variables::Variables(const Fmu& fmu) : twoBody_(false)
             const Variable& v = fmu.variable(name);
             if (v.type != Type::Real)
                 problem(Problem::Kind::type, name, name + " is not Real");
+            else if (v3 && v.typeName != "Float64")
+                problem(Problem::Kind::type, name,
+                        name + " is " + v.typeName + ", expected Float64");
             if (v.causality != term.causality)
                 problem(Problem::Kind::causality, name,
                         name + " has causality " + causalityName(v.causality)

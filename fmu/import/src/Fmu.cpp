@@ -92,10 +92,8 @@ Fmu::Impl::Impl(const std::string& fmuPath) : path(fmuPath)
         throw Error("FMU '" + fmuPath + "' has no modelDescription.xml");
     const std::string xml = archive.read(xmlName);
     description = readModelDescription(xml, fmuPath);
-    for (std::size_t i = 0; i < description.variables.size(); ++i)
-        index.emplace(description.variables[i].name, i);
-    const std::string binary
-        = "binaries/linux64/" + description.modelIdentifier + ".so";
+    indexVariables();
+    const std::string binary = binaryEntry(description);
     if (!archive.has(binary))
         throw Error("FMU '" + fmuPath + "' has no binary " + binary);
 
@@ -119,10 +117,21 @@ Fmu Fmu::Impl::openUnpacked(const std::string& directory,
                     + "': cannot read modelDescription.xml in '" + directory
                     + "'");
     impl->description = readModelDescription(xml.str(), fmuPath);
-    for (std::size_t i = 0; i < impl->description.variables.size(); ++i)
-        impl->index.emplace(impl->description.variables[i].name, i);
+    impl->indexVariables();
     impl->loadLibrary();
     return Fmu(impl, fmuPath);
+}
+
+void Fmu::Impl::indexVariables()
+{
+    for (std::size_t i = 0; i < description.variables.size(); ++i) {
+        index.emplace(description.variables[i].name, i);
+        if (description.fmiMajorVersion != 3)
+            continue;
+        const Variable& v = description.variables[i];
+        byReference.emplace(v.valueReference, i);
+        elementsOf[v.arrayValueReference].push_back(i);
+    }
 }
 
 void Fmu::Impl::loadLibrary()
@@ -130,10 +139,8 @@ void Fmu::Impl::loadLibrary()
     const std::lock_guard<std::mutex> lock(libraryMutex_);
     if (!library_)
         library_ = std::make_unique<Library>(
-            (root / "binaries" / "linux64"
-             / (description.modelIdentifier + ".so"))
-                .string(),
-            path);
+            (root / binaryEntry(description)).string(), path,
+            description.fmiMajorVersion);
 }
 
 std::string Fmu::Impl::resourceLocation() const

@@ -18,6 +18,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <unordered_map>
 
 namespace fmuImport {
 
@@ -28,9 +29,18 @@ struct Fmu::Impl {
     ModelDescription description;
     std::map<std::string, std::size_t>
         index; // variable name -> position in description.variables
+    // FMI 3.0: value reference (the importer's, one per element) ->
+    // position in description.variables
+    std::unordered_map<unsigned int, std::size_t> byReference;
+    // FMI 3.0: an array's value reference -> its elements' positions in
+    // description.variables, in element order
+    std::unordered_map<unsigned int, std::vector<std::size_t>> elementsOf;
     std::atomic<int> liveInstances {0}; // of every Fmu sharing this Impl
 
     explicit Impl(const std::string& fmuPath);
+
+    // Fills index and byReference from description
+    void indexVariables();
 
     // The FMU another process unpacked in directory (an FMU's child
     // process): its description read from there, its binary loaded;

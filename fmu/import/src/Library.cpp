@@ -7,7 +7,8 @@
 
 namespace fmuImport {
 
-Library::Library(const std::string& file, const std::string& fmuPath)
+Library::Library(const std::string& file, const std::string& fmuPath,
+                 int fmiMajorVersion)
 {
     handle_ = callFmu(dlopen, file.c_str(),
                       RTLD_LOCAL | RTLD_NOW); // runs the FMU's constructors
@@ -17,12 +18,20 @@ Library::Library(const std::string& file, const std::string& fmuPath)
                     + "': cannot load its binary: " + (reason ? reason : file));
     }
     std::string missing;
-#define FMUIMPORT_RESOLVE(name)                                                \
-    api_.name                                                                  \
-        = reinterpret_cast<fmi2##name##TYPE*>(dlsym(handle_, "fmi2" #name));   \
-    if (!api_.name)                                                            \
-        missing += std::string(missing.empty() ? "" : ", ") + "fmi2" #name;
-    FMUIMPORT_FMI2_FUNCTIONS(FMUIMPORT_RESOLVE)
+#define FMUIMPORT_RESOLVE(api, v, name)                                        \
+    api.name = reinterpret_cast<fmi##v##name##TYPE*>(                          \
+        dlsym(handle_, "fmi" #v #name));                                       \
+    if (!api.name)                                                             \
+        missing += std::string(missing.empty() ? "" : ", ") + "fmi" #v #name;
+#define FMUIMPORT_RESOLVE2(name) FMUIMPORT_RESOLVE(api_, 2, name)
+#define FMUIMPORT_RESOLVE3(name) FMUIMPORT_RESOLVE(api3_, 3, name)
+    if (fmiMajorVersion == 3) {
+        FMUIMPORT_FMI3_FUNCTIONS(FMUIMPORT_RESOLVE3)
+    } else {
+        FMUIMPORT_FMI2_FUNCTIONS(FMUIMPORT_RESOLVE2)
+    }
+#undef FMUIMPORT_RESOLVE3
+#undef FMUIMPORT_RESOLVE2
 #undef FMUIMPORT_RESOLVE
     if (!missing.empty()) {
         callFmu(dlclose, handle_);

@@ -13,11 +13,15 @@ namespace fmuImport {
 
 namespace {
 
-const char* statusName(int status)
+const char* statusName(int status, bool v3 = false)
 {
     static const char* const names[]
         = {"fmi2OK",    "fmi2Warning", "fmi2Discard",
            "fmi2Error", "fmi2Fatal",   "fmi2Pending"};
+    static const char* const names3[]
+        = {"fmi3OK", "fmi3Warning", "fmi3Discard", "fmi3Error", "fmi3Fatal"};
+    if (v3)
+        return status >= 0 && status <= 4 ? names3[status] : "unknown status";
     return status >= 0 && status <= 5 ? names[status] : "unknown status";
 }
 
@@ -65,6 +69,7 @@ LocalInstance::LocalInstance(std::shared_ptr<Fmu::Impl> fmuImpl,
                              const std::string& instanceName, Logger log,
                              bool loggingOn, const FmuOptions& options)
     : Impl(std::move(fmuImpl), path, instanceName),
+      v3_(fmu->description.fmiMajorVersion == 3),
       logger_(std::move(log)), site_ {
                                    siteText(path, instanceName, options.owner),
                                    options.timeout}
@@ -81,6 +86,10 @@ LocalInstance::LocalInstance(std::shared_ptr<Fmu::Impl> fmuImpl,
     } catch (...) {
         --fmu->liveInstances; // no destructor runs
         throw;
+    }
+    if (v3_) {
+        instantiate3(loggingOn);
+        return;
     }
     const std::string resources = fmu->resourceLocation();
     component_ = call("fmi2Instantiate", noTime, api().Instantiate,
@@ -99,7 +108,9 @@ LocalInstance::LocalInstance(std::shared_ptr<Fmu::Impl> fmuImpl,
 
 LocalInstance::~LocalInstance()
 {
-    if (component_)
+    if (component_ && v3_)
+        call("fmi3FreeInstance", time, api3().FreeInstance, component_);
+    else if (component_)
         call("fmi2FreeInstance", time, api().FreeInstance, component_);
     if (admitted_)
         --fmu->liveInstances;
@@ -152,12 +163,13 @@ void LocalInstance::check(fmi2Status status, const char* function, double t)
     }
     if (status == fmi2Warning) {
         receive(name, fmi2Warning, "logStatusWarning",
-                std::string(function) + " returned fmi2Warning" + detail);
+                std::string(function) + " returned "
+                    + statusName(fmi2Warning, v3_) + detail);
         return;
     }
     std::string message = std::string(function) + " failed" + detail
         + " in FMU '" + fmuPath + "', instance '" + name + "' ("
-        + statusName(status) + ")";
+        + statusName(status, v3_) + ")";
     if (!lastError_.empty())
         message += ": " + lastError_;
     throw Error(message);
@@ -166,6 +178,12 @@ void LocalInstance::check(fmi2Status status, const char* function, double t)
 void LocalInstance::setupExperiment(double startTime, bool stopTimeDefined,
                                     double stopTime)
 {
+    if (v3_) {
+        startTime_ = startTime;
+        stopTimeDefined_ = stopTimeDefined;
+        stopTime_ = stopTime;
+        return;
+    }
     check(call("fmi2SetupExperiment", startTime, api().SetupExperiment,
                component_, fmi2False, 0, startTime,
                stopTimeDefined ? fmi2True : fmi2False, stopTime),
@@ -174,6 +192,8 @@ void LocalInstance::setupExperiment(double startTime, bool stopTimeDefined,
 
 void LocalInstance::enterInitializationMode()
 {
+    if (v3_)
+        return enterInitializationMode3();
     check(call("fmi2EnterInitializationMode", time,
                api().EnterInitializationMode, component_),
           "fmi2EnterInitializationMode");
@@ -181,6 +201,10 @@ void LocalInstance::enterInitializationMode()
 
 void LocalInstance::exitInitializationMode()
 {
+    if (v3_)
+        return check(call("fmi3ExitInitializationMode", time,
+                          api3().ExitInitializationMode, component_),
+                     "fmi3ExitInitializationMode");
     check(call("fmi2ExitInitializationMode", time, api().ExitInitializationMode,
                component_),
           "fmi2ExitInitializationMode");
@@ -188,18 +212,26 @@ void LocalInstance::exitInitializationMode()
 
 void LocalInstance::terminate()
 {
+    if (v3_)
+        return check(call("fmi3Terminate", time, api3().Terminate, component_),
+                     "fmi3Terminate", time);
     check(call("fmi2Terminate", time, api().Terminate, component_),
           "fmi2Terminate", time);
 }
 
 void LocalInstance::reset()
 {
+    if (v3_)
+        return check(call("fmi3Reset", time, api3().Reset, component_),
+                     "fmi3Reset");
     check(call("fmi2Reset", time, api().Reset, component_), "fmi2Reset");
 }
 
 void LocalInstance::setReal(const std::vector<unsigned int>& vrs,
                             const std::vector<double>& values)
 {
+    if (v3_)
+        return setReal3(vrs, values);
     check(call("fmi2SetReal", time, api().SetReal, component_, vrs.data(),
                vrs.size(), values.data()),
           "fmi2SetReal", time);
@@ -207,6 +239,8 @@ void LocalInstance::setReal(const std::vector<unsigned int>& vrs,
 
 std::vector<double> LocalInstance::getReal(const std::vector<unsigned int>& vrs)
 {
+    if (v3_)
+        return getReal3(vrs);
     std::vector<double> values(vrs.size());
     check(call("fmi2GetReal", time, api().GetReal, component_, vrs.data(),
                vrs.size(), values.data()),
@@ -217,6 +251,8 @@ std::vector<double> LocalInstance::getReal(const std::vector<unsigned int>& vrs)
 void LocalInstance::setInteger(const std::vector<unsigned int>& vrs,
                                const std::vector<int>& values)
 {
+    if (v3_)
+        return setInteger3(vrs, values);
     check(call("fmi2SetInteger", time, api().SetInteger, component_, vrs.data(),
                vrs.size(), values.data()),
           "fmi2SetInteger", time);
@@ -224,6 +260,8 @@ void LocalInstance::setInteger(const std::vector<unsigned int>& vrs,
 
 std::vector<int> LocalInstance::getInteger(const std::vector<unsigned int>& vrs)
 {
+    if (v3_)
+        return getInteger3(vrs);
     std::vector<int> values(vrs.size());
     check(call("fmi2GetInteger", time, api().GetInteger, component_, vrs.data(),
                vrs.size(), values.data()),
@@ -234,6 +272,8 @@ std::vector<int> LocalInstance::getInteger(const std::vector<unsigned int>& vrs)
 void LocalInstance::setBoolean(const std::vector<unsigned int>& vrs,
                                const std::vector<bool>& values)
 {
+    if (v3_)
+        return setBoolean3(vrs, values);
     const std::vector<fmi2Boolean> raw(values.begin(), values.end());
     check(call("fmi2SetBoolean", time, api().SetBoolean, component_, vrs.data(),
                vrs.size(), raw.data()),
@@ -243,6 +283,8 @@ void LocalInstance::setBoolean(const std::vector<unsigned int>& vrs,
 std::vector<bool>
 LocalInstance::getBoolean(const std::vector<unsigned int>& vrs)
 {
+    if (v3_)
+        return getBoolean3(vrs);
     std::vector<fmi2Boolean> raw(vrs.size());
     check(call("fmi2GetBoolean", time, api().GetBoolean, component_, vrs.data(),
                vrs.size(), raw.data()),
@@ -253,6 +295,8 @@ LocalInstance::getBoolean(const std::vector<unsigned int>& vrs)
 void LocalInstance::setString(const std::vector<unsigned int>& vrs,
                               const std::vector<std::string>& values)
 {
+    if (v3_)
+        return setString3(vrs, values);
     std::vector<fmi2String> raw;
     for (const std::string& s : values)
         raw.push_back(s.c_str());
@@ -264,6 +308,8 @@ void LocalInstance::setString(const std::vector<unsigned int>& vrs,
 std::vector<std::string>
 LocalInstance::getString(const std::vector<unsigned int>& vrs)
 {
+    if (v3_)
+        return getString3(vrs);
     std::vector<fmi2String> raw(vrs.size(), nullptr);
     check(call("fmi2GetString", time, api().GetString, component_, vrs.data(),
                vrs.size(), raw.data()),
@@ -278,6 +324,9 @@ Instance::StepResult
 LocalInstance::doStep(double currentTime, double stepSize,
                       bool noSetFMUStatePriorToCurrentPoint, bool mayDiscard)
 {
+    if (v3_)
+        return doStep3(currentTime, stepSize, noSetFMUStatePriorToCurrentPoint,
+                       mayDiscard);
     const fmi2Status status = call(
         "fmi2DoStep", currentTime, api().DoStep, component_, currentTime,
         stepSize, noSetFMUStatePriorToCurrentPoint ? fmi2True : fmi2False);
@@ -298,6 +347,8 @@ LocalInstance::doStep(double currentTime, double stepSize,
 
 double LocalInstance::lastSuccessfulTime()
 {
+    if (v3_)
+        return lastSuccessfulTime_;
     const std::string reason = lastNotice_;
     fmi2Real t = 0;
     check(call("fmi2GetRealStatus", time, api().GetRealStatus, component_,
@@ -309,6 +360,8 @@ double LocalInstance::lastSuccessfulTime()
 
 void* LocalInstance::getState()
 {
+    if (v3_)
+        return getState3();
     fmi2FMUstate raw = nullptr;
     check(call("fmi2GetFMUstate", time, api().GetFMUstate, component_, &raw),
           "fmi2GetFMUstate", time);
@@ -317,17 +370,23 @@ void* LocalInstance::getState()
 
 void LocalInstance::setState(void* state)
 {
+    if (v3_)
+        return setState3(state);
     check(call("fmi2SetFMUstate", time, api().SetFMUstate, component_, state),
           "fmi2SetFMUstate", time);
 }
 
 void LocalInstance::freeState(void* state) noexcept
 {
+    if (v3_)
+        return freeState3(state);
     call("fmi2FreeFMUstate", time, api().FreeFMUstate, component_, &state);
 }
 
 std::vector<char> LocalInstance::serializeState(void* state)
 {
+    if (v3_)
+        return serializeState3(state);
     std::size_t size = 0;
     check(call("fmi2SerializedFMUstateSize", time, api().SerializedFMUstateSize,
                component_, state, &size),
@@ -341,6 +400,8 @@ std::vector<char> LocalInstance::serializeState(void* state)
 
 void* LocalInstance::deserializeState(const std::vector<char>& bytes)
 {
+    if (v3_)
+        return deserializeState3(bytes);
     fmi2FMUstate raw = nullptr;
     check(call("fmi2DeSerializeFMUstate", time, api().DeSerializeFMUstate,
                component_, bytes.data(), bytes.size(), &raw),

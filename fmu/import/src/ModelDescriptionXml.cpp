@@ -9,7 +9,7 @@
 
 namespace fmuImport {
 
-namespace {
+namespace xml {
 
 std::string fmuName(const std::string& fmuPath)
 {
@@ -42,6 +42,8 @@ Causality parseCausality(const std::string& s, const std::string& where)
         return Causality::output;
     if (s == "independent")
         return Causality::independent;
+    if (s == "structuralParameter")
+        return Causality::structuralParameter;
     throw Error(where + ": unknown causality '" + s + "'");
 }
 
@@ -77,6 +79,12 @@ double parseNumber(const std::string& s, Type type, const std::string& where)
         throw Error(where + ": start value '" + s + "' is not a number");
     return value;
 }
+
+} // namespace xml
+
+namespace {
+
+using namespace xml;
 
 Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
 {
@@ -123,9 +131,38 @@ Variable readVariable(const pugi::xml_node& node, const std::string& fmu)
 
 } // namespace
 
+namespace xml {
+
+std::string modelIdentifier(const pugi::xml_node& cs, const std::string& fmu)
+{
+    const std::string id = cs.attribute("modelIdentifier").as_string();
+    if (id.empty())
+        throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
+    // It names the binary, binaries/<platform>/<modelIdentifier>.so: a C
+    // identifier, as FMI requires, cannot reach outside that folder.
+    if (!isCIdentifier(id))
+        throw Error(
+            fmu + ": modelIdentifier '" + id
+            + "' is not a C identifier (letters, digits and '_', not starting with a digit)");
+    return id;
+}
+
+void readDefaultExperiment(const pugi::xml_node& root, ModelDescription& md)
+{
+    if (const pugi::xml_node de = root.child("DefaultExperiment")) {
+        md.hasDefaultExperiment = true;
+        md.startTime = de.attribute("startTime").as_double(0);
+        md.stopTime = de.attribute("stopTime").as_double(0);
+        md.stepSize = de.attribute("stepSize").as_double(0);
+    }
+}
+
+} // namespace xml
+
 ModelDescription readModelDescription(const std::string& xml,
                                       const std::string& fmuPath)
 {
+    using namespace xml;
     const std::string fmu = fmuName(fmuPath);
     pugi::xml_document doc;
     const pugi::xml_parse_result parsed
@@ -142,9 +179,12 @@ ModelDescription readModelDescription(const std::string& xml,
 
     ModelDescription md;
     md.fmiVersion = root.attribute("fmiVersion").as_string();
+    if (md.fmiVersion == "3.0")
+        return readFmi3Description(root, fmuPath);
     if (md.fmiVersion != "2.0")
-        throw Error(fmu + ": fmiVersion is '" + md.fmiVersion
-                    + "', only FMI 2.0 (\"2.0\") is supported");
+        throw Error(
+            fmu + ": fmiVersion is '" + md.fmiVersion
+            + "', only FMI 2.0 (\"2.0\") and FMI 3.0 (\"3.0\") are supported");
     md.modelName = root.attribute("modelName").as_string();
     md.guid = root.attribute("guid").as_string();
     md.description = root.attribute("description").as_string();
@@ -155,15 +195,7 @@ ModelDescription readModelDescription(const std::string& xml,
         throw Error(
             fmu
             + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
-    md.modelIdentifier = cs.attribute("modelIdentifier").as_string();
-    if (md.modelIdentifier.empty())
-        throw Error(fmu + ": <CoSimulation> has no modelIdentifier");
-    // It names the binary, binaries/linux64/<modelIdentifier>.so: a C
-    // identifier, as FMI 2.0 requires, cannot reach outside that folder.
-    if (!isCIdentifier(md.modelIdentifier))
-        throw Error(
-            fmu + ": modelIdentifier '" + md.modelIdentifier
-            + "' is not a C identifier (letters, digits and '_', not starting with a digit)");
+    md.modelIdentifier = modelIdentifier(cs, fmu);
     md.canHandleVariableCommunicationStepSize
         = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
     md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
@@ -173,12 +205,7 @@ ModelDescription readModelDescription(const std::string& xml,
     md.canBeInstantiatedOnlyOncePerProcess
         = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
 
-    if (const pugi::xml_node de = root.child("DefaultExperiment")) {
-        md.hasDefaultExperiment = true;
-        md.startTime = de.attribute("startTime").as_double(0);
-        md.stopTime = de.attribute("stopTime").as_double(0);
-        md.stepSize = de.attribute("stepSize").as_double(0);
-    }
+    readDefaultExperiment(root, md);
 
     std::set<std::string> names;
     for (const pugi::xml_node node :
@@ -189,6 +216,13 @@ ModelDescription readModelDescription(const std::string& xml,
         md.variables.push_back(std::move(v));
     }
     return md;
+}
+
+std::string binaryEntry(const ModelDescription& md)
+{
+    return std::string(md.fmiMajorVersion == 3 ? "binaries/x86_64-linux/"
+                                               : "binaries/linux64/")
+        + md.modelIdentifier + ".so";
 }
 
 } // namespace fmuImport

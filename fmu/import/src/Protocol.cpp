@@ -64,6 +64,58 @@ const char* functionOf(Op op)
     return "an fmi2 function";
 }
 
+const char* functionOf(Op op, int fmiMajorVersion)
+{
+    if (fmiMajorVersion != 3)
+        return functionOf(op);
+    switch (op) {
+    case Op::instantiate:
+        return "fmi3InstantiateCoSimulation";
+    case Op::setupExperiment:
+    case Op::enterInitializationMode:
+        return "fmi3EnterInitializationMode";
+    case Op::exitInitializationMode:
+        return "fmi3ExitInitializationMode";
+    case Op::terminate:
+        return "fmi3Terminate";
+    case Op::reset:
+        return "fmi3Reset";
+    case Op::setReal:
+        return "fmi3SetFloat64";
+    case Op::getReal:
+        return "fmi3GetFloat64";
+    case Op::setInteger:
+        return "fmi3SetInt32";
+    case Op::getInteger:
+        return "fmi3GetInt32";
+    case Op::setBoolean:
+        return "fmi3SetBoolean";
+    case Op::getBoolean:
+        return "fmi3GetBoolean";
+    case Op::setString:
+        return "fmi3SetString";
+    case Op::getString:
+        return "fmi3GetString";
+    case Op::doStep:
+    case Op::lastSuccessfulTime:
+        return "fmi3DoStep";
+    case Op::getState:
+        return "fmi3GetFMUState";
+    case Op::setState:
+        return "fmi3SetFMUState";
+    case Op::freeState:
+        return "fmi3FreeFMUState";
+    case Op::serializeState:
+        return "fmi3SerializeFMUState";
+    case Op::deserializeState:
+        return "fmi3DeserializeFMUState";
+    case Op::freeInstance:
+        return "fmi3FreeInstance";
+    default:
+        return functionOf(op);
+    }
+}
+
 bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,
                 int microseconds)
 {

@@ -67,6 +67,8 @@ enum class Op : std::uint8_t {
 
 // The fmi2 function a request calls ("fmi2DoStep"; "dlopen" for load)
 const char* functionOf(Op op);
+// The same for an FMU of FMI fmiMajorVersion: "fmi3DoStep" for 3
+const char* functionOf(Op op, int fmiMajorVersion);
 
 enum class Kind : std::uint8_t { log, reply };
 

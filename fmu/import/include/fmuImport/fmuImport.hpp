@@ -1,4 +1,5 @@
-// fmuImport: load an FMI 2.0 co-simulation FMU and drive its instances.
+// fmuImport: load an FMI 2.0 or FMI 3.0 co-simulation FMU and drive its
+// instances.
 //
 // Public interface, C++11 (it is included by OpenFOAM code built with
 // -std=c++11); the implementation is C++17. Every failure throws
@@ -8,6 +9,7 @@
 #define FMUIMPORT_FMUIMPORT_HPP
 
 #include <cfenv>
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -69,12 +71,33 @@ enum class Causality {
     input,
     output,
     local,
-    independent
+    independent,
+    structuralParameter // FMI 3.0
 };
 enum class Variability { constant, fixed, tunable, discrete, continuous };
 enum class Type { Real, Integer, Boolean, String, Enumeration };
 
-// One <ScalarVariable> of modelDescription.xml.
+// One <ScalarVariable> of an FMI 2.0 modelDescription.xml, or one element
+// of a variable of an FMI 3.0 one.
+//
+// FMI 3.0 (fmiVersion "3.0"): a variable is typed by its element (Float64,
+// Int32, ...) and may be an array (<Dimension>). The importer shows every
+// element of an array as a Variable of its own, named as FMI 2.0 names
+// scalars and FMI 3.0's structured naming names elements: "A.r[1]" for
+// element 1 of the 3-vector A.r, "A.R[1,2]" for row 1, column 2 of the
+// 3 x 3 matrix A.R (row-major, indices from 1); a scalar keeps its name.
+// So an FMU of either version is used through the same names (the
+// connector interface's "A.r[1]"), and getReal of elements gathers them
+// from whole-array fmi3GetFloat64 calls. An element's value reference is
+// the importer's: that of its array plus its position (the connector
+// FMUs' 3.0 arrays take the value reference of their first 2.0 element,
+// so their elements get the 2.0 value references), or, where that number
+// is another variable's, one above every value reference of the FMU.
+// Types: Float64 and Float32 are Real, the integer types Integer (an
+// Int64 or UInt64 value outside int's range is an Error where it is read or
+// set), Enumeration stays Enumeration, Binary is a String of hexadecimal
+// digits ("666f6f"). Clocks are refused (the importer drives
+// co-simulation without event mode).
 struct Variable {
     std::string name;
     unsigned int valueReference = 0;
@@ -87,11 +110,20 @@ struct Variable {
     double start
         = 0; // numeric start (Real, Integer, Enumeration, Boolean as 0/1)
     std::string startString; // start exactly as written in the XML
+    // FMI 3.0 only (empty or 0 for 2.0):
+    std::string typeName; // the element type: "Float64", "Int8", "Binary", ...
+    std::string arrayName; // an element's array, "A.r"; empty for a scalar
+    std::vector<std::size_t> dimensions; // of that array: {3}, {3, 3}
+    std::size_t element = 0; // position in the array, row-major from 0
+    unsigned int arrayValueReference = 0; // the array's, as the FMU has it
 };
 
 struct ModelDescription {
+    // guid: FMI 3.0's instantiationToken
     std::string fmiVersion, modelName, guid, modelIdentifier, description,
         generationTool;
+    int fmiMajorVersion = 2; // 2 or 3
+    bool hasEventMode = false; // FMI 3.0; instances never use it
     bool canHandleVariableCommunicationStepSize = false;
     bool canGetAndSetFMUstate = false;
     bool canSerializeFMUstate = false;
@@ -186,12 +218,15 @@ struct Reports {
 void setReports(const Reports& reports);
 
 // An unpacked and loaded .fmu. Reads and checks modelDescription.xml from
-// the archive (fmiVersion 2.0, <CoSimulation>), then unpacks it, the binary
-// binaries/linux64/<modelIdentifier>.so and everything under resources/
-// (nothing else) into a private temporary directory,
+// the archive (fmiVersion 2.0 or 3.0, <CoSimulation>: an FMI 3.0 FMU for
+// model exchange or scheduled execution only, or with clocks, is refused
+// with an Error that says so), then unpacks it, the binary
+// (binaries/linux64/<modelIdentifier>.so for 2.0,
+// binaries/x86_64-linux/<modelIdentifier>.so for 3.0) and everything under
+// resources/ (nothing else) into a private temporary directory,
 // $TMPDIR/fmuImport-<pid>-XXXXXX, loads the binary and resolves the common
-// and co-simulation fmi2 functions (a co-simulation-only FMU need not
-// export the model-exchange ones).
+// and co-simulation fmi2 (or fmi3) functions (a co-simulation-only FMU need
+// not export the model-exchange ones).
 //
 // Limits: an entry may unpack to at most 256 MiB, all of them together to
 // at most 1 GiB, or to the number of bytes in the environment variable
@@ -245,9 +280,16 @@ private:
     FmuOptions options_;
 };
 
-// One co-simulation fmi2Component, in this process or in a child process
-// (the Fmu's FmuOptions). Every fmi2 call is checked: fmi2Error,
-// fmi2Fatal, fmi2Discard or fmi2Pending throw Error naming the FMU, the
+// One co-simulation fmi2Component (FMI 2.0) or fmi3Instance (FMI 3.0,
+// instantiated with eventModeUsed and earlyReturnAllowed false: the FMU
+// handles its events inside fmi3DoStep), in this process or in a child
+// process (the Fmu's FmuOptions). The functions below are named after FMI
+// 2.0's; for an FMI 3.0 FMU setupExperiment keeps the times for
+// fmi3EnterInitializationMode, getReal and setReal call fmi3GetFloat64 and
+// fmi3SetFloat64 (and Float32) on whole arrays, getInteger and setInteger
+// the fmi3 integer functions, and a step that asks for event handling or
+// returns early throws Error naming it. Every call is checked: fmi2Error,
+// fmi2Fatal, fmi2Discard or fmi2Pending (fmi3Error, ...) throw Error naming the FMU, the
 // instance and the function, with the last error the FMU logged appended;
 // fmi2Warning is reported to the logger and the call goes on. A call that
 // does not come back throws LostCall (Isolation::process) or ends the
@@ -306,7 +348,9 @@ public:
                          bool noSetFMUStatePriorToCurrentPoint = false);
 
     // fmi2GetRealStatus(fmi2LastSuccessfulTime): after a discarded step, the
-    // time up to which the FMU computed
+    // time up to which the FMU computed (FMI 3.0: fmi3DoStep's
+    // lastSuccessfulTime; a step whose terminateSimulation is true with
+    // fmi3OK is terminated too)
     double lastSuccessfulTime();
 
     // The FMU's last log message at fmi2Warning or above during the latest
@@ -392,10 +436,15 @@ struct Problem {
     enum class Kind {
         missing, // a component of a required term, or of an optional term
         // of which other components are declared
-        type, // not Real
+        type, // not Real (FMI 3.0: not Float64)
         causality,
         variability,
-        unit
+        unit,
+        // FMI 3.0: the term's variable has other dimensions than its
+        // shape's ("A.r is an array of dimensions [4], expected an array
+        // of dimensions [3]"); variable is the term's base, and its other
+        // problems are not looked for
+        dimensions
     };
     Kind kind;
     bool required; // a problem of a term the FMU must declare
