@@ -61,11 +61,23 @@ attachment points) at fmi2ExitInitializationMode. SUNDIALS is linked into
 the binary: the FMU needs nothing installed beside it. Details:
 connectors/mooringLine/README.md.</p>)";
 
+//- The value references of the scalar parameters, one member each
+struct ScalarBlocks {
+    Block length, EA, axialDamping, massPerLength, diameter, waterDensity,
+        gravity, normalDrag, tangentialDrag, normalAddedMass,
+        tangentialAddedMass, seabedContact, seabedStiffness, seabedDamping,
+        segments, relativeTolerance, absoluteTolerance, hermiteEnds,
+        integrator, maxStep, freeSurface, waterLevel, seabedFriction,
+        frictionVelocity, endInertia;
+};
+
 struct Scalar {
     const char* name;
     const char* unit;
     const char* description;
     double start;
+    //- Where the model keeps its value reference
+    Block ScalarBlocks::*block;
 };
 
 // Model-scale start values: a 1.5 m line of 0.5 kg/m between two points
@@ -74,68 +86,68 @@ const Scalar scalars[] = {
     {"unstretchedLength", "m",
      "unstretched length L, > 0, at least the ends' distance at the start "
      "over 1.3",
-     1.5},
-    {"EA", "N", "axial stiffness, > 0", 1e4},
+     1.5, &ScalarBlocks::length},
+    {"EA", "N", "axial stiffness, > 0", 1e4, &ScalarBlocks::EA},
     {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
-     10.0},
-    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5},
+     10.0, &ScalarBlocks::axialDamping},
+    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5, &ScalarBlocks::massPerLength},
     {"diameter", "m",
      "volume-equivalent diameter (buoyancy, drag, added mass, seabed contact), "
      ">= 0 (> 0 with seabedContact = 1)",
-     0.01},
-    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0},
-    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81},
-    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2},
-    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05},
+     0.01, &ScalarBlocks::diameter},
+    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0, &ScalarBlocks::waterDensity},
+    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81, &ScalarBlocks::gravity},
+    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2, &ScalarBlocks::normalDrag},
+    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05, &ScalarBlocks::tangentialDrag},
     {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0",
-     1.0},
+     1.0, &ScalarBlocks::normalAddedMass},
     {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0",
-     0.0},
+     0.0, &ScalarBlocks::tangentialAddedMass},
     {"seabedContact", "1",
      "1: B.p is an anchor on the seabed (the horizontal plane through it); 0: no "
      "seabed",
-     0.0},
+     0.0, &ScalarBlocks::seabedContact},
     {"seabedStiffness", "Pa/m",
      "seabed penalty stiffness per contact area, >= 0 (> 0 with "
      "seabedContact = 1)",
-     3e6},
+     3e6, &ScalarBlocks::seabedStiffness},
     {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
-     3e5},
-    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0},
+     3e5, &ScalarBlocks::seabedDamping},
+    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0, &ScalarBlocks::segments},
     {"relativeTolerance", "1", "CVODE relative tolerance, > 0 (integrator 1)",
-     1e-6},
+     1e-6, &ScalarBlocks::relativeTolerance},
     {"absoluteTolerance", "1",
-     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6},
+     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6, &ScalarBlocks::absoluteTolerance},
     {"hermiteEnds", "1",
      "1: within a step the ends follow the cubic Hermite curve through the positions "
      "and velocities at both ends; 0: straight lines between the positions",
-     1.0},
+     1.0, &ScalarBlocks::hermiteEnds},
     {"integrator", "1",
-     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0},
+     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0, &ScalarBlocks::integrator},
     {"maxStep", "s",
-     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0},
+     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0, &ScalarBlocks::maxStep},
     {"freeSurface", "1",
      "1: no buoyancy, drag or added mass above waterLevel (a node's submerged "
      "fraction ramps from 1 to 0 over one segment length around it); 0: the "
      "whole line is submerged",
-     0.0},
+     0.0, &ScalarBlocks::freeSurface},
     {"waterLevel", "m",
      "height (global z) of the still water surface: the free surface "
      "(freeSurface = 1) and the top of the current profile",
-     0.0},
+     0.0, &ScalarBlocks::waterLevel},
     {"seabedFriction", "1",
      "seabed Coulomb friction coefficient (axial and transverse), >= 0 "
      "(0: none)",
-     0.0},
+     0.0, &ScalarBlocks::seabedFriction},
     {"frictionVelocity", "m/s",
      "speed below which the seabed friction is regularised (proportional to "
      "the speed), > 0",
-     0.01},
+     0.01, &ScalarBlocks::frictionVelocity},
     {"endInertia", "1",
      "1: the loads include the inertia of the end nodes' half segments "
      "(mass and added mass times the attachment point's acceleration, "
      "explicit in the coupling); 0 (default): not",
-     0.0},
+     0.0, &ScalarBlocks::endInertia},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -143,9 +155,11 @@ class MooringLineModel final : public fmuExport::LineFmuModel {
 public:
     MooringLineModel();
 
+    //- Checks the parameters by building the law, kept for the
+    //  initialization and the evaluations that follow
     void checkParameters(const double* values) const override
     {
-        connectors::MooringLine law(parameters(values));
+        line(values);
     }
 
     void initializeState(const double* values, double time) override;
@@ -161,20 +175,24 @@ protected:
 
 private:
     connectors::MooringLineParameters parameters(const double* values) const;
-    //- The law for the parameters in `values` (rebuilt when they change)
-    connectors::MooringLine& line(const double* values);
+    //- A 0-or-1 parameter; throws naming it otherwise
+    bool flag(const double* values, Block block) const;
+    //- The law for the parameters in `values`, built (and so checked) when
+    //  they differ from those of the last call
+    connectors::MooringLine& line(const double* values) const;
     fmuExport::ConnectorOutputs
     lineOutputs(const connectors::MooringLineOutput& out) const;
 
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
 
-    Block first_; // first of the scalar parameters, in `scalars` order
+    ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
     //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..]
     fmi2ValueReference flow_ = 0;
-    std::unique_ptr<connectors::MooringLine> line_;
-    std::vector<double> lineParameters_;
+    //- The law and the parameter values it was built for (line())
+    mutable std::unique_ptr<connectors::MooringLine> line_;
+    mutable std::vector<double> lineParameters_;
     std::optional<connectors::MooringLineState> state_;
 };
 
@@ -187,11 +205,8 @@ MooringLineModel::MooringLineModel()
 {
     fmuExport::VariableTable& t = table();
     for (const Scalar& s : scalars) {
-        const Block b = t.parameter(s.name, Shape::scalar, s.unit,
-                                    s.description, {s.start});
-        if (&s == scalars) {
-            first_ = b;
-        }
+        p_.*s.block = t.parameter(s.name, Shape::scalar, s.unit, s.description,
+                                  {s.start});
     }
     currentSurface_ = t.parameter(
         "current.surface", Shape::vector3, "m/s",
@@ -224,7 +239,7 @@ MooringLineModel::MooringLineModel()
     }
     const std::vector<Block> positions = positionBlocks();
     const std::vector<Block> motion = join(positions, velocityBlocks());
-    const Block all {first_.first, scalarCount};
+    const Block all {(p_.*scalars[0].block).first, scalarCount};
     OutputDependencies d;
     d.loads = join(join(motion, {all, currentSurface_, currentSeabed_}),
                    flowInputs);
@@ -236,20 +251,22 @@ MooringLineModel::MooringLineModel()
     declareLineOutputs(d);
 }
 
+bool MooringLineModel::flag(const double* values, Block block) const
+{
+    const double value = scalar(values, block);
+    if (value != 0.0 && value != 1.0) {
+        throw connectors::ConnectorError(
+            "mooringLine: parameter " + variables().variables()[block.first].name
+            + " = " + connectors::formatValue(value)
+            + " is out of range (allowed: 0 or 1)");
+    }
+    return value == 1.0;
+}
+
 connectors::MooringLineParameters
 MooringLineModel::parameters(const double* values) const
 {
-    const double* s = values + first_.first;
-    const auto flag = [](const char* name, double value) {
-        if (value != 0.0 && value != 1.0) {
-            throw connectors::ConnectorError(
-                std::string("mooringLine: parameter ") + name + " = "
-                + connectors::formatValue(value)
-                + " is out of range (allowed: 0 or 1)");
-        }
-        return value == 1.0;
-    };
-    const double segments = s[14];
+    const double segments = scalar(values, p_.segments);
     if (!(segments >= 2.0 && segments <= 1000.0
           && segments == std::floor(segments))) {
         throw connectors::ConnectorError(
@@ -257,36 +274,37 @@ MooringLineModel::parameters(const double* values) const
             + connectors::formatValue(segments)
             + " is out of range (allowed: an integer from 2 to 1000)");
     }
+    const auto value = [&](Block b) { return scalar(values, b); };
     connectors::MooringLineParameters p;
     p.p_AoP_A = vector3(values, A_p);
     p.p_BoQ_B = vector3(values, B_p);
-    p.length = s[0];
-    p.EA = s[1];
-    p.axialDamping = s[2];
-    p.massPerLength = s[3];
-    p.diameter = s[4];
-    p.waterDensity = s[5];
-    p.gravity = s[6];
-    p.normalDrag = s[7];
-    p.tangentialDrag = s[8];
-    p.normalAddedMass = s[9];
-    p.tangentialAddedMass = s[10];
-    p.seabedContact = flag("seabedContact", s[11]);
-    p.seabedStiffness = s[12];
-    p.seabedDamping = s[13];
+    p.length = value(p_.length);
+    p.EA = value(p_.EA);
+    p.axialDamping = value(p_.axialDamping);
+    p.massPerLength = value(p_.massPerLength);
+    p.diameter = value(p_.diameter);
+    p.waterDensity = value(p_.waterDensity);
+    p.gravity = value(p_.gravity);
+    p.normalDrag = value(p_.normalDrag);
+    p.tangentialDrag = value(p_.tangentialDrag);
+    p.normalAddedMass = value(p_.normalAddedMass);
+    p.tangentialAddedMass = value(p_.tangentialAddedMass);
+    p.seabedContact = flag(values, p_.seabedContact);
+    p.seabedStiffness = value(p_.seabedStiffness);
+    p.seabedDamping = value(p_.seabedDamping);
     p.segments = int(segments);
-    p.relativeTolerance = s[15];
-    p.absoluteTolerance = s[16];
-    p.hermiteEnds = flag("hermiteEnds", s[17]);
-    p.integrator = flag("integrator", s[18])
+    p.relativeTolerance = value(p_.relativeTolerance);
+    p.absoluteTolerance = value(p_.absoluteTolerance);
+    p.hermiteEnds = flag(values, p_.hermiteEnds);
+    p.integrator = flag(values, p_.integrator)
         ? connectors::MooringLineParameters::Integrator::cvode
         : connectors::MooringLineParameters::Integrator::trapezoid;
-    p.maxStep = s[19];
-    p.freeSurface = flag("freeSurface", s[20]);
-    p.waterLevel = s[21];
-    p.seabedFriction = s[22];
-    p.frictionVelocity = s[23];
-    p.endInertia = flag("endInertia", s[24]);
+    p.maxStep = value(p_.maxStep);
+    p.freeSurface = flag(values, p_.freeSurface);
+    p.waterLevel = value(p_.waterLevel);
+    p.seabedFriction = value(p_.seabedFriction);
+    p.frictionVelocity = value(p_.frictionVelocity);
+    p.endInertia = flag(values, p_.endInertia);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);
     return p;
@@ -311,10 +329,12 @@ MooringLineModel::flow(const double* values) const
     return points;
 }
 
-connectors::MooringLine& MooringLineModel::line(const double* values)
+connectors::MooringLine& MooringLineModel::line(const double* values) const
 {
-    std::vector<double> current(values + first_.first,
-                                values + first_.first + scalarCount);
+    std::vector<double> current;
+    for (const Scalar& s : scalars) {
+        current.push_back(scalar(values, p_.*s.block));
+    }
     for (const Block b : {A_p, B_p, currentSurface_, currentSeabed_}) {
         current.insert(current.end(), values + b.first, values + b.first + 3);
     }
@@ -345,12 +365,12 @@ MooringLineModel::evaluate(const double* values,
                            const connectors::BodyKinematics& A,
                            const connectors::BodyKinematics& B) const
 {
-    if (state_ && line_) {
+    const connectors::MooringLine& law = line(values);
+    if (state_) {
         return lineOutputs(
-            line_->evaluate(*state_, A, B, shapePoints, flow(values)));
+            law.evaluate(*state_, A, B, shapePoints, flow(values)));
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
-    const connectors::MooringLine law(parameters(values));
     return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
                                     shapePoints, flow(values)));
 }
