@@ -112,6 +112,7 @@ def read_case(case):
            "xIn": dictionary.read_scalar(settings_path, "xIn")}
     for key in ("meshFactor", "endTime", "rampPeriods", "nProcs"):
         run[key] = float(logged[key]) if key in logged else float("nan")
+    run["guideFriction"] = float(logged.get("guideFriction", 0))
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
     run["cells"] = _cells(case)
