@@ -19,6 +19,8 @@ struct UnitDefinition {
 constexpr UnitDefinition unitDefinitions[] = {
     {"1", ""},
     {"m", "m=\"1\""},
+    {"m2", "m=\"2\""},
+    {"m3", "m=\"3\""},
     {"kg", "kg=\"1\""},
     {"rad", "rad=\"1\""},
     {"s", "s=\"1\""},
