@@ -222,7 +222,7 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
 
     if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
     {
-        IOdictionary(stateIO(mesh)).readIfPresent("addedMass", M_);
+        readAddedMass(IOdictionary(stateIO(mesh)));
     }
 
     List<labelHashSet> bodyPatches(bodyMeshes_.size());
@@ -365,17 +365,9 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
 
             if (addedMass_)
             {
-                if
-                (
-                    M_.m() == 0
-                 || (
-                        corrector_ == 1
-                     && t.timeIndex() % addedMassInterval_ == 0
-                    )
-                )
+                if (corrector_ == 1 || M_.m() == 0)
                 {
-                    M_ = addedMassEstimate_->matrix(origins_);
-                    newEstimate_ = true;
+                    updateAddedMass();
                 }
                 nNewton = coupledSolve(fx, ramp, c0, newtonResidual);
             }
@@ -471,11 +463,15 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
 
     model_.state().write(dict);
 
-    // The added mass in use, so that a restart between two estimates
-    // goes on with it
+    // The added mass in use (global axes) and the last estimate in the
+    // bodies' axes, from which a restart between two estimates goes on
     if (addedMass_ && M_.m())
     {
         dict.add("addedMass", M_);
+    }
+    if (addedMass_ && Mbody_.m())
+    {
+        dict.add("addedMassBody", Mbody_);
     }
     // ASCII, to a temporary file renamed over the state file: a kill
     // leaves the old file or the new one, never half of it

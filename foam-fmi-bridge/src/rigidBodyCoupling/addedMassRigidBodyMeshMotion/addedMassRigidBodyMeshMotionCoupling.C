@@ -47,6 +47,87 @@ Foam::addedMassRigidBodyMeshMotion::fluidLoads(const scalar ramp) const
 }
 
 
+Foam::tensorField Foam::addedMassRigidBodyMeshMotion::bodyAxes() const
+{
+    tensorField E(bodyMeshes_.size());
+
+    forAll(bodyMeshes_, bi)
+    {
+        E[bi] = model_.X0(bodyMeshes_[bi].bodyID_).E();
+    }
+
+    return E;
+}
+
+
+void Foam::addedMassRigidBodyMeshMotion::updateAddedMass()
+{
+    const tensorField E(bodyAxes());
+
+    // From a state file without the body-axes matrix: the matrix in use,
+    // in the axes of the state's orientation, which is this step's start
+    if (Mbody_.m() == 0 && M_.m())
+    {
+        Mbody_ = rigidBodyAddedMass::rotate(M_, E);
+    }
+
+    if
+    (
+        Mbody_.m() == 0
+     || mesh().time().timeIndex() % addedMassInterval_ == 0
+    )
+    {
+        M_ = addedMassEstimate_->matrix(origins_);
+        Mbody_ = rigidBodyAddedMass::rotate(M_, E);
+        newEstimate_ = true;
+    }
+    else
+    {
+        // Body to global axes: the transposes of E
+        M_ = rigidBodyAddedMass::rotate(Mbody_, E.T());
+    }
+}
+
+
+void Foam::addedMassRigidBodyMeshMotion::readAddedMass
+(
+    const dictionary& state
+)
+{
+    const word key
+    (
+        state.found("addedMassBody", keyType::LITERAL)
+      ? "addedMassBody"
+      : "addedMass"
+    );
+
+    scalarSquareMatrix M;
+    if (!state.readIfPresent(key, M))
+    {
+        return;
+    }
+
+    if (M.m() != 6*bodyMeshes_.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "addedMassRigidBodyMotion: the state's added-mass matrix '"
+            << key << "' has " << M.m() << " rows, "
+            << 6*bodyMeshes_.size() << " expected (6 for each of the "
+            << bodyMeshes_.size() << " bodies with patches): the state was"
+            << " written for other bodies" << exit(FatalIOError);
+    }
+
+    if (key == "addedMassBody")
+    {
+        Mbody_ = M;
+    }
+    else
+    {
+        M_ = M;
+    }
+}
+
+
 Foam::scalarField
 Foam::addedMassRigidBodyMeshMotion::bodyAccelerations() const
 {

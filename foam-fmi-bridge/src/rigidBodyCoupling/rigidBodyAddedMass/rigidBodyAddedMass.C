@@ -267,4 +267,58 @@ Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
 }
 
 
+Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::rotate
+(
+    const scalarSquareMatrix& M,
+    const List<tensor>& R
+)
+{
+    const label nBodies = R.size();
+
+    if (M.m() != 6*nBodies)
+    {
+        FatalErrorInFunction
+            << "An added-mass matrix of " << M.m() << " rows for "
+            << nBodies << " bodies: 6 a body expected" << exit(FatalError);
+    }
+
+    scalarSquareMatrix result(M.m(), Zero);
+
+    // Each 3 x 3 block: moment or force of body i per angular or linear
+    // acceleration of body j
+    for (label i = 0; i < nBodies; ++i)
+    {
+        for (label j = 0; j < nBodies; ++j)
+        {
+            for (label row = 6*i; row < 6*i + 6; row += 3)
+            {
+                for (label col = 6*j; col < 6*j + 6; col += 3)
+                {
+                    tensor block(Zero);
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        for (direction s = 0; s < 3; ++s)
+                        {
+                            block[3*r + s] = M(row + r, col + s);
+                        }
+                    }
+
+                    block = R[i] & block & R[j].T();
+
+                    for (direction r = 0; r < 3; ++r)
+                    {
+                        for (direction s = 0; s < 3; ++s)
+                        {
+                            result(row + r, col + s) = block[3*r + s];
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    return result;
+}
+
+
 // ************************************************************************* //
