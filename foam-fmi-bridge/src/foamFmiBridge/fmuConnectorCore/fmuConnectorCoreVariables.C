@@ -144,14 +144,31 @@ void Foam::fmuConnectorCore::lookupShape()
         return word(std::string(base) + '[' + std::to_string(k) + ']', false);
     };
 
+    // The points: shape.x/y/z[k] (FMI 2.0), or the rows of the n x 3 array
+    // shape of an FMI 3.0 FMU, shape[k,1..3]
     for (label k = 1; ; ++k)
     {
-        const labelList xyz
+        labelList xyz
         ({
             outputNames_.find(indexed("shape.x", k)),
             outputNames_.find(indexed("shape.y", k)),
             outputNames_.find(indexed("shape.z", k))
         });
+        if (min(xyz) < 0)
+        {
+            forAll(xyz, j)
+            {
+                xyz[j] = outputNames_.find
+                (
+                    word
+                    (
+                        "shape[" + std::to_string(k) + ','
+                      + std::to_string(j + 1) + ']',
+                        false
+                    )
+                );
+            }
+        }
         if (min(xyz) < 0)
         {
             break;
