@@ -6,6 +6,7 @@
 #include "Session.hpp"
 #include "Settings.hpp"
 
+#include <climits>
 #include <cmath>
 #include <optional>
 
@@ -130,10 +131,20 @@ void setInputs(fmuImport::Instance& instance, const InputTable* table,
             boolVrs.push_back(c.variable->valueReference);
             bools.push_back(table->previous(c.column, t) != 0);
             break;
-        default:
+        default: {
+            // Integer values are ints (fmuImport): an FMI 3.0 Int64,
+            // UInt32 or UInt64 value beyond int's range is refused, not
+            // wrapped
+            const double value = std::round(table->previous(c.column, t));
+            if (!(value >= INT_MIN && value <= INT_MAX))
+                throw FileError(table->path() + ": column '" + c.variable->name
+                                + "': " + formatNumber(value)
+                                + " at t = " + formatNumber(t)
+                                + " is beyond the range of fmusim's Integer "
+                                  "values (int, 32 bits)");
             intVrs.push_back(c.variable->valueReference);
-            ints.push_back(
-                static_cast<int>(std::lround(table->previous(c.column, t))));
+            ints.push_back(static_cast<int>(value));
+        }
         }
     }
     if (!realVrs.empty())
