@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mooringLine/LineLayout.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace connectors {
@@ -21,16 +22,27 @@ NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const WaterMotion* water)
 {
     NodeForces f;
-    nodeForces(p, w, r, v, zb, f, water);
+    nodeForces(p, lineLayout(p, w), r, v, zb, f, water);
     return f;
+}
+
+void nodeForces(const MooringLineParameters& p, double w,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f, const WaterMotion* water)
+{
+    nodeForces(p, lineLayout(p, w), r, v, zb, f, water);
 }
 
 double submergedFraction(const MooringLineParameters& p, double z)
 {
+    return submergedFraction(p, z, p.length / p.segments);
+}
+
+double submergedFraction(const MooringLineParameters& p, double z, double l)
+{
     if (!p.freeSurface) {
         return 1.0;
     }
-    const double l = p.length / p.segments;
     return std::clamp((p.waterLevel + 0.5 * l - z) / l, 0.0, 1.0);
 }
 
@@ -45,13 +57,13 @@ Vector3 currentAt(const MooringLineParameters& p, double z, double zb)
 namespace {
 
 //- Integral of submergedFraction over height up to z (its derivative is
-//  the fraction): the buoyancy's potential is -rho g A l times it
-double submergedHeight(const MooringLineParameters& p, double z)
+//  the fraction), ramp length l: the buoyancy's potential is -rho g A l
+//  times it
+double submergedHeight(const MooringLineParameters& p, double z, double l)
 {
     if (!p.freeSurface) {
         return z;
     }
-    const double l = p.length / p.segments;
     const double bottom = p.waterLevel - 0.5 * l;
     const double u = std::clamp((z - bottom) / l, 0.0, 1.0);
     return std::min(z, bottom) + l * (u - 0.5 * u * u);
@@ -59,21 +71,13 @@ double submergedHeight(const MooringLineParameters& p, double z)
 
 } // namespace
 
-void nodeForces(const MooringLineParameters& p, double w,
+void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
                 double zb, NodeForces& f, const WaterMotion* water)
 {
-    const int N = p.segments;
+    const int N = layout.N;
     const std::size_t n = std::size_t(N + 1);
-    const double l = p.length / N, d = p.diameter, rho = p.waterDensity;
-    const double area = 0.25 * pi * d * d;
-    // Penetration at which the seabed stiffness carries the submerged
-    // weight; where that is zero (a buoyant line, no stiffness or no
-    // diameter) the damping acts from the floor on
-    const double support = p.seabedStiffness * d;
-    const double restDepth = support > 0.0 && w > 0.0
-        ? w / support
-        : std::numeric_limits<double>::min();
+    const std::size_t sections = layout.sections.size();
     f.T.resize(std::size_t(N));
     f.q.resize(std::size_t(N));
     f.stretched.resize(std::size_t(N));
@@ -99,12 +103,9 @@ void nodeForces(const MooringLineParameters& p, double w,
     const auto onSeabed = [&](int i) {
         return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
     };
-    const double inverseL = 1.0 / l;
-    const double cn = 0.5 * rho * d * p.normalDrag;
-    const double ct = 0.5 * rho * pi * d * p.tangentialDrag;
-    const double dryWeight = p.massPerLength * p.gravity;
-    const double buoyancy = rho * area * p.gravity; // per submerged length
     for (int j = 0; j < N; ++j) {
+        const LineLayout::Section& c = layout.ofSegment(j);
+        const double l = c.l;
         const Vector3 dr = r[j + 1] - r[j];
         const double stretched = dr.norm();
         f.stretched[j] = stretched;
@@ -113,35 +114,71 @@ void nodeForces(const MooringLineParameters& p, double w,
             f.T[j] = 0.0;
             continue;
         }
+        const double inverseL = 1.0 / l;
         f.q[j] = dr * (1.0 / stretched);
         const double strain = stretched * inverseL - 1.0;
         const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
-        f.T[j] = p.EA * std::max(strain, 0.0) + p.axialDamping * strainRate;
+        f.T[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
         f.strainEnergy
-            += 0.5 * p.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
-        f.dissipatedPower += p.axialDamping * strainRate * strainRate * l;
+            += 0.5 * c.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
+        f.dissipatedPower += c.BA * strainRate * strainRate * l;
     }
     // Every node carries the line around it: a segment (free nodes) or
     // half a segment (the ends), of length `share` unstretched and
-    // `stretchedShare` stretched (drag acts on the stretched length)
-    double heights = 0.0, wetHeights = 0.0;
+    // `stretchedShare` stretched (drag acts on the stretched length); a
+    // joint half a segment of each section, and its point
+    double heights[8] = {}, wetHeights[8] = {};
+    std::vector<double> manyHeights, manyWetHeights;
+    double* height = heights;
+    double* wetHeight = wetHeights;
+    if (sections > 8) {
+        manyHeights.assign(sections, 0.0);
+        manyWetHeights.assign(sections, 0.0);
+        height = manyHeights.data();
+        wetHeight = manyWetHeights.data();
+    }
+    double pointEnergy = 0.0;
     for (int i = 0; i <= N; ++i) {
-        const bool end = i == 0 || i == N;
-        const double share = end ? 0.5 * l : l;
-        const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
-            : i == N                         ? 0.5 * f.stretched[N - 1]
-                     : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
-        const double phi = p.freeSurface ? submergedFraction(p, r[i][2]) : 1.0;
+        const LineLayout::Node& node = layout.nodes[std::size_t(i)];
+        const double phi
+            = p.freeSurface ? submergedFraction(p, r[i][2], node.ramp) : 1.0;
         f.submerged[i] = phi;
         // With seabedContact the seabed carries the anchor's half segment
         const bool carried = i == 0 && p.seabedContact;
         Vector3 E = Vector3::Zero();
-        if (!carried) {
-            E[2] -= (dryWeight - buoyancy * phi) * share;
-        }
-        heights += share * r[i][2];
+        double wetHeightOfNode = 0.0;
         if (p.freeSurface) {
-            wetHeights += share * submergedHeight(p, r[i][2]);
+            wetHeightOfNode = submergedHeight(p, r[i][2], node.ramp);
+        }
+        // sum over the node's pieces of x d share (its seabed contact)
+        const auto contact = [&](double x) {
+            const LineLayout::Section& c0
+                = layout.sections[std::size_t(node.section[0])];
+            double sum = x * c0.diameter * node.share[0];
+            if (node.pieces == 2) {
+                const LineLayout::Section& c1
+                    = layout.sections[std::size_t(node.section[1])];
+                sum += x * c1.diameter * node.share[1];
+            }
+            return sum;
+        };
+        for (int k = 0; k < node.pieces; ++k) {
+            const LineLayout::Section& c
+                = layout.sections[std::size_t(node.section[k])];
+            const double share = node.share[k];
+            if (!carried) {
+                E[2] -= (c.dryWeight - c.buoyancy * phi) * share;
+            }
+            height[node.section[k]] += share * r[i][2];
+            if (p.freeSurface) {
+                wetHeight[node.section[k]] += share * wetHeightOfNode;
+            }
+        }
+        if (node.point >= 0) {
+            E[2] -= node.pointWeight - node.pointBuoyancy * phi;
+            pointEnergy += node.pointWeight * r[i][2]
+                - node.pointBuoyancy
+                    * (p.freeSurface ? wetHeightOfNode : r[i][2]);
         }
         if (onSeabed(i) && i != 0) {
             const double depth = zb - r[i][2];
@@ -149,19 +186,17 @@ void nodeForces(const MooringLineParameters& p, double w,
             // carries the line's weight, so that the force grows from zero
             // as a node lands: a force that jumped to cb d l |vz| at the
             // floor made CVODE's error test fail there
-            const double damping
-                = p.seabedDamping * std::clamp(depth / restDepth, 0.0, 1.0);
+            const double damping = p.seabedDamping
+                * std::clamp(depth / node.restDepth, 0.0, 1.0);
             const double push = std::max(
-                (p.seabedStiffness * depth - damping * v[i][2]) * d * share,
-                0.0);
+                contact(p.seabedStiffness * depth - damping * v[i][2]), 0.0);
             E[2] += push;
             if (depth > 0.0) {
                 f.seabedEnergy
-                    += 0.5 * p.seabedStiffness * depth * depth * d * share;
+                    += contact(0.5 * p.seabedStiffness * depth * depth);
             }
-            f.dissipatedPower
-                += std::min(damping * v[i][2] * v[i][2] * d * share,
-                            std::abs(push * v[i][2]));
+            f.dissipatedPower += std::min(contact(damping * v[i][2] * v[i][2]),
+                                          std::abs(push * v[i][2]));
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)
             if (p.seabedFriction > 0.0 && push > 0.0) {
@@ -195,36 +230,59 @@ void nodeForces(const MooringLineParameters& p, double w,
         f.relative[i] = u;
         const double along = u.dot(t); // |ut| (t is a unit vector or 0)
         const Vector3 ut = along * t, un = u - ut;
-        const double wet = phi * stretchedShare;
-        f.normalDrag[i] = cn * wet * un.norm();
-        f.tangentialDrag[i] = ct * wet * std::abs(along);
+        // drag factors of the pieces: c phi (stretched share)
+        double cn = 0.0, ct = 0.0;
+        if (node.pieces == 1) {
+            const LineLayout::Section& c
+                = layout.sections[std::size_t(node.section[0])];
+            const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
+                : i == N                         ? 0.5 * f.stretched[N - 1]
+                         : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
+            const double wet = phi * stretchedShare;
+            cn = c.cn * wet;
+            ct = c.ct * wet;
+        } else {
+            const LineLayout::Section& below
+                = layout.sections[std::size_t(node.section[0])];
+            const LineLayout::Section& above
+                = layout.sections[std::size_t(node.section[1])];
+            const double wetBelow = phi * (0.5 * f.stretched[i - 1]);
+            const double wetAbove = phi * (0.5 * f.stretched[i]);
+            cn = below.cn * wetBelow + above.cn * wetAbove;
+            ct = below.ct * wetBelow + above.ct * wetAbove;
+        }
+        f.normalDrag[i] = cn * un.norm();
+        f.tangentialDrag[i] = ct * std::abs(along);
+        if (node.point >= 0) {
+            // the point's drag, the same in every direction
+            const double c = node.pointDrag * phi * u.norm();
+            f.normalDrag[i] += c;
+            f.tangentialDrag[i] += c;
+        }
         const Vector3 drag = f.normalDrag[i] * un + f.tangentialDrag[i] * ut;
         E += drag;
         // power the drag takes from the line's motion relative to the water
         f.dissipatedPower += drag.dot(u);
         f.external[i] = E;
     }
-    f.gravityEnergy = dryWeight * heights
-        - buoyancy * (p.freeSurface ? wetHeights : heights);
-    const double mass = p.massPerLength * l;
-    const double addedN = p.normalAddedMass * rho * area * l;
-    const double addedT = p.tangentialAddedMass * rho * area * l;
-    // all submerged (no free surface): the same masses at every node
-    double inverseMn = 1.0 / (mass + addedN), inverseMt = 1.0 / (mass + addedT);
+    for (std::size_t k = 0; k < sections; ++k) {
+        const LineLayout::Section& c = layout.sections[k];
+        f.gravityEnergy += c.dryWeight * height[k]
+            - c.buoyancy * (p.freeSurface ? wetHeight[k] : height[k]);
+    }
+    f.gravityEnergy += pointEnergy;
     f.normalMass[0] = f.tangentialMass[0] = f.normalMass[N]
         = f.tangentialMass[N] = 0.0;
     for (int i = 1; i < N; ++i) {
+        const LineLayout::Node& node = layout.nodes[std::size_t(i)];
         const Vector3 F
             = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] + f.external[i];
         f.F[i] = F;
-        const double mn = mass + addedN * f.submerged[i];
-        const double mt = mass + addedT * f.submerged[i];
+        const double mn = node.mass + node.addedN * f.submerged[i];
+        const double mt = node.mass + node.addedT * f.submerged[i];
         f.normalMass[i] = mn;
         f.tangentialMass[i] = mt;
-        if (p.freeSurface) {
-            inverseMn = 1.0 / mn;
-            inverseMt = 1.0 / mt;
-        }
+        const double inverseMn = 1.0 / mn, inverseMt = 1.0 / mt;
         const Vector3& t = f.tangent[i];
         // (mn (I - t t') + mt t t')^-1 F
         f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;

@@ -12,6 +12,7 @@
 namespace connectors {
 
 struct MooringLineParameters;
+struct LineLayout;
 
 //- The water's motion seen by the line: the current profile of the
 //  parameters (MooringLineParameters::currentSurface, currentSeabed) plus
@@ -57,22 +58,30 @@ struct NodeForces {
     int groundedSegments = 0;
 };
 
-//- Forces on the nodes at positions r and velocities v (0..N), for the
-//  submerged weight per length w [N/m] and the seabed at height zb [m]
-//  (also the current profile's lower end), in still water (water null)
-//  or the given water motion
+//- Forces on the nodes at positions r and velocities v (0..N) of the
+//  line laid out in `layout` (its sections and joint points), with the
+//  seabed at height zb [m] (also the current profile's lower end), in
+//  still water (water null) or the given water motion, into f (its
+//  storage reused)
+void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f, const WaterMotion* water = nullptr);
+//- The same for the parameters' layout with the first section's submerged
+//  weight per length w [N/m]
 NodeForces nodeForces(const MooringLineParameters& p, double w,
                       const std::vector<Vector3>& r,
                       const std::vector<Vector3>& v, double zb,
                       const WaterMotion* water = nullptr);
-//- The same into f, reusing its storage
 void nodeForces(const MooringLineParameters& p, double w,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
                 double zb, NodeForces& f, const WaterMotion* water = nullptr);
 
 //- Submerged fraction of a node at height z [m] (freeSurface): 1 below
-//  waterLevel - l/2, 0 above waterLevel + l/2, linear between
+//  waterLevel - l/2, 0 above waterLevel + l/2, linear between; l the
+//  length of the node's ramp (LineLayout::Node::ramp), by default the
+//  first section's segment
 double submergedFraction(const MooringLineParameters& p, double z);
+double submergedFraction(const MooringLineParameters& p, double z, double l);
 //- The current of the parameters at height z [m], seabed at zb [m]
 Vector3 currentAt(const MooringLineParameters& p, double z, double zb);
 

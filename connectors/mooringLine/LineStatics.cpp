@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "mooringLine/LineForces.hpp"
+#include "mooringLine/LineLayout.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace connectors {
@@ -21,17 +22,30 @@ double staticEnergy(const NodeForces& f)
     return f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
 }
 
-//- -dF_z/dz of a node's buoyancy where it crosses the free surface
-//  (its submerged fraction falls by 1/l per m up there) [N/m]
-double surfaceStiffness(const MooringLineParameters& p, double z)
+//- -dF_z/dz of node i's buoyancy where it crosses the free surface
+//  (its submerged fraction falls by 1/ramp per m up there) [N/m]
+double surfaceStiffness(const MooringLineParameters& p,
+                        const LineLayout& layout, int i, double z)
 {
     if (!p.freeSurface) {
         return 0.0;
     }
-    const double phi = submergedFraction(p, z);
-    return phi > 0.0 && phi < 1.0
-        ? p.waterDensity * 0.25 * pi * p.diameter * p.diameter * p.gravity
-        : 0.0;
+    const LineLayout::Node& node = layout.nodes[std::size_t(i)];
+    const double phi = submergedFraction(p, z, node.ramp);
+    return phi > 0.0 && phi < 1.0 ? node.surfaceStiffness : 0.0;
+}
+
+//- Node i's seabed contact times x: the sum over its pieces of x d share
+double contact(const LineLayout& layout, int i, double x)
+{
+    const LineLayout::Node& node = layout.nodes[std::size_t(i)];
+    double sum = x * layout.sections[std::size_t(node.section[0])].diameter
+        * node.share[0];
+    if (node.pieces == 2) {
+        sum += x * layout.sections[std::size_t(node.section[1])].diameter
+            * node.share[1];
+    }
+    return sum;
 }
 
 } // namespace
@@ -73,25 +87,27 @@ void BlockTridiagonal::solveFactored(std::vector<Vector3>& x) const
     }
 }
 
-BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
+BlockTridiagonal staticStiffness(const MooringLineParameters& p,
+                                 const LineLayout& layout,
                                  const std::vector<Vector3>& r, double zb)
 {
-    const int N = p.segments;
-    const double l = p.length / N;
+    const int N = layout.N;
     BlockTridiagonal S;
     S.diagonal.assign(std::size_t(N - 1), Matrix3::Zero());
     S.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
     for (int j = 0; j < N; ++j) {
+        const LineLayout::Section& c = layout.ofSegment(j);
+        const double l = c.l;
         const Vector3 dr = r[std::size_t(j + 1)] - r[std::size_t(j)];
         const double s = dr.norm();
         if (!(s > 1e-12 * l)) {
             continue;
         }
         const Vector3 q = dr / s;
-        const double T = p.EA * std::max(s / l - 1.0, 0.0);
+        const double T = c.EA * std::max(s / l - 1.0, 0.0);
         const Matrix3 qq = q * q.transpose();
-        const double geometric = std::max(T, std::abs(weight) * l) / s;
-        const Matrix3 k = (s > l ? p.EA / l : geometric) * qq
+        const double geometric = std::max(T, std::abs(c.w) * l) / s;
+        const Matrix3 k = (s > l ? c.EA / l : geometric) * qq
             + geometric * (Matrix3::Identity() - qq);
         if (j >= 1) {
             S.diagonal[std::size_t(j - 1)] += k; // node j
@@ -105,37 +121,38 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
     }
     for (int i = 1; i < N; ++i) {
         S.diagonal[std::size_t(i - 1)](2, 2)
-            += surfaceStiffness(p, r[std::size_t(i)][2]);
+            += surfaceStiffness(p, layout, i, r[std::size_t(i)][2]);
         if (p.seabedContact && r[std::size_t(i)][2] <= zb) {
             S.diagonal[std::size_t(i - 1)](2, 2)
-                += p.seabedStiffness * p.diameter * l;
+                += contact(layout, i, p.seabedStiffness);
         }
     }
     return S;
 }
 
-void trapezoidMatrix(const MooringLineParameters& p, double weight,
+void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
                      double zb, double h, BlockTridiagonal& J)
 {
-    const int N = p.segments;
-    const double l = p.length / N, d = p.diameter;
+    const int N = layout.N;
     const double stiffness = 0.25 * h * h, damping = 0.5 * h;
     J.diagonal.assign(std::size_t(N - 1), Matrix3::Zero());
     J.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
     // Segment j: h^2/4 times staticStiffness's k_j plus h/2 BA/l q q',
     // alpha q q' + beta I
     for (int j = 0; j < N; ++j) {
+        const LineLayout::Section& c = layout.ofSegment(j);
+        const double l = c.l;
         const double s = f.stretched[std::size_t(j)];
         if (!(s > 1e-12 * l)) {
             continue;
         }
         const Vector3& q = f.q[std::size_t(j)];
-        const double T = p.EA * std::max(s / l - 1.0, 0.0);
-        const double geometric = std::max(T, std::abs(weight) * l) / s;
-        const double axial = s > l ? p.EA / l : geometric;
+        const double T = c.EA * std::max(s / l - 1.0, 0.0);
+        const double geometric = std::max(T, std::abs(c.w) * l) / s;
+        const double axial = s > l ? c.EA / l : geometric;
         const double alpha
-            = stiffness * (axial - geometric) + damping * p.axialDamping / l;
+            = stiffness * (axial - geometric) + damping * c.BA / l;
         Matrix3 k = alpha * q * q.transpose();
         k.diagonal().array() += stiffness * geometric;
         if (j >= 1) {
@@ -148,11 +165,8 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
             J.upper[std::size_t(j - 1)] = -k;
         }
     }
-    const double support = p.seabedStiffness * d;
-    const double restDepth = support > 0.0 && weight > 0.0
-        ? weight / support
-        : std::numeric_limits<double>::min();
     for (int i = 1; i < N; ++i) {
+        const double restDepth = layout.nodes[std::size_t(i)].restDepth;
         const std::size_t k = std::size_t(i);
         const Vector3& t = f.tangent[k];
         // mass mn (I - t t') + mt t t'; drag c |u| u of u = U - v (normal
@@ -169,12 +183,13 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
         if (un2 > 0.0) {
             b += (cn / un2) * un * un.transpose();
         }
-        b(2, 2) += stiffness * surfaceStiffness(p, r[k][2]);
+        b(2, 2) += stiffness * surfaceStiffness(p, layout, i, r[k][2]);
         if (p.seabedContact && r[k][2] <= zb) {
             const double depth = zb - r[k][2];
-            b(2, 2) += stiffness * p.seabedStiffness * d * l
-                + damping * p.seabedDamping * std::min(depth / restDepth, 1.0)
-                    * d * l;
+            b(2, 2) += contact(layout, i, stiffness * p.seabedStiffness)
+                + contact(layout, i,
+                          damping * p.seabedDamping
+                              * std::min(depth / restDepth, 1.0));
             // friction: c v below the regularisation speed, of constant
             // magnitude above it (damping only across the sliding
             // direction e: c (I - e e') in the horizontal plane)
@@ -187,13 +202,14 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
     }
 }
 
-bool solveStatics(const MooringLineParameters& p, double w,
+bool solveStatics(const MooringLineParameters& p, const LineLayout& layout,
                   std::vector<Vector3>& r, double zb)
 {
-    const int N = p.segments;
+    const int N = layout.N;
     const std::vector<Vector3> still(std::size_t(N + 1), Vector3::Zero());
     std::vector<Vector3> x(r), trial(r);
-    NodeForces f = nodeForces(p, w, x, still, zb);
+    NodeForces f;
+    nodeForces(p, layout, x, still, zb, f);
     double residual = largestForce(f), energy = staticEnergy(f);
     // Once below the tolerance, iterates on to the round-off floor (three
     // steps without a smaller largest force): a force left on a node
@@ -202,16 +218,20 @@ bool solveStatics(const MooringLineParameters& p, double w,
     for (const Vector3& ri : r) {
         extent = std::max(extent, ri.lpNorm<Eigen::Infinity>());
     }
-    const double l = p.length / N;
+    // the round-off of a tension from a strain: coordinates carry eps |r|,
+    // a segment's strain eps |r| / l
+    double roundOff = 0.0;
+    for (const LineLayout::Section& c : layout.sections) {
+        roundOff = std::max(roundOff,
+                            16.0 * std::numeric_limits<double>::epsilon() * c.EA
+                                * extent / c.l);
+    }
     const auto tolerance = [&](const NodeForces& forces) {
         double tension = 0.0;
         for (const double T : forces.T) {
             tension = std::max(tension, std::abs(T));
         }
-        // + the round-off of a tension from a strain: coordinates carry
-        // eps |r|, a segment's strain eps |r| / l
-        return 1e-11 * (std::abs(w) * p.length + tension)
-            + 16.0 * std::numeric_limits<double>::epsilon() * p.EA * extent / l;
+        return 1e-11 * (layout.absoluteWeight + tension) + roundOff;
     };
     int stalled = 0;
     double best = residual, bestTolerance = tolerance(f);
@@ -219,7 +239,8 @@ bool solveStatics(const MooringLineParameters& p, double w,
          iteration < 200 && !(best <= bestTolerance && stalled >= 3);
          ++iteration) {
         const std::vector<Vector3> b(f.F.begin() + 1, f.F.end() - 1);
-        const std::vector<Vector3> dx = staticStiffness(p, w, x, zb).solve(b);
+        const std::vector<Vector3> dx
+            = staticStiffness(p, layout, x, zb).solve(b);
         double slope = 0.0; // d energy / d alpha = -F . dx < 0
         for (int i = 1; i < N; ++i) {
             slope -= b[std::size_t(i - 1)].dot(dx[std::size_t(i - 1)]);
@@ -230,7 +251,8 @@ bool solveStatics(const MooringLineParameters& p, double w,
                 trial[std::size_t(i)]
                     = x[std::size_t(i)] + alpha * dx[std::size_t(i - 1)];
             }
-            NodeForces next = nodeForces(p, w, trial, still, zb);
+            NodeForces next;
+            nodeForces(p, layout, trial, still, zb, next);
             const double nextResidual = largestForce(next);
             const double nextEnergy = staticEnergy(next);
             if (!std::isfinite(nextResidual) || !std::isfinite(nextEnergy)) {

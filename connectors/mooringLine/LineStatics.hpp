@@ -8,7 +8,8 @@
 // stretched length s, unit vector q, tension T) contributes
 //   k_j = EA/l q q' + max(T, w l)/s (I - q q')
 // to the diagonal blocks of j and j+1 and -k_j to the coupling block; a node
-// below the seabed adds kb d l to its zz entry. A slack segment keeps EA/l
+// below the seabed adds kb d l to its zz entry. Each segment and node takes
+// its own section's l, EA, w and d (LineLayout). A slack segment keeps EA/l
 // along q and the floor w l in the transverse term: the residual is the
 // true law, these floors only keep the Newton matrix regular.
 #ifndef CONNECTORS_MOORINGLINE_LINESTATICS_HPP
@@ -22,6 +23,7 @@ namespace connectors {
 
 struct MooringLineParameters;
 struct NodeForces;
+struct LineLayout;
 
 //- Symmetric block tridiagonal matrix over the free nodes 1..N-1
 struct BlockTridiagonal {
@@ -42,7 +44,8 @@ struct BlockTridiagonal {
 };
 
 //- S = -dF/dr at node positions r (0..N) with the seabed at height zb
-BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
+BlockTridiagonal staticStiffness(const MooringLineParameters& p,
+                                 const LineLayout& layout,
                                  const std::vector<Vector3>& r, double zb);
 
 //- Newton matrix of a trapezoidal step of h [s] in the positions at its
@@ -53,7 +56,7 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p, double weight,
 //  segment), the drag, the seabed damping and friction. Symmetric positive definite; it omits the change of M, of the
 //  drag's direction and of the damping force's direction with the
 //  positions, so Newton converges linearly (fast: these are small).
-void trapezoidMatrix(const MooringLineParameters& p, double weight,
+void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
                      double zb, double h, BlockTridiagonal& J);
 
@@ -66,7 +69,7 @@ void trapezoidMatrix(const MooringLineParameters& p, double weight,
 //  r becomes the iterate with the smallest largest node force; returns
 //  whether that fell below 1e-11 of the line's weight plus its largest
 //  tension (plus the round-off of a tension, 16 eps EA |r| / l).
-bool solveStatics(const MooringLineParameters& p, double w,
+bool solveStatics(const MooringLineParameters& p, const LineLayout& layout,
                   std::vector<Vector3>& r, double zb);
 
 } // namespace connectors

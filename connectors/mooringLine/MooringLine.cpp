@@ -26,13 +26,89 @@ void requirePositive(const char* name, double value, const char* unit)
     }
 }
 
-//- Whether a and b hold the same doubles to the bit (-0 differs from 0)
+//- Sections 2, 3, ... and their joints' points (ParameterError naming the
+//  FMU variable, section<k>.<name> or joint<k>.<name>)
+void checkSections(const MooringLineParameters& p)
+{
+    int total = p.segments;
+    for (std::size_t k = 0; k < p.sections.size(); ++k) {
+        const LineSection& s = p.sections[k];
+        const std::string section = "section" + std::to_string(k + 2) + ".";
+        const auto name = [&](const char* n) { return section + n; };
+        requirePositive(name("unstretchedLength").c_str(), s.length, "m");
+        requirePositive(name("EA").c_str(), s.EA, "N");
+        requireNonNegative(lawName, name("axialDamping").c_str(),
+                           s.axialDamping, "N.s");
+        requirePositive(name("massPerLength").c_str(), s.massPerLength, "kg/m");
+        requireNonNegative(lawName, name("diameter").c_str(), s.diameter, "m");
+        if (p.seabedContact && !(s.diameter > 0.0)) {
+            throw ParameterError(
+                lawName, name("diameter"), s.diameter, "m",
+                "> 0 with seabedContact = 1: the seabed carries the line "
+                "over its contact area, diameter times length");
+        }
+        requireNonNegative(lawName, name("normalDrag").c_str(), s.normalDrag,
+                           "1");
+        requireNonNegative(lawName, name("tangentialDrag").c_str(),
+                           s.tangentialDrag, "1");
+        requireNonNegative(lawName, name("normalAddedMass").c_str(),
+                           s.normalAddedMass, "1");
+        requireNonNegative(lawName, name("tangentialAddedMass").c_str(),
+                           s.tangentialAddedMass, "1");
+        total += s.segments;
+        if (s.segments < 1 || total > 1000) {
+            throw ConnectorError(
+                "mooringLine: parameter " + name("segments") + " = "
+                + std::to_string(s.segments)
+                + " is out of range (allowed: an integer from 1 to "
+                + std::to_string(std::max(1000 - (total - s.segments), 0))
+                + ": the sections' segments add up to at most 1000)");
+        }
+        const std::string joint = "joint" + std::to_string(k + 1) + ".";
+        requireNonNegative(lawName, (joint + "mass").c_str(), s.joint.mass,
+                           "kg");
+        requireNonNegative(lawName, (joint + "volume").c_str(), s.joint.volume,
+                           "m3");
+        requireNonNegative(lawName, (joint + "dragArea").c_str(),
+                           s.joint.dragArea, "m2");
+        requireNonNegative(lawName, (joint + "addedMass").c_str(),
+                           s.joint.addedMass, "1");
+    }
+}
 } // namespace
 
 double MooringLineParameters::weight() const
 {
     return (massPerLength - waterDensity * 0.25 * pi * diameter * diameter)
         * gravity;
+}
+
+LineSection MooringLineParameters::section(std::size_t k) const
+{
+    if (k > 0) {
+        return sections[k - 1];
+    }
+    LineSection s;
+    s.length = length;
+    s.EA = EA;
+    s.axialDamping = axialDamping;
+    s.massPerLength = massPerLength;
+    s.diameter = diameter;
+    s.normalDrag = normalDrag;
+    s.tangentialDrag = tangentialDrag;
+    s.normalAddedMass = normalAddedMass;
+    s.tangentialAddedMass = tangentialAddedMass;
+    s.segments = segments;
+    return s;
+}
+
+int MooringLineParameters::totalSegments() const
+{
+    int N = segments;
+    for (const LineSection& s : sections) {
+        N += s.segments;
+    }
+    return N;
 }
 
 std::vector<double> MooringLineState::serialize() const
@@ -119,14 +195,16 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
     requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
     requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
     requirePositive("frictionVelocity", p.frictionVelocity, "m/s");
+    checkSections(p);
     weight_ = p.weight();
+    layout_ = lineLayout(p, weight_);
     if (p.integrator == MooringLineParameters::Integrator::cvode) {
         CvodeBdf::Options options;
         options.relativeTolerance = p.relativeTolerance;
         options.absoluteTolerance = p.absoluteTolerance;
         options.halfBandwidth = 11; // a node's 6 states see its neighbours' 6
         integrator_ = std::make_unique<CvodeBdf>(
-            6 * std::size_t(p.segments - 1),
+            6 * std::size_t(layout_.N - 1),
             [this](double t, const double* y, double* ydot) {
                 return rhs(t, y, ydot);
             },
@@ -169,9 +247,13 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     // far out of its range. Not named as "parameter ...": it depends on
     // the inputs (docs/connector-fmu-interface.md)
     const double chord = (P - Q).norm();
-    if (chord > (1.0 + maxStartStrain) * p.length) {
+    if (chord > (1.0 + maxStartStrain) * layout_.length) {
         throw UndefinedStateError(
-            "mooringLine: unstretchedLength = " + formatValue(p.length)
+            std::string("mooringLine: ")
+            + (p.sections.empty() ? "unstretchedLength"
+                                  : "the sum of the sections' "
+                                    "unstretchedLength")
+            + " = " + formatValue(layout_.length)
             + " m is out of range for the ends at the start (allowed: at least "
             + formatValue(chord / (1.0 + maxStartStrain))
             + " m, the distance from the fairlead A.p to B.p, "
@@ -179,16 +261,37 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
             + ": a start strain of at most "
             + formatValue(100.0 * maxStartStrain) + " %)");
     }
+    // The quasi-static catenary through the ends: of the line itself, or
+    // for sections one of the whole line's length, the mean of their
+    // weights (points included) and compliances, its shape taken at the
+    // nodes' unstretched arcs
+    const LineLayout& L = layout_;
+    const int N = L.N;
+    const bool uniform = L.sections.size() == 1;
     CatenaryParameters c;
     c.p_AoP_A = p.p_AoP_A;
     c.p_BoQ_B = p.p_BoQ_B;
-    c.line.length = p.length;
+    c.line.length = L.length;
     c.line.EA = p.EA;
     c.line.weight = weight_;
     c.line.seabedContact = p.seabedContact;
+    if (!uniform) {
+        double weight = 0.0, compliance = 0.0;
+        for (const LineLayout::Section& k : L.sections) {
+            weight += k.w * k.l * k.segments;
+            compliance += k.l * k.segments / k.EA;
+        }
+        for (const LineSection& k : p.sections) {
+            weight
+                += (k.joint.mass - p.waterDensity * k.joint.volume) * p.gravity;
+        }
+        c.line.weight = weight / L.length;
+        c.line.EA = L.length / compliance;
+    }
+    const int points = uniform ? N + 1 : 8 * N + 1;
     CatenaryOutput shape;
     try {
-        shape = Catenary(c).evaluate(A, B, nullptr, p.segments + 1);
+        shape = Catenary(c).evaluate(A, B, nullptr, points);
     } catch (const UndefinedStateError& e) {
         throw UndefinedStateError(
             std::string("mooringLine: no quasi-static start "
@@ -201,11 +304,20 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     s.Q = attachment(B, p.p_BoQ_B);
     s.vP = attachmentVelocity(A, p.p_AoP_A);
     s.vQ = attachmentVelocity(B, p.p_BoQ_B);
-    const int N = p.segments;
-    // shape runs from P (index 0) to Q (index N); node i is shape[N - i]
+    // shape runs from P (index 0) to Q (index points - 1)
     std::vector<Vector3> r(std::size_t(N + 1));
     for (int i = 0; i <= N; ++i) {
-        r[std::size_t(i)] = shape.shape[std::size_t(N - i)];
+        if (uniform) {
+            r[std::size_t(i)] = shape.shape[std::size_t(N - i)];
+            continue;
+        }
+        const double u
+            = (points - 1) * (1.0 - L.arc[std::size_t(i)] / L.length);
+        const int k = std::min(int(u), points - 2);
+        r[std::size_t(i)] = shape.shape[std::size_t(k)]
+            + (u - k)
+                * (shape.shape[std::size_t(k + 1)]
+                   - shape.shape[std::size_t(k)]);
     }
     r[0] = s.Q;
     r[std::size_t(N)] = s.P;
@@ -214,9 +326,10 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
     // is kept where Newton cannot reach one (a slack weightless line, a
     // line folded on the seabed, whose grounded nodes have no unique place)
     std::vector<Vector3> equilibrium(r);
-    if (solveStatics(p, weight_, equilibrium, s.Q[2])) {
+    if (solveStatics(p, layout_, equilibrium, s.Q[2])) {
         r.swap(equilibrium);
     }
+    checkJointsSubmerged(r);
     s.nodes.assign(6 * std::size_t(N - 1), 0.0);
     for (int i = 1; i < N; ++i) {
         for (int k = 0; k < 3; ++k) {
@@ -258,7 +371,7 @@ void MooringLine::endsAt(double s, Vector3& rQ, Vector3& vQ, Vector3& rP,
 
 int MooringLine::rhs(double t, const double* y, double* ydot) const
 {
-    const int N = parameters_.segments;
+    const int N = layout_.N;
     std::vector<Vector3> r(std::size_t(N + 1)), v(std::size_t(N + 1));
     endsAt(std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0), r[0], v[0], r[N],
            v[N]);
@@ -267,8 +380,8 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
         r[i] = Vector3(yi[0], yi[1], yi[2]);
         v[i] = Vector3(yi[3], yi[4], yi[5]);
     }
-    const NodeForces forces
-        = nodeForces(parameters_, weight_, r, v, r[0][2], &water_);
+    NodeForces forces;
+    nodeForces(parameters_, layout_, r, v, r[0][2], forces, &water_);
     for (int i = 1; i < N; ++i) {
         double* d = ydot + 6 * (i - 1);
         for (int k = 0; k < 3; ++k) {
@@ -280,6 +393,41 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
         }
     }
     return 0;
+}
+
+void MooringLine::checkJointsSubmerged(const std::vector<Vector3>& r) const
+{
+    // With freeSurface = 0 a buoy keeps its buoyancy above the water: a
+    // joint it holds up there is a line floating in the air
+    const MooringLineParameters& p = parameters_;
+    if (p.freeSurface) {
+        return;
+    }
+    const std::vector<int> joints = layout_.jointNodes();
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const LinePoint& point = p.sections[k].joint;
+        const double lift
+            = (p.waterDensity * point.volume - point.mass) * p.gravity;
+        const double z = r[std::size_t(joints[k])][2];
+        if (lift > 0.0 && z > p.waterLevel) {
+            const std::string joint = "joint" + std::to_string(k + 1);
+            throw UndefinedStateError(
+                "mooringLine: the buoy at " + joint + " (" + joint
+                + ".volume = " + formatValue(point.volume) + " m3, " + joint
+                + ".mass = " + formatValue(point.mass) + " kg: a net lift of "
+                + formatValue(lift)
+                + " N) holds the line above the water "
+                  "surface in the start equilibrium, the joint at z = "
+                + formatValue(z)
+                + " m above waterLevel = " + formatValue(p.waterLevel)
+                + " m (allowed: a joint at or below waterLevel; with "
+                  "freeSurface = 0 a buoy keeps its buoyancy in the air: "
+                  "lower "
+                + joint + ".volume or raise " + joint
+                + ".mass, or set freeSurface = 1 for a buoy floating at the "
+                  "surface)");
+        }
+    }
 }
 
 void MooringLine::waterMotion(const std::vector<Vector3>& flow,
@@ -303,12 +451,16 @@ void MooringLine::waterMotion(const std::vector<Vector3>& flow,
                 + std::to_string(k + 1) + " is not finite");
         }
     }
-    // node i is (N - i)/N of the line from P: between points k and k + 1
-    const int N = p.segments;
+    // node i is (N - i)/N of the line from P (its unstretched arc from P
+    // over L with sections): between points k and k + 1
+    const LineLayout& L = layout_;
+    const int N = L.N;
     const int last = int(flow.size()) - 1;
     water.flow.resize(std::size_t(N + 1));
     for (int i = 0; i <= N; ++i) {
-        const double u = double(N - i) * last / N;
+        const double u = L.sections.size() == 1
+            ? double(N - i) * last / N
+            : (L.length - L.arc[std::size_t(i)]) / L.length * last;
         const int k = std::min(int(u), last - 1);
         const double f01 = u - k;
         water.flow[std::size_t(i)] = (1.0 - f01) * flow[std::size_t(k)]
@@ -326,7 +478,7 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
         throw UndefinedStateError("mooringLine: step size " + formatValue(h)
                                   + " s must be finite and > 0");
     }
-    const std::size_t size = 6 * std::size_t(parameters_.segments - 1);
+    const std::size_t size = 6 * std::size_t(layout_.N - 1);
     if (state.nodes.size() != size) {
         throw std::invalid_argument(
             "mooringLine: state of " + std::to_string(state.nodes.size())
@@ -394,7 +546,8 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
     const MooringLineParameters& p = parameters_;
-    const int N = p.segments;
+    const LineLayout& L = layout_;
+    const int N = L.N;
     if (state.nodes.size() != 6 * std::size_t(N - 1)) {
         throw std::invalid_argument("mooringLine: state does not fit the line");
     }
@@ -412,8 +565,7 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     WaterMotion& water = lastEvaluated_.water;
     waterMotion(flow, water);
     NodeForces& f = lastEvaluated_.f;
-    nodeForces(p, weight_, r, v, r[0][2], f, &water);
-    const double l = p.length / N;
+    nodeForces(p, L, r, v, r[0][2], f, &water);
 
     MooringLineOutput out;
     ConnectorResult& res = out.loads;
@@ -424,15 +576,17 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     if (p.endInertia) {
         // and their inertia: half a segment's mass and added mass moving
         // with the attachment point
-        const double area = 0.25 * pi * p.diameter * p.diameter;
         const auto inertia = [&](int i, const Vector3& a) {
+            const LineSection s = p.section(i == 0 ? 0 : L.sections.size() - 1);
+            const double l = s.length / s.segments;
+            const double area = 0.25 * pi * s.diameter * s.diameter;
             const double added
                 = 0.5 * l * p.waterDensity * area * f.submerged[std::size_t(i)];
             const Vector3& t = f.tangent[std::size_t(i)];
             const double along = a.dot(t);
-            return Vector3(0.5 * l * p.massPerLength * a
-                           + added * p.normalAddedMass * (a - along * t)
-                           + added * p.tangentialAddedMass * along * t);
+            return Vector3(0.5 * l * s.massPerLength * a
+                           + added * s.normalAddedMass * (a - along * t)
+                           + added * s.tangentialAddedMass * along * t);
         };
         res.A.f_W -= inertia(N, state.aP);
         res.B.f_W -= inertia(0, state.aQ);
@@ -446,7 +600,16 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     res.tension = out.fairleadTension;
     res.potentialEnergy = f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
     res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
-    out.groundedLength = l * f.groundedSegments;
+    // l times the grounded segments, section by section
+    std::vector<int> grounded(L.sections.size(), 0);
+    for (int j = 0; j < N; ++j) {
+        grounded[std::size_t(L.segmentSection[std::size_t(j)])]
+            += p.seabedContact && (j == 0 || r[j][2] <= r[0][2])
+            && (j + 1 == N || r[j + 1][2] <= r[0][2]);
+    }
+    for (std::size_t k = 0; k < L.sections.size(); ++k) {
+        out.groundedLength += L.sections[k].l * grounded[k];
+    }
     out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
     out.V = -res.A.f_W[2];
     if (shapePoints == 1 || shapePoints < 0) {
@@ -454,7 +617,7 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
             "mooringLine: shapePoints must be 0 or >= 2");
     }
     for (int k = 0; k < shapePoints; ++k) {
-        const double u = N * (1.0 - double(k) / (shapePoints - 1));
+        const double u = L.nodeCoordinate(1.0 - double(k) / (shapePoints - 1));
         const int i = std::min(int(u), N - 1);
         const double f01 = u - i;
         out.shape.push_back((1.0 - f01) * r[i] + f01 * r[i + 1]);
@@ -472,6 +635,11 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
             T = (1.0 - g) * f.T[j] + g * f.T[j + 1];
         }
         out.shapeTension.push_back(T);
+    }
+    out.sectionLowerTension = L.sectionEnds(f.T, false);
+    out.sectionUpperTension = L.sectionEnds(f.T, true);
+    for (const int i : L.jointNodes()) {
+        out.joints.push_back(r[std::size_t(i)]);
     }
     return out;
 }

@@ -58,10 +58,36 @@
 #include "catenary/CatenaryProfile.hpp"
 #include "common/Kinematics.hpp"
 #include "mooringLine/CvodeBdf.hpp"
+#include "mooringLine/LineLayout.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineStatics.hpp"
 
 namespace connectors {
+
+//- A point at the joint of two sections (MoorDyn's point): a clump weight
+//  or a buoy, moving with the node there
+struct LinePoint {
+    //- Dry mass m [kg] and displaced volume V [m3]
+    double mass = 0.0, volume = 0.0;
+    //- Drag coefficient times frontal area CdA [m2] (drag 1/2 rho CdA |u| u,
+    //  the same in every direction) and added-mass coefficient Ca [-]
+    //  (added mass Ca rho V)
+    double dragArea = 0.0, addedMass = 0.0;
+};
+
+//- A section of the line after the first (whose properties are those of
+//  MooringLineParameters itself), with the point at its joint with the
+//  section before it
+struct LineSection {
+    LinePoint joint;
+    //- As MooringLineParameters' length, EA, axialDamping, massPerLength,
+    //  diameter, Morison coefficients and segments (at least 1)
+    double length = 1.0, EA = 1.0, axialDamping = 0.0;
+    double massPerLength = 1.0, diameter = 0.0;
+    double normalDrag = 0.0, tangentialDrag = 0.0;
+    double normalAddedMass = 0.0, tangentialAddedMass = 0.0;
+    int segments = 10;
+};
 
 struct MooringLineParameters {
     Vector3 p_AoP_A = Vector3::Zero();
@@ -114,9 +140,18 @@ struct MooringLineParameters {
     //  default; explicit in the coupling, it can destabilise a body whose
     //  mass is not large against it, README)
     bool endInertia = false;
+    //- Sections 2, 3, ... from Q towards P after the first (the fields
+    //  above: length, EA, ..., segments), each with the point at its lower
+    //  joint; empty: a uniform line
+    std::vector<LineSection> sections;
 
     //- Submerged weight per unstretched length w = (mu - rho A) g [N/m]
+    //  (of the first section)
     double weight() const;
+    //- Segments of all sections, N
+    int totalSegments() const;
+    //- Section k from Q (0: the fields above, k > 0: sections[k - 1])
+    LineSection section(std::size_t k) const;
 };
 
 //- Everything needed to continue the integration (the FMU state)
@@ -137,6 +172,12 @@ struct MooringLineState {
     //- Throws std::invalid_argument unless `data` holds a state of N segments
     static MooringLineState deserialize(const std::vector<double>& data,
                                         int segments);
+    //- The same for the line's N = totalSegments()
+    static MooringLineState deserialize(const std::vector<double>& data,
+                                        const MooringLineParameters& p)
+    {
+        return deserialize(data, p.totalSegments());
+    }
 };
 
 struct MooringLineOutput {
@@ -149,6 +190,11 @@ struct MooringLineOutput {
     //  the ends, the segments' tensions at their middles, linear between
     std::vector<Vector3> shape;
     std::vector<double> shapeTension;
+    //- Per section from Q: the tension of its segment at the end towards
+    //  Q (lower) and towards P (upper) [N]
+    std::vector<double> sectionLowerTension, sectionUpperTension;
+    //- Positions of the joints between sections, from Q [m]
+    std::vector<Vector3> joints;
 };
 
 class MooringLine {
@@ -221,12 +267,16 @@ private:
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
     Vector3 attachmentVelocity(const BodyKinematics& body,
                                const Vector3& p) const;
+    //- UndefinedStateError for a buoy that holds a joint of the start
+    //  shape r above waterLevel (without freeSurface)
+    void checkJointsSubmerged(const std::vector<Vector3>& r) const;
     //- The water's motion for `flow` (see advance) into `water`
     void waterMotion(const std::vector<Vector3>& flow,
                      WaterMotion& water) const;
 
     MooringLineParameters parameters_;
     double weight_ = 0.0;
+    LineLayout layout_;
     Ends ends_;
     //- The water's motion over the step being taken
     WaterMotion water_;

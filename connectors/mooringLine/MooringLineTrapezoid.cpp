@@ -31,7 +31,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
                                 double s1, double largestMiss)
 {
     const double h = (s1 - s0) * ends_.h;
-    const int N = parameters_.segments;
+    const int N = layout_.N;
     const std::size_t n = std::size_t(N);
     Workspace& w = work_;
     w.r0.resize(n + 1);
@@ -48,7 +48,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         && sameBits(lastEvaluated_.water.flow, water_.flow)) {
         w.a0 = lastEvaluated_.f.a;
     } else {
-        nodeForces(parameters_, weight_, w.r0, w.v0, zb, w.f, &water_);
+        nodeForces(parameters_, layout_, w.r0, w.v0, zb, w.f, &water_);
         ++trapezoidStatistics_.rhsEvaluations;
         w.a0 = w.f.a;
     }
@@ -60,7 +60,8 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         w.r[i] = w.r0[i] + h * w.v0[i] + 0.5 * h * h * w.a0[i];
         w.v[i] = w.v0[i] + h * w.a0[i];
     }
-    const double l = parameters_.length / N;
+    // the shortest segment (the only one without sections)
+    const double l = layout_.shortest;
     // Newton on the end positions x (v = 2 (x - x0)/h - v0) with the
     // matrix of the predictor; the residual (v - v0)/h - (a0 + a(x, v))/2
     // is scaled by M h^2/2. Each correction is about 1e-3 of the previous
@@ -72,9 +73,9 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
     // first correction above largestMiss segments rejects the step.
     for (int iteration = 0; iteration < 10; ++iteration) {
-        nodeForces(parameters_, weight_, w.r, w.v, zb, w.f, &water_);
+        nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_);
         if (iteration == 0) {
-            trapezoidMatrix(parameters_, weight_, w.r, w.f, zb, h, w.J);
+            trapezoidMatrix(parameters_, layout_, w.r, w.f, zb, h, w.J);
             w.J.factorize();
             ++trapezoidStatistics_.jacobianEvaluations;
         }

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "LineFmuModel.hpp"
+#include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
 
@@ -66,9 +67,9 @@ struct ScalarBlocks {
     Block length, EA, axialDamping, massPerLength, diameter, waterDensity,
         gravity, normalDrag, tangentialDrag, normalAddedMass,
         tangentialAddedMass, seabedContact, seabedStiffness, seabedDamping,
-        segments, relativeTolerance, absoluteTolerance, hermiteEnds,
-        integrator, maxStep, freeSurface, waterLevel, seabedFriction,
-        frictionVelocity, endInertia;
+        segments, relativeTolerance, absoluteTolerance, hermiteEnds, integrator,
+        maxStep, freeSurface, waterLevel, seabedFriction, frictionVelocity,
+        endInertia;
 };
 
 struct Scalar {
@@ -90,17 +91,22 @@ const Scalar scalars[] = {
     {"EA", "N", "axial stiffness, > 0", 1e4, &ScalarBlocks::EA},
     {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
      10.0, &ScalarBlocks::axialDamping},
-    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5, &ScalarBlocks::massPerLength},
+    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5,
+     &ScalarBlocks::massPerLength},
     {"diameter", "m",
      "volume-equivalent diameter (buoyancy, drag, added mass, seabed contact), "
      ">= 0 (> 0 with seabedContact = 1)",
      0.01, &ScalarBlocks::diameter},
-    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0, &ScalarBlocks::waterDensity},
-    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81, &ScalarBlocks::gravity},
-    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2, &ScalarBlocks::normalDrag},
-    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05, &ScalarBlocks::tangentialDrag},
-    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0",
-     1.0, &ScalarBlocks::normalAddedMass},
+    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0,
+     &ScalarBlocks::waterDensity},
+    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81,
+     &ScalarBlocks::gravity},
+    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2,
+     &ScalarBlocks::normalDrag},
+    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05,
+     &ScalarBlocks::tangentialDrag},
+    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0", 1.0,
+     &ScalarBlocks::normalAddedMass},
     {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0",
      0.0, &ScalarBlocks::tangentialAddedMass},
     {"seabedContact", "1",
@@ -113,19 +119,23 @@ const Scalar scalars[] = {
      3e6, &ScalarBlocks::seabedStiffness},
     {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
      3e5, &ScalarBlocks::seabedDamping},
-    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0, &ScalarBlocks::segments},
+    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0,
+     &ScalarBlocks::segments},
     {"relativeTolerance", "1", "CVODE relative tolerance, > 0 (integrator 1)",
      1e-6, &ScalarBlocks::relativeTolerance},
     {"absoluteTolerance", "1",
-     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6, &ScalarBlocks::absoluteTolerance},
+     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6,
+     &ScalarBlocks::absoluteTolerance},
     {"hermiteEnds", "1",
      "1: within a step the ends follow the cubic Hermite curve through the positions "
      "and velocities at both ends; 0: straight lines between the positions",
      1.0, &ScalarBlocks::hermiteEnds},
     {"integrator", "1",
-     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0, &ScalarBlocks::integrator},
+     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0,
+     &ScalarBlocks::integrator},
     {"maxStep", "s",
-     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0, &ScalarBlocks::maxStep},
+     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0,
+     &ScalarBlocks::maxStep},
     {"freeSurface", "1",
      "1: no buoyancy, drag or added mass above waterLevel (a node's submerged "
      "fraction ramps from 1 to 0 over one segment length around it); 0: the "
@@ -157,10 +167,7 @@ public:
 
     //- Checks the parameters by building the law, kept for the
     //  initialization and the evaluations that follow
-    void checkParameters(const double* values) const override
-    {
-        line(values);
-    }
+    void checkParameters(const double* values) const override { line(values); }
 
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
@@ -188,6 +195,7 @@ private:
 
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
+    mooringLineFmu::SectionVariables sections_;
     //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..]
     fmi2ValueReference flow_ = 0;
     //- The law and the parameter values it was built for (line())
@@ -217,6 +225,7 @@ MooringLineModel::MooringLineModel()
         = t.parameter("current.seabed", Shape::vector3, "m/s",
                       "current at the seabed (the height of B.p), global frame",
                       {0.0, 0.0, 0.0});
+    sections_.declareParameters(t);
     declareBodies({1, 0, 0});
     std::vector<Block> flowInputs;
     const std::string n = std::to_string(shapePoints);
@@ -241,14 +250,19 @@ MooringLineModel::MooringLineModel()
     const std::vector<Block> motion = join(positions, velocityBlocks());
     const Block all {(p_.*scalars[0].block).first, scalarCount};
     OutputDependencies d;
-    d.loads = join(join(motion, {all, currentSurface_, currentSeabed_}),
-                   flowInputs);
+    d.loads = join(
+        join(motion,
+             {all, currentSurface_, currentSeabed_, sections_.parameters()}),
+        flowInputs);
     d.length = positions;
     d.lengthRate = motion;
     d.tension = d.loads;
-    d.potentialEnergy = join(positions, {all});
+    d.potentialEnergy = join(positions, {all, sections_.parameters()});
     d.dissipatedPower = d.loads;
     declareLineOutputs(d);
+    for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
+        extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
+    }
 }
 
 bool MooringLineModel::flag(const double* values, Block block) const
@@ -256,8 +270,9 @@ bool MooringLineModel::flag(const double* values, Block block) const
     const double value = scalar(values, block);
     if (value != 0.0 && value != 1.0) {
         throw connectors::ConnectorError(
-            "mooringLine: parameter " + variables().variables()[block.first].name
-            + " = " + connectors::formatValue(value)
+            "mooringLine: parameter "
+            + variables().variables()[block.first].name + " = "
+            + connectors::formatValue(value)
             + " is out of range (allowed: 0 or 1)");
     }
     return value == 1.0;
@@ -307,6 +322,7 @@ MooringLineModel::parameters(const double* values) const
     p.endInertia = flag(values, p_.endInertia);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);
+    sections_.read(values, variables(), p);
     return p;
 }
 
@@ -335,8 +351,10 @@ connectors::MooringLine& MooringLineModel::line(const double* values) const
     for (const Scalar& s : scalars) {
         current.push_back(scalar(values, p_.*s.block));
     }
-    for (const Block b : {A_p, B_p, currentSurface_, currentSeabed_}) {
-        current.insert(current.end(), values + b.first, values + b.first + 3);
+    for (const Block b :
+         {A_p, B_p, currentSurface_, currentSeabed_, sections_.parameters()}) {
+        current.insert(current.end(), values + b.first,
+                       values + b.first + b.size);
     }
     if (!line_ || current != lineParameters_) {
         line_ = std::make_unique<connectors::MooringLine>(parameters(values));
@@ -357,7 +375,11 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     o.V = m.V;
     o.shape = m.shape;
     o.tension = m.shapeTension;
-    return outputs(o);
+    fmuExport::ConnectorOutputs all = outputs(o);
+    const std::vector<double> sections
+        = mooringLineFmu::SectionVariables::values(m);
+    all.extra.insert(all.extra.end(), sections.begin(), sections.end());
+    return all;
 }
 
 fmuExport::ConnectorOutputs
@@ -415,8 +437,7 @@ void MooringLineModel::setInternalState(const double* values,
         return;
     }
     connectors::MooringLine& law = line(values);
-    state_ = connectors::MooringLineState::deserialize(
-        state, law.parameters().segments);
+    state_ = connectors::MooringLineState::deserialize(state, law.parameters());
 }
 
 } // namespace

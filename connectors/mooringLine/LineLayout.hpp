@@ -1,0 +1,93 @@
+// The line's sections and joint points laid out on its nodes and segments:
+// what the force model (LineForces), the statics and the trapezoidal step
+// (LineStatics) read per segment and per node, computed once from the
+// parameters.
+//
+// Sections 1..n run from Q (node 0) to P (node N); section k has N_k
+// segments of l_k = L_k/N_k. A node inside a section (or an end) carries
+// one piece of line: a segment l_k (half of one at the ends); a node at the
+// joint of sections k and k+1 carries two, l_k/2 of one and l_k+1/2 of the
+// other, and the point there (clump weight or buoy). For a line of one
+// section every quantity is computed as the uniform line computed it, so
+// that its results are the same to the bit.
+#ifndef CONNECTORS_MOORINGLINE_LINELAYOUT_HPP
+#define CONNECTORS_MOORINGLINE_LINELAYOUT_HPP
+
+#include <vector>
+
+#include "common/Kinematics.hpp"
+
+namespace connectors {
+
+struct MooringLineParameters;
+struct LinePoint;
+
+struct LineLayout {
+    //- A section's constants per unit unstretched length
+    struct Section {
+        double l = 1.0; // segment length [m]
+        double EA = 0.0, BA = 0.0; // [N], [N.s]
+        double massPerLength = 0.0, diameter = 0.0, area = 0.0;
+        double w = 0.0; // submerged weight per length [N/m]
+        double dryWeight = 0.0; // mu g [N/m]
+        double buoyancy = 0.0; // rho A g [N/m]
+        double cn = 0.0,
+               ct = 0.0; // drag factors 1/2 rho d Cdn, 1/2 rho pi d Cdt [kg/m2]
+        double addedN = 0.0, addedT = 0.0; // added mass of a segment l [kg]
+        int firstSegment = 0, segments = 0;
+    };
+    //- The line a node carries: one piece (inside a section, or an end)
+    //  or two (a joint), each a section and a length of it [m]
+    struct Node {
+        int pieces = 1;
+        int section[2] = {0, 0};
+        double share[2] = {0.0, 0.0};
+        //- Joint point (index into points), or -1
+        int point = -1;
+        //- Length of the free surface's ramp around the node [m]
+        double ramp = 1.0;
+        //- Penetration at which the seabed carries the node's weight [m]
+        double restDepth = 0.0;
+        //- -dF_z/dz of its buoyancy while crossing the free surface [N/m]
+        double surfaceStiffness = 0.0;
+        //- Dry mass and added mass (normal, tangential; at phi = 1) [kg]
+        double mass = 0.0, addedN = 0.0, addedT = 0.0;
+        //- The point's drag factor 1/2 rho CdA [kg/m], its weight and
+        //  buoyancy [N] (zero without a point)
+        double pointDrag = 0.0, pointWeight = 0.0, pointBuoyancy = 0.0;
+    };
+
+    int N = 0;
+    std::vector<Section> sections;
+    //- Section of each segment 0..N-1
+    std::vector<int> segmentSection;
+    std::vector<Node> nodes;
+    //- Unstretched arc length from Q of each node [m]
+    std::vector<double> arc;
+    double length = 0.0;
+    //- Shortest segment [m]
+    double shortest = 0.0;
+    //- |weight| of the line and its points [N]
+    double absoluteWeight = 0.0;
+
+    const Section& ofSegment(int j) const
+    {
+        return sections[std::size_t(segmentSection[std::size_t(j)])];
+    }
+    //- Fractional node index (node i at i, linear between) of the point
+    //  at `fromQ` (0 at Q, 1 at P) of the unstretched length
+    double nodeCoordinate(double fromQ) const;
+    //- Node indices of the joints between sections (n - 1 of them)
+    std::vector<int> jointNodes() const;
+    //- Segment tensions at each section's ends: lower (towards Q) and upper
+    std::vector<double> sectionEnds(const std::vector<double>& T,
+                                    bool upper) const;
+};
+
+//- The layout of the parameters' sections, section 1's submerged weight
+//  per length being w [N/m]
+LineLayout lineLayout(const MooringLineParameters& p, double w);
+
+} // namespace connectors
+
+#endif
