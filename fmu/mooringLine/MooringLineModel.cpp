@@ -44,6 +44,14 @@ held over the step and interpolated along the line.
 <code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
 <code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
 on the seabed, regularised below <code>frictionVelocity</code>.</p>
+<p>Up to 4 sections from B.p to A.p: the first is the line of the parameters
+above, sections 2 to 4 have their own (<code>section2.EA</code>, ...;
+<code>section&lt;k&gt;.unstretchedLength</code> = 0: no section k), with a
+point (clump weight or buoy: <code>joint&lt;k&gt;.mass</code>,
+<code>volume</code>, <code>dragArea</code>, <code>addedMass</code>) at each
+joint; outputs <code>section.lowerTension</code>,
+<code>section.upperTension</code> and the joints' positions
+<code>joint.x/y/z</code>.</p>
 <p>Inside each fmi2DoStep the node states are integrated by the implicit
 trapezoidal rule (<code>integrator</code> = 0, the default: one step per
 coupling step, or substeps no longer than <code>maxStep</code>, each one
