@@ -13,6 +13,7 @@
 #include "LawTestSupport.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
+#include "MooringLineReferences.hpp"
 
 namespace {
 
@@ -21,6 +22,8 @@ using connectors::LineSection;
 using connectors::MooringLine;
 using connectors::MooringLineParameters;
 using connectors::MooringLineState;
+using connectors::references::oc4;
+using connectors::references::ReferenceLine;
 
 constexpr double pi = 3.14159265358979323846;
 
@@ -107,12 +110,9 @@ MooringLineParameters chainAndRope(int N, double pointMass, double pointVolume)
     p.massPerLength = 80.0;
     p.diameter = 0.1;
     p.segments = N / 2;
-    LineSection rope;
-    rope.length = 40.0;
+    LineSection rope = p.section(0); // as long, as thick, as many segments
     rope.EA = 5e7;
     rope.massPerLength = 10.0;
-    rope.diameter = 0.1;
-    rope.segments = N / 2;
     rope.joint.mass = pointMass;
     rope.joint.volume = pointVolume;
     p.sections = {rope};
@@ -231,51 +231,45 @@ TEST(MooringLineSections, BuoyLiftsTheJointAsTheAnalyticCatenary)
 TEST(MooringLineSections, EqualSectionsAreTheUniformLine)
 {
     for (const bool cvode : {false, true}) {
-        MooringLineParameters uniform;
-        uniform.length = 90.0;
-        uniform.EA = 5e7;
-        uniform.axialDamping = 2e5;
-        uniform.massPerLength = 80.0;
-        uniform.diameter = 0.1;
-        uniform.normalDrag = 1.2;
-        uniform.tangentialDrag = 0.05;
-        uniform.normalAddedMass = 1.0;
-        uniform.tangentialAddedMass = 0.5;
-        uniform.seabedContact = true;
-        uniform.segments = 18;
+        // the OC4 line (835.5 m in 200 m of water) in three equal sections
+        const ReferenceLine reference = oc4(18);
+        MooringLineParameters uniform = reference.p;
         if (cvode) {
             uniform.integrator = MooringLineParameters::Integrator::cvode;
             uniform.relativeTolerance = uniform.absoluteTolerance = 1e-9;
         }
         MooringLineParameters sections = uniform;
-        sections.length = 30.0;
+        sections.length = uniform.length / 3.0;
         sections.segments = 6;
         LineSection s = sections.section(0);
         sections.sections = {s, s};
         MooringLine one(uniform), three(sections);
-        const auto A = [](double t) {
-            return body(Vector3(70.0 + 2.0 * std::sin(0.5 * t), 0.0,
-                                40.0 + std::sin(t)),
-                        Matrix3::Identity(),
-                        Vector3(std::cos(0.5 * t), 0.0, std::cos(t)));
+        const auto A = [&](double t) {
+            return body(
+                reference.fairlead
+                    + Vector3(2.0 * std::sin(0.5 * t), 0.0, std::sin(t)),
+                Matrix3::Identity(),
+                Vector3(std::cos(0.5 * t), 0.0, std::cos(t)));
         };
-        MooringLineState a = one.initialState(A(0.0), anchor, 0.0);
-        MooringLineState b = three.initialState(A(0.0), anchor, 0.0);
-        // measured: trapezoidal rule 1.9e-12 (nodes, m and m/s) and 3.7e-12
-        // (fairlead tension, relative); CVODE's error control (tolerance
-        // 1e-9) carries the round-off differences to 9e-8 and 6e-8
+        const BodyKinematics B = body(reference.anchor);
+        MooringLineState a = one.initialState(A(0.0), B, 0.0);
+        MooringLineState b = three.initialState(A(0.0), B, 0.0);
+        // measured: trapezoidal rule 2.1e-11 (nodes, m and m/s, on the
+        // 836 m line) and 1.9e-12 (fairlead tension, relative); CVODE's
+        // error control (tolerance 1e-9) carries the round-off differences
+        // to 2.0e-7 and 2.4e-9
         const double tolerance = cvode ? 1e-6 : 1e-10;
         double node = 0.0, tension = 0.0;
         for (int k = 0; k <= 100; ++k) {
             if (k > 0) {
-                one.advance(a, A(0.1 * k), anchor, 0.1);
-                three.advance(b, A(0.1 * k), anchor, 0.1);
+                one.advance(a, A(0.1 * k), B, 0.1);
+                three.advance(b, A(0.1 * k), B, 0.1);
             }
             for (std::size_t i = 0; i < a.nodes.size(); ++i) {
                 node = std::max(node, std::abs(a.nodes[i] - b.nodes[i]));
             }
-            const auto ra = one.evaluate(a, A(0.1 * k), anchor, 11);
-            const auto rb = three.evaluate(b, A(0.1 * k), anchor, 11);
+            const auto ra = one.evaluate(a, A(0.1 * k), B, 11);
+            const auto rb = three.evaluate(b, A(0.1 * k), B, 11);
             tension = std::max(tension,
                                std::abs(ra.fairleadTension - rb.fairleadTension)
                                    / ra.fairleadTension);
