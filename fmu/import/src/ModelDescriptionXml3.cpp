@@ -29,6 +29,9 @@ const std::map<std::string, Type>& elementTypes()
     return types;
 }
 
+// The most elements of all variables together
+const std::size_t maxElements = 1000000;
+
 // One variable as declared, before its elements are made
 struct Declared {
     pugi::xml_node node;
@@ -161,6 +164,7 @@ ModelDescription readFmi3Description(const pugi::xml_node& root,
     unsigned int spare = taken.empty() ? 0 : *taken.rbegin() + 1;
 
     std::set<std::string> names;
+    std::size_t elements = 0;
     for (const Declared& d : declared) {
         const std::string where = fmu + ": variable '" + d.name + "'";
         std::vector<std::size_t> dimensions;
@@ -180,11 +184,23 @@ ModelDescription readFmi3Description(const pugi::xml_node& root,
             dimensions.push_back(std::strtoull(
                 size.node.attribute("start").as_string(), nullptr, 10));
         }
+        // Every element is a Variable: a description of more elements than
+        // a connector could use is refused before they are made
         std::size_t count = 1;
-        for (const std::size_t n : dimensions)
+        for (const std::size_t n : dimensions) {
+            if (n == 0)
+                throw Error(where + " is an array without elements");
+            if (n > maxElements / count)
+                throw Error(where + " has more than "
+                            + std::to_string(maxElements)
+                            + " elements, more than the importer takes");
             count *= n;
-        if (!dimensions.empty() && count == 0)
-            throw Error(where + " is an array without elements");
+        }
+        elements += count;
+        if (elements > maxElements)
+            throw Error(where + ": the FMU's variables have more than "
+                        + std::to_string(maxElements)
+                        + " elements, more than the importer takes");
 
         Variable v;
         v.typeName = d.typeName;
