@@ -153,6 +153,31 @@ fmi2Status Instance::initialize(const std::map<std::string, double>& parameters)
     return s == fmi2OK ? fmu_.api.ExitInitializationMode(c) : s;
 }
 
+std::vector<fmi2Byte> Instance::serialize(fmi2FMUstate state)
+{
+    std::size_t size = 0;
+    if (fmu_.api.SerializedFMUstateSize(c, state, &size) != fmi2OK) {
+        return {};
+    }
+    std::vector<fmi2Byte> bytes(size);
+    if (fmu_.api.SerializeFMUstate(c, state, bytes.data(), size) != fmi2OK) {
+        return {};
+    }
+    return bytes;
+}
+
+fmi2Status Instance::restore(const std::vector<fmi2Byte>& bytes)
+{
+    fmi2FMUstate state = nullptr;
+    fmi2Status s
+        = fmu_.api.DeSerializeFMUstate(c, bytes.data(), bytes.size(), &state);
+    if (s == fmi2OK) {
+        s = fmu_.api.SetFMUstate(c, state);
+        fmu_.api.FreeFMUstate(c, &state);
+    }
+    return s;
+}
+
 fmi2Status Instance::set(const std::map<std::string, double>& values)
 {
     std::vector<fmi2ValueReference> refs;

@@ -130,6 +130,11 @@ public:
     double get(const std::string& name);
     //- Last logged message ("" if none)
     std::string lastMessage() const;
+    //- The FMU state `state` of this instance as serialized bytes (empty
+    //  where the FMU refuses)
+    std::vector<fmi2Byte> serialize(fmi2FMUstate state);
+    //- This instance set to the state serialized in `bytes` (a restart)
+    fmi2Status restore(const std::vector<fmi2Byte>& bytes);
 
 private:
     const LoadedFmu& fmu_;

@@ -105,6 +105,37 @@ TEST(MooringLineSectionsFmu, OutputsEqualTheLaw)
     }
 }
 
+TEST(MooringLineSectionsFmu, SerializedStateContinuesInAnotherInstance)
+{
+    // the state holds the nodes of all sections (N = 10 + 8): a restart
+    // (a new instance, no parameters set) continues bit for bit
+    LoadedFmu fmu("mooringLine");
+    Instance in(fmu);
+    ASSERT_EQ(initialise(fmu, in, ropeAndClump), fmi2OK) << in.lastMessage();
+    const std::vector<std::string> names
+        = {"fairleadTension", "section.upperTension[1]", "joint.z[1]"};
+    const auto step = [&](Instance& i, double t, double h) {
+        EXPECT_EQ(i.set(inputs(floater(t + h), BodyKinematics())), fmi2OK);
+        EXPECT_EQ(fmu.api.DoStep(i.c, t, h, fmi2True), fmi2OK);
+        std::vector<double> out;
+        EXPECT_EQ(i.get(names, out), fmi2OK);
+        return out;
+    };
+    const double h = 0.1;
+    for (int k = 0; k < 5; ++k) {
+        step(in, k * h, h);
+    }
+    fmi2FMUstate saved = nullptr;
+    ASSERT_EQ(fmu.api.GetFMUstate(in.c, &saved), fmi2OK);
+    Instance other(fmu);
+    ASSERT_EQ(other.restore(in.serialize(saved)), fmi2OK)
+        << other.lastMessage();
+    for (int k = 5; k < 10; ++k) {
+        EXPECT_EQ(step(other, k * h, h), step(in, k * h, h)) << k;
+    }
+    EXPECT_EQ(fmu.api.FreeFMUstate(in.c, &saved), fmi2OK);
+}
+
 TEST(MooringLineSectionsFmu, UnusableSectionsAreRefusedByName)
 {
     LoadedFmu fmu("mooringLine");
