@@ -1,7 +1,9 @@
 """Cost of one restraint evaluation: the linearSpring FMU through the
-fmuConnector restraint against OpenFOAM's built-in linearSpring, and the
-same FMU with isolation process (in a process of its own), measured side
-by side in one run of restraintCost, printed as ratios and differences.
+fmuConnector restraint against OpenFOAM's built-in linearSpring, the
+same FMU with isolation process (in a process of its own), and its FMI 3.0
+FMU (build/fmus/fmi3) in both isolations beside the FMI 2.0 one, measured
+side by side in one run of restraintCost, printed as ratios and
+differences.
 
 Run in the project's environment: tests/run-with-openfoam python3 bench/restraintCost/run.py
 """
@@ -13,12 +15,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", 
 from bridgecase import Case, fmu_path, rigid_body, vec  # noqa: E402
 
 
-def fmu_restraint(name, isolation):
+def fmu_restraint(name, isolation, fmu="linearSpring"):
     return f"""        {name}
         {{
             type fmuConnector;
             body hull;
-            fmu "{fmu_path('linearSpring')}";
+            fmu "{fmu_path(fmu)}";
             isolation {isolation};
             parameters
             {{
@@ -51,6 +53,8 @@ MODEL = f"""
         }}
 {fmu_restraint("fmu", "none")}
 {fmu_restraint("fmuProcess", "process")}
+{fmu_restraint("fmu3", "none", "fmi3/linearSpring")}
+{fmu_restraint("fmu3Process", "process", "fmi3/linearSpring")}
     }}
 """
 
@@ -65,9 +69,10 @@ def main():
     rows = {}
     for line in out.splitlines():
         parts = line.split()
-        if len(parts) == 7 and parts[0] in ("builtin", "fmu", "fmuProcess"):
+        if len(parts) == 7 and parts[0] in ("builtin", "fmu", "fmuProcess", "fmu3", "fmu3Process"):
             rows[parts[0]] = [float(x) for x in parts[2:]]
     b, f, p = rows["builtin"], rows["fmu"], rows["fmuProcess"]
+    f3, p3 = rows["fmu3"], rows["fmu3Process"]
     print("Cost of one restraint evaluation, ns (fastest of 5 rounds of 20000):")
     print("                                  new step  repeated solve")
     print(f"  built-in linearSpring           {b[0]:8.0f}  {b[1]:8.0f}")
@@ -91,6 +96,18 @@ def main():
     print("Goal: isolation process within 20000 ns of in process")
     print(f"  new step {'met' if p[0] - f[0] <= 20000 else 'NOT met'}, "
           f"repeated solve {'met' if p[1] - f[1] <= 20000 else 'NOT met'}")
+    print()
+    print("The same connector as an FMI 3.0 FMU (fmi3/linearSpring.fmu: whole")
+    print("arrays through fmi3Get/SetFloat64) beside the FMI 2.0 FMU, ns:")
+    print("                                  new step  repeated solve")
+    print(f"  FMI 2.0, isolation none         {f[0]:8.0f}  {f[1]:8.0f}")
+    print(f"  FMI 3.0, isolation none         {f3[0]:8.0f}  {f3[1]:8.0f}")
+    print(f"  difference                      {f3[0] - f[0]:8.0f}  {f3[1] - f[1]:8.0f}")
+    print(f"  FMI 2.0, isolation process      {p[0]:8.0f}  {p[1]:8.0f}")
+    print(f"  FMI 3.0, isolation process      {p3[0]:8.0f}  {p3[1]:8.0f}")
+    print(f"  difference                      {p3[0] - p[0]:8.0f}  {p3[1] - p[1]:8.0f}")
+    print(f"  FMI 3.0 parts: evaluation {f3[2]:.0f}, state save {f3[3]:.0f}, "
+          f"row {f3[4]:.0f} (FMI 2.0: {f[2]:.0f}, {f[3]:.0f}, {f[4]:.0f})")
 
 
 if __name__ == "__main__":
