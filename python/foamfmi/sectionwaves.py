@@ -366,8 +366,8 @@ def plot_overlay(plot_dir, name, run, series, r, series_dir, experiment):
               ("lee spring: tension change (N)", col["tensionLee"], 6, series["tensionLee"][0])]
     lines = ["set terminal " + plots.terminal("1000,1400"),
              "set output '%s/%s.png'" % (plot_dir, name), "set termoption noenhanced",
-             "set multiplot layout %d,1 title 'Section in waves, H = %g m, T = %g s: "
-             "this run (mesh factor %g) and the experiment%s; window grey'"
+             "set multiplot layout %d,1 title \"Section in waves, H = %g m, T = %g s: "
+             "this run (mesh factor %g) and the experiment%s; window grey\""
              % (len(panels), run["height"], T, run.get("meshFactor", float("nan")),
                 "'s runs" if measured else " (none for this wave)"),
              "set grid", "set key top left opaque", "set lmargin 10",
@@ -378,6 +378,6 @@ def plot_overlay(plot_dir, name, run, series, r, series_dir, experiment):
         curves = ["'%s' u 1:($%d-%.9g) w l lw 1.6 lc rgb '#1f5fbf' t 'CFD'" % (own, c_own, tare)]
         curves += ["'%s' u 1:%d w l lw 1.0 dt 2 t 'run %s'"
                    % (m, c_exp, os.path.basename(m)[:-4]) for m in measured]
-        lines += ["set ylabel '%s'" % label, "plot " + ", ".join(curves)]
+        lines += ['set ylabel "%s"' % label, "plot " + ", ".join(curves)]
     lines.append("unset multiplot")
     plots.gnuplot(os.path.join(plot_dir, name + ".gp"), lines)
