@@ -54,6 +54,35 @@ int hexDigit(char c)
     return -1;
 }
 
+// The values of a set: every element of the plan's arrays, those not set
+// as read (read(group, buffer)) when the set covers only part of them
+template <class T, class Read>
+std::vector<std::vector<T>> toSet(const ElementPlan& p,
+                                  const std::vector<T>& values, Read read)
+{
+    std::vector<std::vector<T>> buffers(p.groups.size());
+    for (std::size_t g = 0; g < p.groups.size(); ++g) {
+        if (p.complete)
+            buffers[g].resize(p.groups[g].count);
+        else
+            read(p.groups[g], buffers[g]);
+    }
+    for (std::size_t k = 0; k < values.size(); ++k)
+        buffers[p.where[k].first][p.where[k].second] = values[k];
+    return buffers;
+}
+
+// The values asked for, from the groups' values
+template <class T>
+std::vector<T> asked(const ElementPlan& p,
+                     const std::vector<std::vector<T>>& buffers)
+{
+    std::vector<T> values(p.where.size());
+    for (std::size_t k = 0; k < values.size(); ++k)
+        values[k] = buffers[p.where[k].first][p.where[k].second];
+    return values;
+}
+
 } // namespace
 
 ElementPlan makeElementPlan(
@@ -182,9 +211,7 @@ LocalInstance::getReal3(const std::vector<unsigned int>& vrs)
               "fmi3GetFloat32", time);
         buffers.back().assign(raw.begin(), raw.end());
     }
-    for (std::size_t k = 0; k < vrs.size(); ++k)
-        values[k] = buffers[p.where[k].first][p.where[k].second];
-    return values;
+    return asked(p, buffers);
 }
 
 void LocalInstance::setReal3(const std::vector<unsigned int>& vrs,
@@ -330,15 +357,11 @@ void LocalInstance::setInteger3(const std::vector<unsigned int>& vrs,
                                 const std::vector<int>& values)
 {
     const ElementPlan& p = plan(vrs, Type::Integer, "fmi3SetInt32");
-    std::vector<std::vector<long double>> buffers(p.groups.size());
-    for (std::size_t g = 0; g < p.groups.size(); ++g) {
-        if (p.complete)
-            buffers[g].resize(p.groups[g].count);
-        else
-            readIntegers(p.groups[g], buffers[g]);
-    }
-    for (std::size_t k = 0; k < vrs.size(); ++k)
-        buffers[p.where[k].first][p.where[k].second] = values[k];
+    const std::vector<std::vector<long double>> buffers = toSet(
+        p, std::vector<long double>(values.begin(), values.end()),
+        [this](const ElementPlan::Group& g, std::vector<long double>& out) {
+            readIntegers(g, out);
+        });
     for (std::size_t g = 0; g < p.groups.size(); ++g) {
         const std::string& t = p.groups[g].typeName;
         const bool isUnsigned = t[0] == 'U';
@@ -421,25 +444,17 @@ LocalInstance::getString3(const std::vector<unsigned int>& vrs)
     std::vector<std::vector<std::string>> buffers(p.groups.size());
     for (std::size_t g = 0; g < p.groups.size(); ++g)
         readTexts(p.groups[g], buffers[g]);
-    std::vector<std::string> values(vrs.size());
-    for (std::size_t k = 0; k < vrs.size(); ++k)
-        values[k] = buffers[p.where[k].first][p.where[k].second];
-    return values;
+    return asked(p, buffers);
 }
 
 void LocalInstance::setString3(const std::vector<unsigned int>& vrs,
                                const std::vector<std::string>& values)
 {
     const ElementPlan& p = plan(vrs, Type::String, "fmi3SetString");
-    std::vector<std::vector<std::string>> buffers(p.groups.size());
-    for (std::size_t g = 0; g < p.groups.size(); ++g) {
-        if (p.complete)
-            buffers[g].resize(p.groups[g].count);
-        else
-            readTexts(p.groups[g], buffers[g]);
-    }
-    for (std::size_t k = 0; k < vrs.size(); ++k)
-        buffers[p.where[k].first][p.where[k].second] = values[k];
+    const std::vector<std::vector<std::string>> buffers
+        = toSet(p, values,
+                [this](const ElementPlan::Group& g,
+                       std::vector<std::string>& out) { readTexts(g, out); });
     for (std::size_t g = 0; g < p.groups.size(); ++g) {
         const ElementPlan::Group& group = p.groups[g];
         if (group.typeName == "String") {

@@ -147,6 +147,22 @@ std::string modelIdentifier(const pugi::xml_node& cs, const std::string& fmu)
     return id;
 }
 
+void readCoSimulation(const pugi::xml_node& cs, const std::string& fmu,
+                      const std::string& state, ModelDescription& md)
+{
+    md.modelIdentifier = modelIdentifier(cs, fmu);
+    md.canHandleVariableCommunicationStepSize
+        = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
+    md.canGetAndSetFMUstate
+        = cs.attribute(("canGetAndSet" + state).c_str()).as_bool();
+    md.canSerializeFMUstate
+        = cs.attribute(("canSerialize" + state).c_str()).as_bool();
+    md.providesDirectionalDerivative
+        = cs.attribute("providesDirectionalDerivative").as_bool();
+    md.canBeInstantiatedOnlyOncePerProcess
+        = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
+}
+
 void readDefaultExperiment(const pugi::xml_node& root, ModelDescription& md)
 {
     if (const pugi::xml_node de = root.child("DefaultExperiment")) {
@@ -195,15 +211,7 @@ ModelDescription readModelDescription(const std::string& xml,
         throw Error(
             fmu
             + ": modelDescription.xml has no <CoSimulation> element (model exchange is not supported)");
-    md.modelIdentifier = modelIdentifier(cs, fmu);
-    md.canHandleVariableCommunicationStepSize
-        = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
-    md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUstate").as_bool();
-    md.canSerializeFMUstate = cs.attribute("canSerializeFMUstate").as_bool();
-    md.providesDirectionalDerivative
-        = cs.attribute("providesDirectionalDerivative").as_bool();
-    md.canBeInstantiatedOnlyOncePerProcess
-        = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
+    readCoSimulation(cs, fmu, "FMUstate", md);
 
     readDefaultExperiment(root, md);
 

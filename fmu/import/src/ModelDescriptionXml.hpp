@@ -36,6 +36,10 @@ Variability parseVariability(const std::string& s, const std::string& where);
 double parseNumber(const std::string& s, Type type, const std::string& where);
 // <CoSimulation>'s modelIdentifier, checked
 std::string modelIdentifier(const pugi::xml_node& cs, const std::string& fmu);
+// <CoSimulation>'s modelIdentifier and capabilities; state: "FMUstate"
+// (FMI 2.0's canGetAndSetFMUstate) or "FMUState" (FMI 3.0's)
+void readCoSimulation(const pugi::xml_node& cs, const std::string& fmu,
+                      const std::string& state, ModelDescription& md);
 void readDefaultExperiment(const pugi::xml_node& root, ModelDescription& md);
 } // namespace xml
 

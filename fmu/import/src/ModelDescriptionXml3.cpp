@@ -105,15 +105,7 @@ ModelDescription readFmi3Description(const pugi::xml_node& root,
                         : "no interface type")
             + ", and the importer runs co-simulation FMUs only");
     }
-    md.modelIdentifier = modelIdentifier(cs, fmu);
-    md.canHandleVariableCommunicationStepSize
-        = cs.attribute("canHandleVariableCommunicationStepSize").as_bool();
-    md.canGetAndSetFMUstate = cs.attribute("canGetAndSetFMUState").as_bool();
-    md.canSerializeFMUstate = cs.attribute("canSerializeFMUState").as_bool();
-    md.providesDirectionalDerivative
-        = cs.attribute("providesDirectionalDerivative").as_bool();
-    md.canBeInstantiatedOnlyOncePerProcess
-        = cs.attribute("canBeInstantiatedOnlyOncePerProcess").as_bool();
+    readCoSimulation(cs, fmu, "FMUState", md);
     md.hasEventMode = cs.attribute("hasEventMode").as_bool();
     readDefaultExperiment(root, md);
 
