@@ -206,6 +206,35 @@ TEST(Fmi3Import, ElementsOfOneArrayInAnyOrder)
     i.exitInitializationMode();
 }
 
+// After fmi3Reset the instance is instantiated again: a part of an array
+// set before initialization takes the others from the start values, not
+// from the sets before the reset
+TEST(Fmi3Import, ResetStartsOver)
+{
+    fixtures::PrivateTmpDir tmp;
+    const fmuImport::Fmu fmu(spring3);
+    const unsigned int r1 = fmu.variable("B.r[1]").valueReference,
+                       r2 = fmu.variable("B.r[2]").valueReference,
+                       force = fmu.variable("A.F[1]").valueReference;
+    auto run = [&](fmuImport::Instance& i, bool before) {
+        i.setupExperiment(0);
+        if (before)
+            i.setReal({r2}, {0.5});
+        i.setReal({r1}, {2.0});
+        i.enterInitializationMode();
+        i.exitInitializationMode();
+        i.doStep(0, 0.01);
+        return i.getReal({force, r2});
+    };
+    fmuImport::Instance used(fmu, "used"), fresh(fmu, "fresh");
+    run(used, true);
+    used.reset();
+    const std::vector<double> again = run(used, false),
+                              first = run(fresh, false);
+    EXPECT_EQ(again, first);
+    EXPECT_EQ(first[1], 0.0); // B.r[2]'s start value
+}
+
 TEST(Fmi3Import, ModelExchangeOrScheduledExecutionOnlyIsRefused)
 {
     fixtures::PrivateTmpDir tmp;

@@ -322,7 +322,8 @@ FrameReader ChildInstance::exchange()
                 if (logger_)
                     logger_(instance, status, category, message);
                 else
-                    logToStderr(instance, status, category, message);
+                    logToStderr(instance, status, category, message,
+                                fmu->description.fmiMajorVersion == 3);
                 continue;
             }
             sent_.clear();

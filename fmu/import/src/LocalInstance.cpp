@@ -140,13 +140,14 @@ void LocalInstance::receive(const std::string& instanceName, int status,
     if (logger_)
         logger_(instanceName, status, category, message);
     else
-        logToStderr(instanceName, status, category, message);
+        logToStderr(instanceName, status, category, message, v3_);
 }
 
 void logToStderr(const std::string& instanceName, int status,
-                 const std::string& category, const std::string& message)
+                 const std::string& category, const std::string& message,
+                 bool fmi3)
 {
-    std::cerr << "[" << instanceName << "] " << statusName(status) << " "
+    std::cerr << "[" << instanceName << "] " << statusName(status, fmi3) << " "
               << category << ": " << message << '\n';
 }
 
@@ -221,9 +222,14 @@ void LocalInstance::terminate()
 
 void LocalInstance::reset()
 {
-    if (v3_)
-        return check(call("fmi3Reset", time, api3().Reset, component_),
-                     "fmi3Reset");
+    if (v3_) {
+        // instantiated again: the values set before initialization restart
+        // from the start values
+        check(call("fmi3Reset", time, api3().Reset, component_), "fmi3Reset");
+        initializing_ = false;
+        setBeforeInitialization_.clear();
+        return;
+    }
     check(call("fmi2Reset", time, api().Reset, component_), "fmi2Reset");
 }
 

@@ -17,9 +17,10 @@
 namespace fmuImport {
 
 // Where an instance's messages go without a logger: "[name] fmi2Warning
-// category: message" on standard error.
+// category: message" on standard error ("fmi3Warning" with fmi3).
 void logToStderr(const std::string& instanceName, int status,
-                 const std::string& category, const std::string& message);
+                 const std::string& category, const std::string& message,
+                 bool fmi3 = false);
 
 class LocalInstance : public Instance::Impl {
 public:
