@@ -1,13 +1,15 @@
-"""The bridge (fmuConnector for rigidBodyMotion, through rigidBodySim: no
-CFD) takes an FMI 3.0 connector FMU through the same importer, wherever it
-takes a 2.0 one: the cases of tests/bridge (two bodies joined by the spring,
-the hinged chain, a body moored by catenary.fmu and one by mooringLine.fmu)
-run with the 3.0 FMUs of build/fmus/fmi3 give the bodies' motion, every
-connector output and the mooring lines' VTK files of the 2.0 FMUs, byte
-for byte (the 3.0 columns shape[i,j] are the 2.0 shape.x/y/z[i]); a run
-restarted from a written time continues the 3.0 FMUs' states; a 3.0 FMU
-whose A.r has four elements is refused naming the variable and what was
-expected.
+"""The bridge (fmuConnector for rigidBodyMotion through rigidBodySim, and
+for sixDoFRigidBodyMotion through sixDoFSim: no CFD) takes an FMI 3.0
+connector FMU through the same importer, wherever it takes a 2.0 one. The
+cases of tests/bridge (two bodies joined by the spring, also with the
+spring in a process of its own; the hinged chain; a body moored by
+catenary.fmu and one by mooringLine.fmu; two sixDoF bodies joined by the
+spring) run with the 3.0 FMUs of build/fmus/fmi3 give the bodies' motion,
+every connector output and the mooring lines' VTK files of the 2.0 FMUs,
+byte for byte (the 3.0 columns shape[i,j] are the 2.0 shape.x/y/z[i]); a
+run restarted from a written time continues the 3.0 FMUs' states; a 3.0
+FMU whose A.r has four elements is refused naming the variable and what
+was expected.
 """
 import os
 import re
@@ -17,8 +19,10 @@ import zipfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "bridge"))
 import bridgecase  # noqa: E402
+import sixdofcase  # noqa: E402
 import test_catenary_world  # noqa: E402
 import test_hinge  # noqa: E402
+import test_sixdof_two_bodies  # noqa: E402
 import test_two_bodies  # noqa: E402
 
 FMU_DIR = os.environ["FOAMFMI_FMU_DIR"]
@@ -64,11 +68,11 @@ def columns(text):
     return {n: [r[i] for r in rows] for i, n in enumerate(names)}
 
 
-def compare(name, make_model, end, dt, write):
+def compare(name, make_model, end, dt, write, kind=bridgecase.Case):
     cases = {}
     for version, directory in (("2.0", FMU_DIR), ("3.0", os.path.join(FMU_DIR, "fmi3"))):
-        case = bridgecase.Case(f"fmi3bridge.{name}.{version}",
-                               with_fmus(directory, make_model), end, dt, write)
+        case = kind(f"fmi3bridge.{name}.{version}",
+                    with_fmus(directory, make_model), end, dt, write)
         case.run(n_iter=2)
         cases[version] = case
     out2, out3 = files(cases["2.0"]), files(cases["3.0"])
@@ -145,8 +149,19 @@ def main():
     for name, make, end, dt in (
         ("hinge", lambda: test_hinge.model(1e4), 0.2, test_hinge.DT),
         ("catenaryWorld", lambda: test_catenary_world.model(3e4, 60.0, 1e4), 0.4, 0.02),
+        ("twoBodiesIsolationProcess",
+         lambda: test_two_bodies.model("Newmark").replace(
+             "type fmuConnector;", "type fmuConnector;\n            isolation process;"),
+         0.2, 0.01),
     ):
         cases, same = compare(name, make, end, dt, end / 2)
+        ok &= same
+        for c in cases.values():
+            c.cleanup()
+    for name, make, end, dt in (
+        ("sixDoFTwoBodies", test_sixdof_two_bodies.bodies, 0.2, 0.005),
+    ):
+        cases, same = compare(name, make, end, dt, end / 2, sixdofcase.SixDoFCase)
         ok &= same
         for c in cases.values():
             c.cleanup()
