@@ -103,25 +103,28 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
     const auto onSeabed = [&](int i) {
         return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
     };
-    for (int j = 0; j < N; ++j) {
-        const LineLayout::Section& c = layout.ofSegment(j);
-        const double l = c.l;
-        const Vector3 dr = r[j + 1] - r[j];
-        const double stretched = dr.norm();
-        f.stretched[j] = stretched;
-        if (stretched < 1e-12 * l) {
-            f.q[j].setZero();
-            f.T[j] = 0.0;
-            continue;
+    // section by section, its constants in locals
+    for (const LineLayout::Section& section : layout.sections) {
+        const LineLayout::Section c = section;
+        for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
+            const double l = c.l;
+            const Vector3 dr = r[j + 1] - r[j];
+            const double stretched = dr.norm();
+            f.stretched[j] = stretched;
+            if (stretched < 1e-12 * l) {
+                f.q[j].setZero();
+                f.T[j] = 0.0;
+                continue;
+            }
+            const double inverseL = c.inverseL;
+            f.q[j] = dr * (1.0 / stretched);
+            const double strain = stretched * inverseL - 1.0;
+            const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
+            f.T[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
+            f.strainEnergy += 0.5 * c.EA * std::max(strain, 0.0)
+                * std::max(strain, 0.0) * l;
+            f.dissipatedPower += c.BA * strainRate * strainRate * l;
         }
-        const double inverseL = 1.0 / l;
-        f.q[j] = dr * (1.0 / stretched);
-        const double strain = stretched * inverseL - 1.0;
-        const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
-        f.T[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
-        f.strainEnergy
-            += 0.5 * c.EA * std::max(strain, 0.0) * std::max(strain, 0.0) * l;
-        f.dissipatedPower += c.BA * strainRate * strainRate * l;
     }
     // Every node carries the line around it: a segment (free nodes) or
     // half a segment (the ends), of length `share` unstretched and
@@ -150,28 +153,14 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         if (p.freeSurface) {
             wetHeightOfNode = submergedHeight(p, r[i][2], node.ramp);
         }
-        // sum over the node's pieces of x d share (its seabed contact)
-        const auto contact = [&](double x) {
-            const LineLayout::Section& c0
-                = layout.sections[std::size_t(node.section[0])];
-            double sum = x * c0.diameter * node.share[0];
-            if (node.pieces == 2) {
-                const LineLayout::Section& c1
-                    = layout.sections[std::size_t(node.section[1])];
-                sum += x * c1.diameter * node.share[1];
-            }
-            return sum;
-        };
         for (int k = 0; k < node.pieces; ++k) {
-            const LineLayout::Section& c
-                = layout.sections[std::size_t(node.section[k])];
-            const double share = node.share[k];
+            const LineLayout::Node::Piece& c = node.piece[k];
             if (!carried) {
-                E[2] -= (c.dryWeight - c.buoyancy * phi) * share;
+                E[2] -= (c.dryWeight - c.buoyancy * phi) * c.share;
             }
-            height[node.section[k]] += share * r[i][2];
+            height[c.section] += c.share * r[i][2];
             if (p.freeSurface) {
-                wetHeight[node.section[k]] += share * wetHeightOfNode;
+                wetHeight[c.section] += c.share * wetHeightOfNode;
             }
         }
         if (node.point >= 0) {
@@ -189,14 +178,16 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             const double damping = p.seabedDamping
                 * std::clamp(depth / node.restDepth, 0.0, 1.0);
             const double push = std::max(
-                contact(p.seabedStiffness * depth - damping * v[i][2]), 0.0);
+                node.contact(p.seabedStiffness * depth - damping * v[i][2]),
+                0.0);
             E[2] += push;
             if (depth > 0.0) {
                 f.seabedEnergy
-                    += contact(0.5 * p.seabedStiffness * depth * depth);
+                    += node.contact(0.5 * p.seabedStiffness * depth * depth);
             }
-            f.dissipatedPower += std::min(contact(damping * v[i][2] * v[i][2]),
-                                          std::abs(push * v[i][2]));
+            f.dissipatedPower
+                += std::min(node.contact(damping * v[i][2] * v[i][2]),
+                            std::abs(push * v[i][2]));
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)
             if (p.seabedFriction > 0.0 && push > 0.0) {
@@ -233,8 +224,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         // drag factors of the pieces: c phi (stretched share)
         double cn = 0.0, ct = 0.0;
         if (node.pieces == 1) {
-            const LineLayout::Section& c
-                = layout.sections[std::size_t(node.section[0])];
+            const LineLayout::Node::Piece& c = node.piece[0];
             const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
                 : i == N                         ? 0.5 * f.stretched[N - 1]
                          : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
@@ -242,10 +232,8 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             cn = c.cn * wet;
             ct = c.ct * wet;
         } else {
-            const LineLayout::Section& below
-                = layout.sections[std::size_t(node.section[0])];
-            const LineLayout::Section& above
-                = layout.sections[std::size_t(node.section[1])];
+            const LineLayout::Node::Piece& below = node.piece[0];
+            const LineLayout::Node::Piece& above = node.piece[1];
             const double wetBelow = phi * (0.5 * f.stretched[i - 1]);
             const double wetAbove = phi * (0.5 * f.stretched[i]);
             cn = below.cn * wetBelow + above.cn * wetAbove;
@@ -273,6 +261,9 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
     f.gravityEnergy += pointEnergy;
     f.normalMass[0] = f.tangentialMass[0] = f.normalMass[N]
         = f.tangentialMass[N] = 0.0;
+    // the inverses of the last node's masses: the same at every node of a
+    // section under water
+    double mn1 = 0.0, mt1 = 0.0, inverseMn = 0.0, inverseMt = 0.0;
     for (int i = 1; i < N; ++i) {
         const LineLayout::Node& node = layout.nodes[std::size_t(i)];
         const Vector3 F
@@ -282,7 +273,12 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         const double mt = node.mass + node.addedT * f.submerged[i];
         f.normalMass[i] = mn;
         f.tangentialMass[i] = mt;
-        const double inverseMn = 1.0 / mn, inverseMt = 1.0 / mt;
+        if (mn != mn1 || mt != mt1) {
+            mn1 = mn;
+            mt1 = mt;
+            inverseMn = 1.0 / mn;
+            inverseMt = 1.0 / mt;
+        }
         const Vector3& t = f.tangent[i];
         // (mn (I - t t') + mt t t')^-1 F
         f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;

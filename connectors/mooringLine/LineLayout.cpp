@@ -22,6 +22,7 @@ LineLayout::Section section(const MooringLineParameters& p, std::size_t k,
     LineLayout::Section c;
     c.segments = s.segments;
     c.l = s.length / s.segments;
+    c.inverseL = 1.0 / c.l;
     c.EA = s.EA;
     c.BA = s.axialDamping;
     c.massPerLength = s.massPerLength;
@@ -44,6 +45,19 @@ double restDepth(double w, double support)
 {
     return support > 0.0 && w > 0.0 ? w / support
                                     : std::numeric_limits<double>::min();
+}
+
+LineLayout::Node::Piece piece(int k, const LineLayout::Section& s, double share)
+{
+    LineLayout::Node::Piece p;
+    p.section = k;
+    p.share = share;
+    p.diameter = s.diameter;
+    p.dryWeight = s.dryWeight;
+    p.buoyancy = s.buoyancy;
+    p.cn = s.cn;
+    p.ct = s.ct;
+    return p;
 }
 
 } // namespace
@@ -88,8 +102,7 @@ LineLayout lineLayout(const MooringLineParameters& p, double w)
         if (a == b) {
             // inside a section, or an end: as the uniform line
             const bool end = i == 0 || i == N;
-            node.section[0] = a;
-            node.share[0] = end ? 0.5 * sa.l : sa.l;
+            node.piece[0] = piece(a, sa, end ? 0.5 * sa.l : sa.l);
             node.ramp = sa.l;
             node.restDepth = restDepth(sa.w, kb * sa.diameter);
             node.surfaceStiffness = p.waterDensity * 0.25 * pi * sa.diameter
@@ -102,22 +115,22 @@ LineLayout lineLayout(const MooringLineParameters& p, double w)
         // the joint of sections a and b = a + 1, and its point
         const LinePoint& point = p.sections[std::size_t(b - 1)].joint;
         node.pieces = 2;
-        node.section[0] = a;
-        node.section[1] = b;
-        node.share[0] = 0.5 * sa.l;
-        node.share[1] = 0.5 * sb.l;
+        node.piece[0] = piece(a, sa, 0.5 * sa.l);
+        node.piece[1] = piece(b, sb, 0.5 * sb.l);
         node.point = b - 1;
         node.ramp = 0.5 * (sa.l + sb.l);
         node.pointWeight = point.mass * p.gravity;
         node.pointBuoyancy = p.waterDensity * point.volume * p.gravity;
         node.pointDrag = 0.5 * p.waterDensity * point.dragArea;
-        node.restDepth = restDepth(
-            sa.w * node.share[0] + sb.w * node.share[1] + node.pointWeight
-                - node.pointBuoyancy,
-            kb * (sa.diameter * node.share[0] + sb.diameter * node.share[1]));
+        node.restDepth
+            = restDepth(sa.w * node.piece[0].share + sb.w * node.piece[1].share
+                            + node.pointWeight - node.pointBuoyancy,
+                        kb
+                            * (sa.diameter * node.piece[0].share
+                               + sb.diameter * node.piece[1].share));
         node.surfaceStiffness
-            = (sa.buoyancy * node.share[0] + sb.buoyancy * node.share[1]
-               + node.pointBuoyancy)
+            = (sa.buoyancy * node.piece[0].share
+               + sb.buoyancy * node.piece[1].share + node.pointBuoyancy)
             / node.ramp;
         const double pointAdded
             = point.addedMass * p.waterDensity * point.volume;

@@ -26,6 +26,7 @@ struct LineLayout {
     //- A section's constants per unit unstretched length
     struct Section {
         double l = 1.0; // segment length [m]
+        double inverseL = 1.0; // 1/l [1/m]
         double EA = 0.0, BA = 0.0; // [N], [N.s]
         double massPerLength = 0.0, diameter = 0.0, area = 0.0;
         double w = 0.0; // submerged weight per length [N/m]
@@ -39,9 +40,26 @@ struct LineLayout {
     //- The line a node carries: one piece (inside a section, or an end)
     //  or two (a joint), each a section and a length of it [m]
     struct Node {
+        //- A piece: its section, length [m], and that section's constants
+        //  (copied here, where the force model reads them node by node)
+        struct Piece {
+            int section = 0;
+            double share = 0.0, diameter = 0.0, dryWeight = 0.0, buoyancy = 0.0,
+                   cn = 0.0, ct = 0.0;
+        };
         int pieces = 1;
-        int section[2] = {0, 0};
-        double share[2] = {0.0, 0.0};
+        Piece piece[2];
+
+        //- x times the seabed contact, the sum over the pieces of x d share
+        //  (x d share as the uniform line wrote it)
+        double contact(double x) const
+        {
+            double sum = x * piece[0].diameter * piece[0].share;
+            if (pieces == 2) {
+                sum += x * piece[1].diameter * piece[1].share;
+            }
+            return sum;
+        }
         //- Joint point (index into points), or -1
         int point = -1;
         //- Length of the free surface's ramp around the node [m]

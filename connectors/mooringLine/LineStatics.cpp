@@ -35,19 +35,6 @@ double surfaceStiffness(const MooringLineParameters& p,
     return phi > 0.0 && phi < 1.0 ? node.surfaceStiffness : 0.0;
 }
 
-//- Node i's seabed contact times x: the sum over its pieces of x d share
-double contact(const LineLayout& layout, int i, double x)
-{
-    const LineLayout::Node& node = layout.nodes[std::size_t(i)];
-    double sum = x * layout.sections[std::size_t(node.section[0])].diameter
-        * node.share[0];
-    if (node.pieces == 2) {
-        sum += x * layout.sections[std::size_t(node.section[1])].diameter
-            * node.share[1];
-    }
-    return sum;
-}
-
 } // namespace
 
 std::vector<Vector3>
@@ -95,28 +82,31 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p,
     BlockTridiagonal S;
     S.diagonal.assign(std::size_t(N - 1), Matrix3::Zero());
     S.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
-    for (int j = 0; j < N; ++j) {
-        const LineLayout::Section& c = layout.ofSegment(j);
-        const double l = c.l;
-        const Vector3 dr = r[std::size_t(j + 1)] - r[std::size_t(j)];
-        const double s = dr.norm();
-        if (!(s > 1e-12 * l)) {
-            continue;
-        }
-        const Vector3 q = dr / s;
-        const double T = c.EA * std::max(s / l - 1.0, 0.0);
-        const Matrix3 qq = q * q.transpose();
-        const double geometric = std::max(T, std::abs(c.w) * l) / s;
-        const Matrix3 k = (s > l ? c.EA / l : geometric) * qq
-            + geometric * (Matrix3::Identity() - qq);
-        if (j >= 1) {
-            S.diagonal[std::size_t(j - 1)] += k; // node j
-        }
-        if (j + 1 <= N - 1) {
-            S.diagonal[std::size_t(j)] += k; // node j + 1
-        }
-        if (j >= 1 && j + 1 <= N - 1) {
-            S.upper[std::size_t(j - 1)] -= k;
+    // section by section, its constants in locals
+    for (const LineLayout::Section& section : layout.sections) {
+        const LineLayout::Section c = section;
+        for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
+            const double l = c.l;
+            const Vector3 dr = r[std::size_t(j + 1)] - r[std::size_t(j)];
+            const double s = dr.norm();
+            if (!(s > 1e-12 * l)) {
+                continue;
+            }
+            const Vector3 q = dr / s;
+            const double T = c.EA * std::max(s / l - 1.0, 0.0);
+            const Matrix3 qq = q * q.transpose();
+            const double geometric = std::max(T, std::abs(c.w) * l) / s;
+            const Matrix3 k = (s > l ? c.EA / l : geometric) * qq
+                + geometric * (Matrix3::Identity() - qq);
+            if (j >= 1) {
+                S.diagonal[std::size_t(j - 1)] += k; // node j
+            }
+            if (j + 1 <= N - 1) {
+                S.diagonal[std::size_t(j)] += k; // node j + 1
+            }
+            if (j >= 1 && j + 1 <= N - 1) {
+                S.upper[std::size_t(j - 1)] -= k;
+            }
         }
     }
     for (int i = 1; i < N; ++i) {
@@ -124,7 +114,7 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p,
             += surfaceStiffness(p, layout, i, r[std::size_t(i)][2]);
         if (p.seabedContact && r[std::size_t(i)][2] <= zb) {
             S.diagonal[std::size_t(i - 1)](2, 2)
-                += contact(layout, i, p.seabedStiffness);
+                += layout.nodes[std::size_t(i)].contact(p.seabedStiffness);
         }
     }
     return S;
@@ -140,29 +130,32 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
     J.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
     // Segment j: h^2/4 times staticStiffness's k_j plus h/2 BA/l q q',
     // alpha q q' + beta I
-    for (int j = 0; j < N; ++j) {
-        const LineLayout::Section& c = layout.ofSegment(j);
-        const double l = c.l;
-        const double s = f.stretched[std::size_t(j)];
-        if (!(s > 1e-12 * l)) {
-            continue;
-        }
-        const Vector3& q = f.q[std::size_t(j)];
-        const double T = c.EA * std::max(s / l - 1.0, 0.0);
-        const double geometric = std::max(T, std::abs(c.w) * l) / s;
-        const double axial = s > l ? c.EA / l : geometric;
-        const double alpha
-            = stiffness * (axial - geometric) + damping * c.BA / l;
-        Matrix3 k = alpha * q * q.transpose();
-        k.diagonal().array() += stiffness * geometric;
-        if (j >= 1) {
-            J.diagonal[std::size_t(j - 1)] += k; // node j
-        }
-        if (j + 1 <= N - 1) {
-            J.diagonal[std::size_t(j)] += k; // node j + 1
-        }
-        if (j >= 1 && j + 1 <= N - 1) {
-            J.upper[std::size_t(j - 1)] = -k;
+    // section by section, its constants in locals
+    for (const LineLayout::Section& section : layout.sections) {
+        const LineLayout::Section c = section;
+        for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
+            const double l = c.l;
+            const double s = f.stretched[std::size_t(j)];
+            if (!(s > 1e-12 * l)) {
+                continue;
+            }
+            const Vector3& q = f.q[std::size_t(j)];
+            const double T = c.EA * std::max(s / l - 1.0, 0.0);
+            const double geometric = std::max(T, std::abs(c.w) * l) / s;
+            const double axial = s > l ? c.EA / l : geometric;
+            const double alpha
+                = stiffness * (axial - geometric) + damping * c.BA / l;
+            Matrix3 k = alpha * q * q.transpose();
+            k.diagonal().array() += stiffness * geometric;
+            if (j >= 1) {
+                J.diagonal[std::size_t(j - 1)] += k; // node j
+            }
+            if (j + 1 <= N - 1) {
+                J.diagonal[std::size_t(j)] += k; // node j + 1
+            }
+            if (j >= 1 && j + 1 <= N - 1) {
+                J.upper[std::size_t(j - 1)] = -k;
+            }
         }
     }
     for (int i = 1; i < N; ++i) {
@@ -186,10 +179,11 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
         b(2, 2) += stiffness * surfaceStiffness(p, layout, i, r[k][2]);
         if (p.seabedContact && r[k][2] <= zb) {
             const double depth = zb - r[k][2];
-            b(2, 2) += contact(layout, i, stiffness * p.seabedStiffness)
-                + contact(layout, i,
-                          damping * p.seabedDamping
-                              * std::min(depth / restDepth, 1.0));
+            b(2, 2) += layout.nodes[std::size_t(i)].contact(stiffness
+                                                            * p.seabedStiffness)
+                + layout.nodes[std::size_t(i)].contact(
+                    damping * p.seabedDamping
+                    * std::min(depth / restDepth, 1.0));
             // friction: c v below the regularisation speed, of constant
             // magnitude above it (damping only across the sliding
             // direction e: c (I - e e') in the horizontal plane)

@@ -600,15 +600,17 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     res.tension = out.fairleadTension;
     res.potentialEnergy = f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
     res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
-    // l times the grounded segments, section by section
-    std::vector<int> grounded(L.sections.size(), 0);
-    for (int j = 0; j < N; ++j) {
-        grounded[std::size_t(L.segmentSection[std::size_t(j)])]
-            += p.seabedContact && (j == 0 || r[j][2] <= r[0][2])
-            && (j + 1 == N || r[j + 1][2] <= r[0][2]);
-    }
-    for (std::size_t k = 0; k < L.sections.size(); ++k) {
-        out.groundedLength += L.sections[k].l * grounded[k];
+    // l times the grounded segments (both nodes on the seabed), section
+    // by section
+    const auto grounded
+        = [&](int i) { return i == 0 || i == N || r[i][2] <= r[0][2]; };
+    for (const LineLayout::Section& c : L.sections) {
+        int count = 0;
+        for (int j = c.firstSegment;
+             p.seabedContact && j < c.firstSegment + c.segments; ++j) {
+            count += grounded(j) && grounded(j + 1);
+        }
+        out.groundedLength += c.l * count;
     }
     out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
     out.V = -res.A.f_W[2];
