@@ -297,67 +297,76 @@ TEST(MooringLineSections, SwingingFreelyItKeepsItsEnergy)
     // Both ends held; the start shape turned by 30 degrees about the chord
     // (no segment stretched) swings back and forth. No added mass (its
     // configuration dependent mass matrix is not energy consistent).
-    MooringLineParameters p = chainAndRope(20, 2000.0, 0.25);
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.axialDamping = 1e5;
-    p.sections[0].normalDrag = 1.2;
-    p.sections[0].axialDamping = 1e4;
-    MooringLine line(p);
-    MooringLineState s = line.initialState(fairlead, anchor, 0.0);
-    const Vector3 axis = (fairlead.p_WKo_W - anchor.p_WKo_W).normalized();
-    const Matrix3 turn = rotation(pi / 6.0, axis);
-    for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
-        const Vector3 r
-            = turn * Vector3(s.nodes[i], s.nodes[i + 1], s.nodes[i + 2]);
-        for (int k = 0; k < 3; ++k) {
-            s.nodes[i + std::size_t(k)] = r[k];
+    for (const bool cvode : {false, true}) {
+        MooringLineParameters p = chainAndRope(20, 2000.0, 0.25);
+        p.normalDrag = 1.2;
+        p.tangentialDrag = 0.05;
+        p.axialDamping = 1e5;
+        p.sections[0].normalDrag = 1.2;
+        p.sections[0].axialDamping = 1e4;
+        if (cvode) {
+            p.integrator = MooringLineParameters::Integrator::cvode;
+            p.relativeTolerance = p.absoluteTolerance = 1e-9;
         }
-    }
-    // node masses: mu l inside a section, the halves and the point at the joint
-    const double l1 = 40.0 / 10, l2 = 40.0 / 10;
-    const auto kinetic = [&](const MooringLineState& state) {
-        double e = 0.0;
-        for (std::size_t i = 0; i + 5 < state.nodes.size(); i += 6) {
-            const std::size_t node = i / 6 + 1;
-            const double m = node < 10 ? 80.0 * l1
-                : node > 10            ? 10.0 * l2
-                                       : 0.5 * (80.0 * l1 + 10.0 * l2) + 2000.0;
-            e += 0.5 * m
-                * (state.nodes[i + 3] * state.nodes[i + 3]
-                   + state.nodes[i + 4] * state.nodes[i + 4]
-                   + state.nodes[i + 5] * state.nodes[i + 5]);
+        MooringLine line(p);
+        MooringLineState s = line.initialState(fairlead, anchor, 0.0);
+        const Vector3 axis = (fairlead.p_WKo_W - anchor.p_WKo_W).normalized();
+        const Matrix3 turn = rotation(pi / 6.0, axis);
+        for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
+            const Vector3 r
+                = turn * Vector3(s.nodes[i], s.nodes[i + 1], s.nodes[i + 2]);
+            for (int k = 0; k < 3; ++k) {
+                s.nodes[i + std::size_t(k)] = r[k];
+            }
         }
-        return e;
-    };
-    const double rest = line.evaluate(line.initialState(fairlead, anchor, 0.0),
-                                      fairlead, anchor, 0)
-                            .loads.potentialEnergy;
-    auto out = line.evaluate(s, fairlead, anchor, 0);
-    const double energy0 = out.loads.potentialEnergy + kinetic(s);
-    double dissipated = 0.0, worst = 0.0, largestKinetic = 0.0;
-    const double h = 0.01;
-    for (int k = 1; k <= 2000; ++k) {
-        const double before = out.loads.dissipatedPower;
-        line.advance(s, fairlead, anchor, h);
-        out = line.evaluate(s, fairlead, anchor, 0);
-        dissipated += 0.5 * h * (before + out.loads.dissipatedPower);
-        const double energy
-            = out.loads.potentialEnergy + kinetic(s) + dissipated;
-        worst = std::max(worst, std::abs(energy - energy0));
-        largestKinetic = std::max(largestKinetic, kinetic(s));
+        // node masses: mu l inside a section, the halves and the point at the joint
+        const double l1 = 40.0 / 10, l2 = 40.0 / 10;
+        const auto kinetic = [&](const MooringLineState& state) {
+            double e = 0.0;
+            for (std::size_t i = 0; i + 5 < state.nodes.size(); i += 6) {
+                const std::size_t node = i / 6 + 1;
+                const double m = node < 10 ? 80.0 * l1
+                    : node > 10            ? 10.0 * l2
+                                : 0.5 * (80.0 * l1 + 10.0 * l2) + 2000.0;
+                e += 0.5 * m
+                    * (state.nodes[i + 3] * state.nodes[i + 3]
+                       + state.nodes[i + 4] * state.nodes[i + 4]
+                       + state.nodes[i + 5] * state.nodes[i + 5]);
+            }
+            return e;
+        };
+        const double rest
+            = line.evaluate(line.initialState(fairlead, anchor, 0.0), fairlead,
+                            anchor, 0)
+                  .loads.potentialEnergy;
+        auto out = line.evaluate(s, fairlead, anchor, 0);
+        const double energy0 = out.loads.potentialEnergy + kinetic(s);
+        double dissipated = 0.0, worst = 0.0, largestKinetic = 0.0;
+        const double h = 0.01;
+        for (int k = 1; k <= 2000; ++k) {
+            const double before = out.loads.dissipatedPower;
+            line.advance(s, fairlead, anchor, h);
+            out = line.evaluate(s, fairlead, anchor, 0);
+            dissipated += 0.5 * h * (before + out.loads.dissipatedPower);
+            const double energy
+                = out.loads.potentialEnergy + kinetic(s) + dissipated;
+            worst = std::max(worst, std::abs(energy - energy0));
+            largestKinetic = std::max(largestKinetic, kinetic(s));
+        }
+        const double swing = energy0 - rest;
+        std::cout << (cvode ? "CVODE" : "trapezoid") << ": swing energy "
+                  << swing << " J, largest kinetic " << largestKinetic
+                  << " J, dissipated in 20 s " << dissipated
+                  << " J, largest imbalance " << worst << " J\n";
+        // Measured: a swing of 84904 J (potential energy above the rest
+        // shape), at most 14886 J kinetic, 84777 J dissipated in 20 s, the
+        // balance off by at most 1.04 J (1.2e-5 of the swing; CVODE at 1e-9:
+        // 0.34 J, 4.0e-6): the trapezoidal power integral over 0.01 s steps
+        // and the integrator's own error
+        EXPECT_GT(largestKinetic, 0.1 * swing); // it swings
+        EXPECT_GT(dissipated, 0.5 * swing); // drag and damping did work
+        EXPECT_LT(worst, 1e-4 * swing) << cvode;
     }
-    const double swing = energy0 - rest;
-    std::cout << "swing energy " << swing << " J, largest kinetic "
-              << largestKinetic << " J, dissipated in 20 s " << dissipated
-              << " J, largest imbalance " << worst << " J\n";
-    // Measured: a swing of 84904 J (potential energy above the rest
-    // shape), at most 14886 J kinetic, 84777 J dissipated in 20 s, the
-    // balance off by at most 1.04 J (1.2e-5 of the swing): the trapezoidal
-    // power integral over 0.01 s steps and the trapezoidal rule's own error
-    EXPECT_GT(largestKinetic, 0.1 * swing); // it swings
-    EXPECT_GT(dissipated, 0.5 * swing); // drag and damping did work
-    EXPECT_LT(worst, 1e-4 * swing);
 }
 
 TEST(MooringLineSections, UnusableSectionsAndPointsAreNamed)
