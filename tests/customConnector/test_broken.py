@@ -3,14 +3,18 @@ that tells the author what to fix.
 
 Each variant is made from a fresh copy of examples/customConnector with one
 mistake a connector author makes, built with the example's own Makefile,
-and must still validate against the FMI 2.0 XSD (the mistake is in the
-contract, not in the XML syntax):
+and must still validate against the FMI 2.0 XSD (the FMI 3.0 XSD for the
+FMI 3.0 twin bungee3.fmu: the mistake is in the contract, not in the XML
+syntax):
 
 - missing-output: the moments are declared as A.T[1..3], not
   A.M[1..3];
 - wrong-unit: A.F is declared in kN (with a kN unit definition), not N;
 - guid-mismatch: modelDescription.xml carries a new guid, the binary the
-  old one (the XML was edited without rebuilding the binary).
+  old one (the XML was edited without rebuilding the binary);
+- fmi3-dimensions: bungee3's A.r is declared an array of 4 elements;
+- fmi3-token-mismatch: bungee3's fmi3/modelDescription.xml carries a new
+  instantiationToken, the binary the old one.
 
 fmusim check must fail on each with the key words of its message, and
 rigidBodySim, loading it through the fmuConnector restraint, must stop with
@@ -74,23 +78,54 @@ def new_guid(xml):
     return edit(xml, "{6b1f0c7e-3d2a-4c59-9e41-b5a8d0f27c13}", "{0f5e2a9c-7b41-4d2e-8c3a-1e6d9b7f4a20}", 1)
 
 
-# name: (how the XML is broken, key words of fmusim check's FAIL line
-# (check name first), key words of rigidBodySim's fatal error)
+def position_of_four(xml):
+    return edit(xml, 'unit="m" start="0 0 0" description="position of A\'s reference point">\n      <Dimension start="3"/>',
+                'unit="m" start="0 0 0 0" description="position of A\'s reference point">\n      <Dimension start="4"/>', 1)
+
+
+def new_token(xml):
+    return edit(xml, "{d41c7a55-2f0e-4b8a-9c36-7e19a4b2f5d8}", "{7c0b3e91-58d4-4a6f-b2e7-0d9a1f6c3b85}", 1)
+
+
+# FMI version: (the example's files, its modelDescription.xml, make target)
+EXAMPLES = {
+    2: (customfmu.SOURCES, "modelDescription.xml", "bungee.fmu"),
+    3: (customfmu.SOURCES3, "fmi3/modelDescription.xml", "bungee3.fmu"),
+}
+
+# name: (FMI version, how the XML is broken, key words of fmusim check's
+# FAIL line (check name first), key words of rigidBodySim's fatal error)
 VARIANTS = {
     "missing-output": (
+        2,
         moment_renamed,
         ["FAIL required-variables", "missing A.M[1]"],
         ["mooring", "requires the output A.M", "does not declare it"],
     ),
     "wrong-unit": (
+        2,
         force_in_kN,
         ["FAIL units", "A.F[1] has unit 'kN'", "expected 'N'"],
         ["mooring", "A.F", "unit", "kN"],
     ),
     "guid-mismatch": (
+        2,
         new_guid,
         ["FAIL initialization", "GUID mismatch", "rebuild the binary and the XML together"],
         ["mooring", "fmi2Instantiate", "GUID mismatch", "rebuild the binary and the XML together"],
+    ),
+    "fmi3-dimensions": (
+        3,
+        position_of_four,
+        ["FAIL required-variables", "A.r is an array of dimensions [4], expected an array of dimensions [3]"],
+        ["mooring", "A.r is an array of dimensions [4], expected an array of dimensions [3]"],
+    ),
+    "fmi3-token-mismatch": (
+        3,
+        new_token,
+        ["FAIL initialization", "instantiationToken mismatch", "rebuild the binary and the XML together"],
+        ["mooring", "fmi3InstantiateCoSimulation", "instantiationToken mismatch",
+         "rebuild the binary and the XML together"],
     ),
 }
 
@@ -102,17 +137,18 @@ def main(names):
     failures = checks = 0
     before = customfmu.openfoam_side()
     for name in names or VARIANTS:
-        breaking, check_words, bridge_words = VARIANTS[name]
+        version, breaking, check_words, bridge_words = VARIANTS[name]
+        sources, xml_name, target = EXAMPLES[version]
         print(f"-- {name}", flush=True)
-        folder = customfmu.copy_example(name)
-        xml_path = os.path.join(folder, "modelDescription.xml")
+        folder = customfmu.copy_example(name, sources)
+        xml_path = os.path.join(folder, xml_name)
         with open(xml_path) as f:
             xml = breaking(f.read())
         with open(xml_path, "w") as f:
             f.write(xml)
-        fmu, _ = customfmu.build(folder)
+        fmu, _ = customfmu.build(folder, target)
 
-        problems = customfmu.schema_errors(xml_path)
+        problems = customfmu.schema_errors(xml_path) if version == 2 else customfmu.fmi3_schema_errors(fmu)
         checks += 1
         if problems:
             failures += 1

@@ -14,6 +14,9 @@ Columns are matched by name; the 3.0 FMU's n x 3 array shape (shape[i,j])
 is the 2.0 FMU's shape.x/y/z[i] (docs/connector-fmu-interface.md, FMI 3.0).
 
 Usage: sameAnswers.py FMUSIM FMU_DIR SCRATCH
+
+tests/customConnector/test_bungee3.py imports it (set FMUSIM first) to
+compare the example's two bungees the same way.
 """
 import csv
 import io
@@ -25,7 +28,7 @@ import sys
 import xml.etree.ElementTree as ET
 import zipfile
 
-FMUSIM, FMU_DIR, SCRATCH = sys.argv[1:4]
+FMUSIM = FMU_DIR = SCRATCH = None   # sys.argv[1:4] when run as a script
 
 
 def fmusim(*args):
@@ -157,4 +160,5 @@ def main():
 
 
 if __name__ == "__main__":
+    FMUSIM, FMU_DIR, SCRATCH = sys.argv[1:4]
     main()
