@@ -27,6 +27,12 @@
 //           current (currentSurface at waterLevel, currentSeabed at zb,
 //           linear in z between) plus the flow given at points along the line
 //
+// Sections (MooringLineParameters::sections, LineLayout.hpp): the line may
+// be made of sections from Q to P, each with its own l, EA, BA, mu, d and
+// Morison coefficients, and a point (clump weight or buoy: mass, volume,
+// CdA, Ca) at each joint, whose node carries half a segment of each
+// section and the point.
+//
 // The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
 // states (position and velocity of each free node) are integrated by the
 // implicit trapezoidal rule (default; MoorDyn's implicit Newmark): per

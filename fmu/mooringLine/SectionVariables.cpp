@@ -81,13 +81,13 @@ void SectionVariables::declareParameters(fmuExport::VariableTable& t)
     all_.first = fmi2ValueReference(t.size());
     for (int k = 2; k <= maxSections; ++k) {
         const std::string joint = "joint" + number(k - 1);
-        const std::string between = " at the joint of sections " + number(k - 1)
-            + " and " + number(k) + " (from B.p)";
+        const std::string between = "joint " + number(k - 1) + " (of sections "
+            + number(k - 1) + " and " + number(k) + " from B.p): ";
         Block b;
         for (const PointField& f : jointFields) {
             const Block one
                 = t.parameter(joint + "." + f.name, Shape::scalar, f.unit,
-                              f.description + between, {0.0});
+                              between + f.description, {0.0});
             b.first = b.size == 0 ? one.first : b.first;
             b.size += one.size;
         }
