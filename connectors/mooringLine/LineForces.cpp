@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "mooringLine/LineLayout.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -11,7 +10,6 @@ namespace connectors {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 const Vector3 zHat = Vector3::UnitZ();
 
 } // namespace

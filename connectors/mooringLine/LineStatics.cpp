@@ -13,8 +13,6 @@ namespace connectors {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 //- Potential energy of the line held still: strain, seabed, weight and
 //  buoyancy [J]
 double staticEnergy(const NodeForces& f)
