@@ -1,5 +1,5 @@
 """implicitNewmark against OpenFOAM's built-in rigid-body solvers on the
-single-body spring (tests/bridge/implicitcase.py), side by side:
+single-body spring (python/foamfmi/implicitcase.py), side by side:
 
 - cost: wall time per solve of rigidBodySim on the same model (built-in
   linearSpring and linearSpring FMU bodies), relative to Newmark with one
@@ -17,8 +17,7 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "bridge"))
-from implicitcase import MASS, growth, run_bodies, solver_entry, spring_model  # noqa: E402
+from foamfmi.implicitcase import MASS, growth, run_bodies, solver_entry, spring_model
 
 DT = 0.01
 SOLVERS = (("symplectic", 1), ("Newmark", 1), ("Newmark", 3), ("CrankNicolson", 3),

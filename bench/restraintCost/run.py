@@ -9,10 +9,8 @@ Run in the project's environment: tests/run-with-openfoam python3 bench/restrain
 """
 import os
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "tests", "bridge"))
-from bridgecase import Case, fmu_path, rigid_body, vec  # noqa: E402
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
 
 
 def fmu_restraint(name, isolation, fmu="linearSpring"):

@@ -13,7 +13,7 @@ non-finite number reached the output (never expected).
 import math
 
 import oscillator as osc
-from implicitcase import growth, spring_model
+from foamfmi.implicitcase import growth, spring_model
 from vcommon import has_nan, run_rigid, solver_entry
 
 DT = 0.01

@@ -10,15 +10,12 @@ import os
 import resource
 import statistics
 import subprocess
-import sys
+
+from foamfmi.bridgecase import fmu_path, vec  # noqa: F401
+from foamfmi.implicitcase import ImplicitCase, slider, solver_entry  # noqa: F401
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(TOP, "tests", "bridge"))
-
-from bridgecase import fmu_path, vec  # noqa: E402,F401
-from implicitcase import ImplicitCase, slider, solver_entry  # noqa: E402,F401
-
 FMUSIM = os.path.join(TOP, "build", "bin", "fmusim")
 DOCUMENTED = os.path.join(HERE, "documented.csv")
 

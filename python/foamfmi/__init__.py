@@ -18,6 +18,12 @@ the benchmarks and the tests.
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
   plots           figures through gnuplot: terminal, window, a body's response
   cli             the scripts' command lines (argparse) and error exits
+  bridgecase      throw-away rigid-body cases with no fluid, run by
+                  rigidBodySim (the bridge's tests and benchmarks)
+  implicitcase    the same loading implicitNewmark's library; the
+                  single-body spring model
+  sixdofcase      sixDoFRigidBodyMotion cases with no fluid, run by
+                  sixDoFSim
 
 etc/bashrc puts the folder above this package on PYTHONPATH. Only
 harmonics needs numpy (Debian's python3-numpy, /usr/bin/python3).

@@ -22,7 +22,7 @@ import subprocess
 import sys
 import tempfile
 
-from bridgecase import foam_file
+from foamfmi.bridgecase import foam_file
 
 BLOCK_MESH = """
 vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1));

@@ -20,7 +20,7 @@ offset is printed, not checked.
 import math
 import sys
 
-from bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import Case, fmu_path, vec
 
 L, EA, W, DEPTH, MASS = 100.0, 5e7, 700.0, 40.0, 1e3
 DIAMETER, RHO, G = 0.1, 1025.0, 9.81

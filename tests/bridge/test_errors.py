@@ -8,7 +8,7 @@ import os
 import sys
 import tempfile
 
-from bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
 
 
 def model(fmu, parameters, body_b="", body="hull", extra=""):

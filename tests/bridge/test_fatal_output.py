@@ -34,8 +34,8 @@ import subprocess
 import sys
 import time
 
-from bridgecase import Case, fmu_path, rigid_body, vec
-from sixdofcase import SixDoFCase, sixdof_body
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 
 DT, FAULT_TIME, END = 0.01, 0.3, 1.0
 

@@ -20,7 +20,7 @@ distance 0.2500406 m (symplectic, 3 solves: the regularised law's own) to
 import math
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body
+from foamfmi.bridgecase import Case, fmu_path, rigid_body
 
 M, V0, FC, VS = 5.0, 0.2, 0.4, 1e-3
 DIRECTION = (0.6, 0.8, 0.0)

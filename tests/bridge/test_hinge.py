@@ -32,7 +32,7 @@ planar, so the alignment penalty carries no load (misalignment 0).
 import math
 import sys
 
-from bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import Case, fmu_path, vec
 
 M, LENGTH = 2.0, 0.5                # mass [kg] and length [m] of each rod
 I_ROD = M * LENGTH**2 / 12          # inertia across the rod, about its centre

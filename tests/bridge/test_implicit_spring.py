@@ -20,7 +20,7 @@ linearSpring FMU. For k dt^2/m from 1e-4 to 1e6, over 50 periods (at least
 import math
 import sys
 
-from implicitcase import (
+from foamfmi.implicitcase import (
     MASS, X0, growth, run_bodies, solver_entry, spring_errors, spring_model,
 )
 

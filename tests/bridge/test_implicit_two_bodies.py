@@ -15,8 +15,8 @@ spring FMU, no gravity, no damping.
 import math
 import sys
 
-from bridgecase import fmu_path, vec
-from implicitcase import ImplicitCase, run_bodies, solver_entry
+from foamfmi.bridgecase import fmu_path, vec
+from foamfmi.implicitcase import ImplicitCase, run_bodies, solver_entry
 
 M1, M2, L0, STRETCH, INERTIA = 2.0, 3.0, 1.0, 0.1, 0.1
 MU = M1 * M2 / (M1 + M2)

@@ -15,7 +15,7 @@ import shutil
 import sys
 import tempfile
 
-from bridgecase import Case
+from foamfmi.bridgecase import Case
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "massEcho"))
 import build  # noqa: E402

@@ -22,7 +22,7 @@ printed), with FOAM FATAL IO ERROR, the entry's path in the dictionary
 import os
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
 
 
 def model(fmu, parameters, z=0.0):

@@ -11,7 +11,7 @@ import shutil
 import subprocess
 import sys
 
-from bridgecase import Case
+from foamfmi.bridgecase import Case
 from test_two_bodies import model
 
 

@@ -24,8 +24,8 @@ import os
 import shutil
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body, vec
-from implicitcase import ImplicitCase
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.implicitcase import ImplicitCase
 import test_catenary_world as catenary
 import test_hinge as hinge
 import test_two_bodies as two_bodies

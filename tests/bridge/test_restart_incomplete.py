@@ -38,11 +38,11 @@ import subprocess
 import sys
 import time
 
-from implicitcase import ImplicitCase
+from foamfmi.implicitcase import ImplicitCase
 import test_added_mass_entries as added_mass
-from sixdofcase import SixDoFCase
+from foamfmi.sixdofcase import SixDoFCase
 from test_sixdof_spring_world import CENTRE, M, J, fmu_spring
-from sixdofcase import sixdof_body
+from foamfmi.sixdofcase import sixdof_body
 from test_two_bodies import model
 
 END, DT, WRITE = 1.0, 0.005, 0.25

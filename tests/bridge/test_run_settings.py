@@ -16,8 +16,8 @@ import os
 import shutil
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body, vec
-from sixdofcase import SixDoFCase, sixdof_body
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 
 PARAMETERS = f"stiffness 50; damping 0.5; restLength 0.5; A.p {vec((0.1, 0, 0.05))}; B.p {vec((0.3, 0.2, 1.2))};"
 

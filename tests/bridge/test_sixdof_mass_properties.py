@@ -15,7 +15,7 @@ import shutil
 import sys
 import tempfile
 
-from sixdofcase import SixDoFCase, sixdof_body, vec
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body, vec
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "massEcho"))
 import build  # noqa: E402

@@ -31,7 +31,7 @@ import shutil
 import subprocess
 import sys
 
-from sixdofcase import SixDoFCase, fmu_path, sixdof_body, vec
+from foamfmi.sixdofcase import SixDoFCase, fmu_path, sixdof_body, vec
 
 CENTRE = (0.0, 0.0, 0.6)
 ANCHOR = (0.3, 0.2, 1.2)

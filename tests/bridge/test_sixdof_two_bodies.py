@@ -27,7 +27,7 @@ import math
 import re
 import sys
 
-from sixdofcase import SixDoFCase, fmu_path, sixdof_body, vec
+from foamfmi.sixdofcase import SixDoFCase, fmu_path, sixdof_body, vec
 
 K, L0, M1, M2, X0 = 50.0, 0.5, 2.0, 3.0, 0.6
 W = math.sqrt(K * (M1 + M2) / (M1 * M2))

@@ -13,7 +13,7 @@ must match the built-in one in every combination.
 """
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
 
 ANCHOR = (0.3, 0.2, 1.2)
 ATTACHMENT = (0.1, 0.0, 0.05)  # body frame, from the centre of mass

@@ -10,7 +10,7 @@ as the time step shrinks.
 import math
 import sys
 
-from bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
 
 M1, M2, K, L0 = 2.0, 3.0, 50.0, 1.0
 STRETCH = 0.1  # initial extension of the spring [m]

@@ -27,7 +27,7 @@ import sys
 import tempfile
 import zipfile
 
-from bridgecase import Case, fmu_path
+from foamfmi.bridgecase import Case, fmu_path
 from test_errors import GOOD, model
 
 INTERFACE_CHECKS = ("required-variables", "optional-variables", "units")

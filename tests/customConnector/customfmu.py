@@ -7,7 +7,6 @@ import hashlib
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -17,8 +16,6 @@ FMI3_INCLUDE = os.path.join(FMI_INCLUDE, "fmi3")
 SOURCES = ("bungee.c", "modelDescription.xml", "Makefile")
 # The FMI 3.0 twin (make bungee3.fmu)
 SOURCES3 = ("bungee3.c", "fmi3/modelDescription.xml", "fmi3/terminalsAndIcons.xml", "Makefile")
-
-sys.path.insert(0, os.path.join(TOP, "tests", "bridge"))
 
 
 class Checks:

@@ -28,7 +28,7 @@ import re
 import sys
 
 import customfmu
-from bridgecase import Case, rigid_body, vec
+from foamfmi.bridgecase import Case, rigid_body, vec
 
 MODEL = """
     solver {{ type symplectic; }}

@@ -26,7 +26,7 @@ import shutil
 import sys
 
 import customfmu
-from bridgecase import Case, foam_file, rigid_body, vec
+from foamfmi.bridgecase import Case, foam_file, rigid_body, vec
 
 M, G = 2.0, 9.81
 ANCHOR = (0.0, 0.0, 0.0)

@@ -25,9 +25,8 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "bridge"))
-from bridgecase import Case, rigid_body, vec  # noqa: E402
-from sixdofcase import SixDoFCase, sixdof_body  # noqa: E402
+from foamfmi.bridgecase import Case, rigid_body, vec
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 
 DT, END, FAULT_TIME = 1.0 / 64, 0.5, 0.25
 SIGNALS = {

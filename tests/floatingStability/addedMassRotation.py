@@ -49,9 +49,7 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "bridge"))
-from bridgecase import foam_file  # noqa: E402
+from foamfmi.bridgecase import foam_file
 
 DT = 0.001
 STATE = os.path.join("uniform", "rigidBodyMotionState")

@@ -18,8 +18,8 @@ import sys
 import zipfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "bridge"))
-import bridgecase  # noqa: E402
-import sixdofcase  # noqa: E402
+from foamfmi import bridgecase  # noqa: E402
+from foamfmi import sixdofcase  # noqa: E402
 import test_catenary_world  # noqa: E402
 import test_hinge  # noqa: E402
 import test_sixdof_two_bodies  # noqa: E402

@@ -4,7 +4,7 @@ library, runs that may diverge, and the single-body spring model.
 import math
 import os
 
-from bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import Case, fmu_path, vec
 
 LIBS = 'libs ("libfoamFmiBridge.so" "libimplicitRigidBodySolvers.so");'
 

@@ -7,7 +7,7 @@ names a body of the sixDoFRigidBodyDisplacement condition), and 'g'.
 import os
 import subprocess
 
-from bridgecase import Case, foam_file, fmu_path, vec  # noqa: F401
+from foamfmi.bridgecase import Case, foam_file, fmu_path, vec  # noqa: F401
 
 
 def sixdof_body(mass, inertia, centre, solver="symplectic", restraints=""):
