@@ -121,6 +121,7 @@ public:
     :
         fmu_
         (
+            runTime,
             dict.get<fileName>("fmu").expand(),
             name,
             dict,

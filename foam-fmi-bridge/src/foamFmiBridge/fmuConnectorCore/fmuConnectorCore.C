@@ -17,6 +17,11 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+namespace Foam
+{
+    defineTypeNameAndDebug(fmuConnectorCore, 0);
+}
+
 const Foam::Enum<Foam::fmuConnectorCore::restartMode>
 Foam::fmuConnectorCore::restartModeNames
 ({
@@ -242,25 +247,33 @@ Foam::string Foam::fmuConnectorCore::listed(const wordList& words)
 }
 
 
-Foam::HashTable<Foam::fmuConnectorCore*>& Foam::fmuConnectorCore::liveCores()
+Foam::word Foam::fmuConnectorCore::registryName(const word& restraintName)
 {
-    static HashTable<fmuConnectorCore*> live;
-    return live;
+    return typeName + '.' + restraintName;
 }
 
 
 Foam::fmuConnectorCore* Foam::fmuConnectorCore::find
 (
+    const objectRegistry& obr,
     const word& restraintName
 )
 {
-    return liveCores().lookup(restraintName, nullptr);
+    return obr.time().getObjectPtr<fmuConnectorCore>
+    (
+        registryName(restraintName)
+    );
 }
 
 
-Foam::wordList Foam::fmuConnectorCore::names()
+Foam::wordList Foam::fmuConnectorCore::names(const objectRegistry& obr)
 {
-    return liveCores().sortedToc();
+    wordList names(obr.time().sortedNames<fmuConnectorCore>());
+    for (word& name : names)
+    {
+        name = name.substr(typeName.size() + 1);
+    }
+    return names;
 }
 
 
@@ -284,6 +297,7 @@ Foam::fileName Foam::fmuConnectorCore::caseFile
 
 Foam::fmuConnectorCore::fmuConnectorCore
 (
+    const Time& runTime,
     const fileName& file,
     const word& restraintName,
     const dictionary& restraintDict,
@@ -292,6 +306,18 @@ Foam::fmuConnectorCore::fmuConnectorCore
     const runSettings& run
 )
 :
+    regIOobject
+    (
+        IOobject
+        (
+            registryName(restraintName),
+            runTime.timeName(),
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    ),
     file_(file),
     restraintName_(restraintName),
     canRollback_(false),
@@ -401,9 +427,10 @@ Foam::fmuConnectorCore::fmuConnectorCore
             << exit(FatalIOError);
     }
 
-    // The first core of a name is the one found by name (the two
-    // restraints of a sixDoF connector share one core)
-    liveCores().insert(restraintName_, this);
+    // Registered once loaded. The first core of a name is the one found by
+    // name: the registry keeps it when another of that name checks in (the
+    // two restraints of a sixDoF connector share one core)
+    checkIn();
 
     if (!canRollback_)
     {
@@ -418,14 +445,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
 Foam::fmuConnectorCore::~fmuConnectorCore()
-{
-    HashTable<fmuConnectorCore*>& live = liveCores();
-    const auto iter = live.cfind(restraintName_);
-    if (iter.found() && *iter == this)
-    {
-        live.erase(restraintName_);
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

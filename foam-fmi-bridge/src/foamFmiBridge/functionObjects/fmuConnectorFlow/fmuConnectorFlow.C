@@ -78,7 +78,7 @@ void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
         vectorField flow;
         if (flows.readIfPresent(connector, flow))
         {
-            fmuConnectorCore::find(connector)->setFlow(flow);
+            fmuConnectorCore::find(time_, connector)->setFlow(flow);
         }
     }
     Info<< "Function object " << name() << ": water velocity at the lines"
@@ -115,7 +115,8 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
 )
 {
     OFstream& os = files(i);
-    const fmuConnectorCore& core = *fmuConnectorCore::find(connectors_[i]);
+    const fmuConnectorCore& core =
+        *fmuConnectorCore::find(time_, connectors_[i]);
 
     writeHeader(os, "Water velocity at the shape points of " + connectors_[i]);
     writeCommented(os, "Time");
@@ -178,7 +179,8 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
     {
         for (const word& connector : connectors_)
         {
-            const fmuConnectorCore* core = fmuConnectorCore::find(connector);
+            const fmuConnectorCore* core =
+                fmuConnectorCore::find(time_, connector);
             if (!core)
             {
                 FatalIOErrorInFunction(dict)
@@ -186,7 +188,7 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
                     << " names " << connector << ", which is not an"
                     << " fmuConnector restraint of the case; the restraints"
                     << " with a connector FMU are: "
-                    << fmuConnectorCore::listed(fmuConnectorCore::names())
+                    << fmuConnectorCore::listed(fmuConnectorCore::names(time_))
                        .c_str()
                     << exit(FatalIOError);
             }
@@ -225,7 +227,8 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
     {
         forAll(connectors_, i)
         {
-            points[i] = fmuConnectorCore::find(connectors_[i])->shapePoints();
+            points[i] =
+                fmuConnectorCore::find(time_, connectors_[i])->shapePoints();
         }
     }
     Pstream::scatter(points);
@@ -262,7 +265,7 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
         {
             flows[i] = sums[i]/max(counts[i], scalar(1));
             const vectorField& flow = flows[i];
-            fmuConnectorCore::find(connectors_[i])->setFlow(flow);
+            fmuConnectorCore::find(time_, connectors_[i])->setFlow(flow);
 
             OFstream& os = files(i);
             // The time to the file's precision, not the time name's

@@ -133,6 +133,7 @@ void Foam::RBD::restraints::fmuConnector::load()
     (
         new fmuConnectorCore
         (
+            runTime,
             file,
             name_,
             coeffs_,

@@ -166,6 +166,7 @@ Foam::sixDoFConnector::sixDoFConnector
     (
         new fmuConnectorCore
         (
+            runTime,
             fmuConnectorCore::caseFile(dict_.get<fileName>("fmu"), runTime),
             name_,
             dict_,
