@@ -13,6 +13,7 @@ License
 #include "DynamicList.H"
 #include "OFstream.H"
 #include "IFstream.H"
+#include "foamVtkSeriesWriter.H"
 
 #include <algorithm>
 #include <charconv>
@@ -306,38 +307,20 @@ void Foam::fmuConnectorOutput::writeShape() const
     // those from its start on), then this one; written to a temporary file
     // and renamed, so that a reader never sees half a file
     const fileName series(dir/(name_ + ".vtk.series"));
-    const scalar t = runTime.value();
-    std::string entries;
-    {
-        std::ifstream is(series);
-        std::string line;
-        while (std::getline(is, line))
-        {
-            const auto at = line.find("\"time\"");
-            if (line.find("\"name\"") == std::string::npos || at == line.npos)
-            {
-                continue;
-            }
-            const std::string rest(line.substr(line.find(':', at) + 1));
-            if (std::strtod(rest.c_str(), nullptr) < t - 0.5*runTime.deltaTValue())
-            {
-                entries += line.substr(0, line.find_last_not_of(", ") + 1);
-                entries += ",\n";
-            }
-        }
-    }
-    OStringStream entry;
-    entry.precision(IOstream::defaultPrecision());
-    entry
-        << "    { \"name\": \"" << file.c_str() << "\", \"time\": " << t
-        << " }\n";
-    entries += entry.str();
+    vtk::seriesWriter entries;
+    entries.load
+    (
+        series,
+        false,
+        runTime.value() - 0.5*runTime.deltaTValue()
+    );
+    entries.append(runTime.value(), file);
 
     const fileName tmp(series + ".tmp");
     {
-        std::ofstream os(tmp);
-        os  << "{\n  \"file-series-version\": \"1.0\",\n  \"files\": [\n"
-            << entries << "  ]\n}\n";
+        OFstream os(tmp);
+        os.precision(IOstream::defaultPrecision());
+        entries.print(os);
         if (!os.good())
         {
             FatalErrorInFunction
