@@ -39,9 +39,10 @@ def with_fmus(directory, make_model):
 
 
 def as_2_0(text):
-    """A 3.0 table or file in the 2.0 names: shape[i,1] is shape.x[i]."""
-    return re.sub(r"shape\[(\d+),([123])\]",
-                  lambda m: f"shape.{'xyz'[int(m.group(2)) - 1]}[{m.group(1)}]",
+    """A 3.0 table or file in the 2.0 names: an n x 3 array of points,
+    shape[i,1] or joint[i,1], is shape.x[i] or joint.x[i]."""
+    return re.sub(r"(shape|joint)\[(\d+),([123])\]",
+                  lambda m: f"{m.group(1)}.{'xyz'[int(m.group(3)) - 1]}[{m.group(2)}]",
                   text)
 
 
