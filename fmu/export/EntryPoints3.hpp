@@ -38,12 +38,15 @@ public:
 
     //- The table's value references of the elements of `vr`, in order;
     //  UsageError for a value reference that is no FMI 3.0 variable or
-    //  when the elements are not `nValues`
-    std::vector<fmi2ValueReference> elements(const fmi3ValueReference vr[],
-                                             std::size_t nvr,
-                                             std::size_t nValues) const
+    //  when the elements are not `nValues`. The list is the instance's own
+    //  buffer, valid until the next call (an instance is called from one
+    //  thread at a time): a get or set allocates nothing once it has grown
+    const std::vector<fmi2ValueReference>&
+    elements(const fmi3ValueReference vr[], std::size_t nvr,
+             std::size_t nValues) const
     {
-        std::vector<fmi2ValueReference> all;
+        std::vector<fmi2ValueReference>& all = elements_;
+        all.clear();
         for (std::size_t i = 0; i < nvr; ++i) {
             const ArrayVariable* v = variables_.find(vr[i]);
             if (v == nullptr) {
@@ -62,6 +65,9 @@ public:
     }
 
 private:
+    //- elements()'s list
+    mutable std::vector<fmi2ValueReference> elements_;
+
     //- FmuInstance's fmi2 logger, passed on to the fmi3 one
     static void forward(fmi2ComponentEnvironment environment, fmi2String,
                         fmi2Status status, fmi2String category,

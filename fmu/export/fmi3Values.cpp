@@ -25,7 +25,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance instance,
 {
     return guarded3(
         instance, "fmi3GetFloat64", readableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference> e
+            const std::vector<fmi2ValueReference>& e
                 = i.elements(valueReferences, nValueReferences, nValues);
             i.core().getReal(e.data(), e.size(), values);
         });
@@ -38,7 +38,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance instance,
 {
     return guarded3(
         instance, "fmi3SetFloat64", writableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference> e
+            const std::vector<fmi2ValueReference>& e
                 = i.elements(valueReferences, nValueReferences, nValues);
             i.core().setReal(e.data(), e.size(), values);
         });
@@ -51,7 +51,7 @@ fmi3Status fmi3GetBoolean(fmi3Instance instance,
 {
     return guarded3(
         instance, "fmi3GetBoolean", readableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference> e
+            const std::vector<fmi2ValueReference>& e
                 = i.elements(valueReferences, nValueReferences, nValues);
             std::vector<fmi2Boolean> b(e.size());
             i.core().getBoolean(e.data(), e.size(), b.data());
@@ -68,7 +68,7 @@ fmi3Status fmi3SetBoolean(fmi3Instance instance,
 {
     return guarded3(
         instance, "fmi3SetBoolean", writableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference> e
+            const std::vector<fmi2ValueReference>& e
                 = i.elements(valueReferences, nValueReferences, nValues);
             i.core().setBoolean(e.data(), e.size());
         });
