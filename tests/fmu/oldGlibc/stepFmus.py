@@ -1,7 +1,7 @@
-"""Load, instantiate, initialize, step and free FMI 2.0 co-simulation FMUs
-through their C API alone (ctypes), as any FMI tool would, with nothing of
-the project but this file: it runs in the Debian 11 root of
-runInDebian11.sh with that root's python3 and glibc.
+"""Load, instantiate, initialize, step and free FMI 2.0 and FMI 3.0
+co-simulation FMUs through their C API alone (ctypes), as any FMI tool
+would, with nothing of the project but this file: it runs in the Debian 11
+root of runInDebian11.sh with that root's python3 and glibc.
 
     python3 stepFmus.py [options] model.fmu...
 
@@ -12,14 +12,25 @@ runInDebian11.sh with that root's python3 and glibc.
     --expect-glibc 2.xx    fail unless the process runs on that glibc
     --set MODEL:NAME=VALUE start value of variable NAME of the FMU whose
                            modelIdentifier is MODEL (repeatable)
+    --same-versions        fail unless the FMI 2.0 and 3.0 FMUs of one
+                           modelIdentifier, both given, give bitwise the
+                           same outputs (see compare_versions)
 
-The GUID, the value references and the start values come from each FMU's
-modelDescription.xml. After initialization body B moves away from its
-start position with velocity U_B (m/s) and both bodies turn, for STEPS
-steps of H seconds; the inputs are set to their values at t + h before
-fmi2DoStep(t, h), then every Real output is read and must be finite.
-Any status other than fmi2OK fails, with the FMU's log messages printed.
-Python 3.9 or later (Debian 11's); x86-64 Linux (binaries/linux64).
+The archive's fmiVersion picks the API; a 3.0 FMU's results are named
+fmi3/<modelIdentifier>. The GUID (instantiationToken), the
+value references and the start values come from each FMU's
+modelDescription.xml. A 3.0 FMU's arrays (Dimension elements: a start, or
+a structural parameter's valueReference) are taken apart into elements
+under FMI 2.0's names (docs/connector-fmu-interface.md, "FMI 3.0"): B.r[2]
+is element 2 of the 3-array B.r, A.R[1,2] element 2 of the 3 x 3 array
+A.R (row-major), shape[i,1] is 2.0's shape.x[i]; an array is set and got
+whole. After initialization body B moves away from its start position with
+velocity U_B (m/s) and both bodies turn, for STEPS steps of H seconds; the
+inputs are set to their values at t + h before the step from t to t + h
+(fmi3DoStep without event mode or early return), then every Real (Float64)
+output is read and must be finite. Any status other than OK fails, with
+the FMU's log messages printed. Python 3.9 or later (Debian 11's); x86-64
+Linux (binaries/linux64, binaries/x86_64-linux).
 """
 import argparse
 import ctypes
@@ -41,15 +52,18 @@ U_B = (0.4, 0.3, -0.2)  # m/s, added to B.r and B.v
 OMEGA = {"A.omega[1]": -0.1, "B.omega[3]": 0.5}  # rad/s, added to the start
 RTOL = 1e-9  # --reference: agreement, relative to an output's scale
 
-FMI2_OK = 0
+OK = 0  # fmi2OK, fmi3OK
 FMI2_CO_SIMULATION = 1
-STATUS = ("fmi2OK", "fmi2Warning", "fmi2Discard", "fmi2Error", "fmi2Fatal", "fmi2Pending")
+STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")  # fmi2OK, fmi3OK, ...
 FOREIGN = ("libstdc++", "libsundials")  # what an FMU carries inside
 
 # fmi2CallbackLogger is variadic; on x86-64 its first variadic argument
 # arrives as a sixth one would, which is all a "%s" message needs.
 LOGGER = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int,
                           ctypes.c_char_p, ctypes.c_char_p, ctypes.c_void_p)
+# fmi3LogMessageCallback: the message comes formatted
+LOGGER3 = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int, ctypes.c_char_p,
+                           ctypes.c_char_p)
 
 
 class Callbacks(ctypes.Structure):
@@ -62,8 +76,9 @@ class Failure(Exception):
     pass
 
 
-def status_name(status):
-    return STATUS[status] if 0 <= status < len(STATUS) else str(status)
+def status_name(status, version="2"):
+    prefix = "fmi" + version
+    return prefix + STATUS[status] if 0 <= status < len(STATUS) else str(status)
 
 
 def libc():
@@ -93,64 +108,134 @@ def loaded_objects():
     return names
 
 
-def model_description(folder):
-    """(modelIdentifier, guid, {name: (valueReference, causality, start)})
-    of the Real variables."""
-    root = ET.parse(os.path.join(folder, "modelDescription.xml")).getroot()
-    cs = root.find("CoSimulation")
-    if cs is None:
-        raise Failure("no <CoSimulation> in modelDescription.xml")
-    variables = {}
-    for v in root.find("ModelVariables"):
-        real = v.find("Real")
-        if real is not None:
-            start = real.get("start")
-            variables[v.get("name")] = (int(v.get("valueReference")), v.get("causality"),
-                                        None if start is None else float(start))
-    return cs.get("modelIdentifier"), root.get("guid"), variables
+def element_names(name, dimensions):
+    """FMI 2.0's names of the elements of a 3.0 array, row-major."""
+    names = [name]
+    for n in dimensions:
+        names = [f"{base}{',' if '[' in base else '['}{i}" for base in names
+                 for i in range(1, n + 1)]
+    return [n + "]" for n in names] if dimensions else names
 
 
-def inputs_at(t, variables):
-    """{valueReference: value} of the moving inputs at time t."""
+class Description:
+    """What a run needs of modelDescription.xml: version ("2" or "3"),
+    identifier, token (GUID or instantiationToken), sizes {valueReference:
+    elements of its array (1 for a scalar)} and elements {2.0 name:
+    (valueReference, causality, start, offset in its array)} of the Real
+    (Float64) variables."""
+
+    def __init__(self, folder):
+        root = ET.parse(os.path.join(folder, "modelDescription.xml")).getroot()
+        self.version = root.get("fmiVersion", "")[:1]
+        if self.version not in ("2", "3"):
+            raise Failure(f"fmiVersion {root.get('fmiVersion')!r}: neither 2.0 nor 3.0")
+        cs = root.find("CoSimulation")
+        if cs is None:
+            raise Failure("no <CoSimulation> in modelDescription.xml")
+        self.identifier = cs.get("modelIdentifier")
+        self.token = root.get("guid" if self.version == "2" else "instantiationToken")
+        self.sizes, self.elements = {}, {}
+        variables = root.find("ModelVariables")
+        if self.version == "2":
+            for v in variables:
+                real = v.find("Real")
+                if real is not None:
+                    self.add(v.get("name"), [], v.get("valueReference"), v.get("causality"),
+                             real.get("start"))
+            return
+        structural = {v.get("valueReference"): v.get("start") for v in variables}
+        for v in variables:
+            if v.tag != "Float64":
+                continue
+            dimensions = []
+            for d in v.findall("Dimension"):
+                start = d.get("start") or structural.get(d.get("valueReference"))
+                if start is None:
+                    raise Failure(f"{v.get('name')}: a Dimension without start or a known "
+                                  f"structural parameter (valueReference {d.get('valueReference')})")
+                dimensions.append(int(start))
+            self.add(v.get("name"), dimensions, v.get("valueReference"), v.get("causality"),
+                     v.get("start"))
+
+    def add(self, name, dimensions, reference, causality, start):
+        names = element_names(name, dimensions)
+        starts = [None] * len(names) if start is None else [float(x) for x in start.split()]
+        if len(starts) != len(names):
+            raise Failure(f"{name}: {len(starts)} start values for {len(names)} elements")
+        reference = int(reference)
+        self.sizes[reference] = len(names)
+        for offset, (element, value) in enumerate(zip(names, starts)):
+            self.elements[element] = (reference, causality, value, offset)
+
+
+def inputs_at(t, elements):
+    """{element name: value} of the moving inputs at time t."""
     values = {}
     for i, u in enumerate(U_B):
         for name, value in ((f"B.r[{i + 1}]", u * t), (f"B.v[{i + 1}]", u)):
-            if name in variables and variables[name][1] == "input":
-                values[variables[name][0]] = variables[name][2] + value
+            if name in elements and elements[name][1] == "input":
+                values[name] = elements[name][2] + value
     for name, omega in OMEGA.items():
-        if name in variables and variables[name][1] == "input":
-            values[variables[name][0]] = variables[name][2] + omega
+        if name in elements and elements[name][1] == "input":
+            values[name] = elements[name][2] + omega
     return values
 
 
 class Fmu:
-    """One FMU's binary, loaded from its unpacked folder."""
+    """One FMU's binary, loaded from its unpacked folder, and its instance:
+    the calls of FMI 2.0 or 3.0 (description.version)."""
 
-    def __init__(self, folder, identifier):
-        path = os.path.join(folder, "binaries", "linux64", identifier + ".so")
+    def __init__(self, folder, description):
+        self.description = description
+        self.version = description.version
+        self.fmi = "fmi" + self.version
+        platform = "linux64" if self.version == "2" else "x86_64-linux"
+        path = os.path.join(folder, "binaries", platform, description.identifier + ".so")
         try:
             self.lib = ctypes.CDLL(path)
         except OSError as error:
             raise Failure(f"dlopen failed: {error}")
         self.messages = []
-        self.logger = LOGGER(self.log)
-        self.callbacks = Callbacks(self.logger, ctypes.cast(libc().calloc, ctypes.c_void_p),
-                                   ctypes.cast(libc().free, ctypes.c_void_p), None, None)
-        self.lib.fmi2Instantiate.restype = ctypes.c_void_p
-        self.lib.fmi2Instantiate.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p,
-                                             ctypes.c_char_p, ctypes.POINTER(Callbacks),
-                                             ctypes.c_int, ctypes.c_int]
-        self.lib.fmi2SetupExperiment.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_double,
-                                                 ctypes.c_double, ctypes.c_int, ctypes.c_double]
-        self.lib.fmi2DoStep.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double,
-                                        ctypes.c_int]
-        for name in ("fmi2SetReal", "fmi2GetReal"):
-            getattr(self.lib, name).argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_uint),
-                                                ctypes.c_size_t, ctypes.POINTER(ctypes.c_double)]
-        for name in ("fmi2EnterInitializationMode", "fmi2ExitInitializationMode",
-                     "fmi2Terminate", "fmi2FreeInstance"):
-            getattr(self.lib, name).argtypes = [ctypes.c_void_p]
-        self.lib.fmi2FreeInstance.restype = None
+        self.component = None
+        handle = ctypes.c_void_p
+        real = ctypes.POINTER(ctypes.c_double)
+        if self.version == "2":
+            self.logger = LOGGER(self.log)
+            self.callbacks = Callbacks(self.logger, ctypes.cast(libc().calloc, handle),
+                                       ctypes.cast(libc().free, handle), None, None)
+            self.lib.fmi2Instantiate.restype = handle
+            self.lib.fmi2Instantiate.argtypes = [ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p,
+                                                 ctypes.c_char_p, ctypes.POINTER(Callbacks),
+                                                 ctypes.c_int, ctypes.c_int]
+            self.lib.fmi2SetupExperiment.argtypes = [handle, ctypes.c_int, ctypes.c_double,
+                                                     ctypes.c_double, ctypes.c_int,
+                                                     ctypes.c_double]
+            self.lib.fmi2EnterInitializationMode.argtypes = [handle]
+            self.lib.fmi2DoStep.argtypes = [handle, ctypes.c_double, ctypes.c_double,
+                                            ctypes.c_int]
+            values = [handle, ctypes.POINTER(ctypes.c_uint), ctypes.c_size_t, real]
+        else:
+            flag = ctypes.c_bool
+            self.logger = LOGGER3(self.log3)
+            self.lib.fmi3InstantiateCoSimulation.restype = handle
+            self.lib.fmi3InstantiateCoSimulation.argtypes = [
+                ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p, flag, flag, flag, flag,
+                ctypes.POINTER(ctypes.c_uint32), ctypes.c_size_t, handle, LOGGER3, handle]
+            self.lib.fmi3EnterInitializationMode.argtypes = [handle, flag, ctypes.c_double,
+                                                             ctypes.c_double, flag,
+                                                             ctypes.c_double]
+            self.lib.fmi3DoStep.argtypes = [handle, ctypes.c_double, ctypes.c_double, flag,
+                                            ctypes.POINTER(flag), ctypes.POINTER(flag),
+                                            ctypes.POINTER(flag), real]
+            values = [handle, ctypes.POINTER(ctypes.c_uint32), ctypes.c_size_t, real,
+                      ctypes.c_size_t]
+        self.set_name, self.get_name = ("SetReal", "GetReal") if self.version == "2" \
+            else ("SetFloat64", "GetFloat64")
+        for name in (self.set_name, self.get_name):
+            getattr(self.lib, self.fmi + name).argtypes = values
+        for name in ("ExitInitializationMode", "Terminate", "FreeInstance"):
+            getattr(self.lib, self.fmi + name).argtypes = [handle]
+        getattr(self.lib, self.fmi + "FreeInstance").restype = None
 
     def log(self, environment, instance, status, category, message, argument):
         text = (message or b"").decode(errors="replace")
@@ -158,80 +243,139 @@ class Fmu:
             text = text.replace("%s", ctypes.string_at(argument).decode(errors="replace"))
         self.messages.append(f"[{status_name(status)}] {text}")
 
+    def log3(self, environment, status, category, message):
+        text = (message or b"").decode(errors="replace")
+        self.messages.append(f"[{status_name(status, '3')}] {text}")
+
     def call(self, name, *args):
-        status = getattr(self.lib, name)(*args)
-        if status != FMI2_OK:
+        status = getattr(self.lib, self.fmi + name)(self.component, *args)
+        if status != OK:
             log = "".join("\n    " + m for m in self.messages) or " (nothing logged)"
-            raise Failure(f"{name} returned {status_name(status)}; the FMU's log:{log}")
+            raise Failure(f"{self.fmi}{name} returned {status_name(status, self.version)}; "
+                          f"the FMU's log:{log}")
 
-    def set_real(self, component, values):
-        if values:
-            refs = (ctypes.c_uint * len(values))(*values.keys())
-            data = (ctypes.c_double * len(values))(*values.values())
-            self.call("fmi2SetReal", component, refs, len(values), data)
+    def instantiate(self, resources):
+        if self.version == "2":
+            self.component = self.lib.fmi2Instantiate(
+                self.description.identifier.encode(), FMI2_CO_SIMULATION,
+                self.description.token.encode(), pathlib.Path(resources).as_uri().encode(),
+                ctypes.byref(self.callbacks), 0, 0)
+        else:
+            self.component = self.lib.fmi3InstantiateCoSimulation(
+                self.description.identifier.encode(), self.description.token.encode(),
+                (resources + os.sep).encode(), False, False, False, False, None, 0, None,
+                self.logger, None)
+        if not self.component:
+            raise Failure(f"{self.fmi}Instantiate returned NULL: " + "; ".join(self.messages))
 
-    def get_real(self, component, refs):
-        data = (ctypes.c_double * len(refs))()
-        self.call("fmi2GetReal", component, (ctypes.c_uint * len(refs))(*refs), len(refs), data)
-        return list(data)
+    def enter_initialization(self):
+        if self.version == "2":
+            self.call("SetupExperiment", 0, 0.0, 0.0, 0, 0.0)
+            self.call("EnterInitializationMode")
+        else:
+            self.call("EnterInitializationMode", False, 0.0, 0.0, False, 0.0)
 
-    def unload(self):
+    def do_step(self, t, h):
+        if self.version == "2":
+            self.call("DoStep", t, h, 1)
+            return
+        event, terminate, early = ctypes.c_bool(), ctypes.c_bool(), ctypes.c_bool()
+        reached = ctypes.c_double()
+        self.call("DoStep", t, h, True, ctypes.byref(event), ctypes.byref(terminate),
+                  ctypes.byref(early), ctypes.byref(reached))
+        if event.value or terminate.value or early.value or reached.value != t + h:
+            raise Failure(f"fmi3DoStep at t = {t}: eventHandlingNeeded {event.value}, "
+                          f"terminateSimulation {terminate.value}, earlyReturn {early.value}, "
+                          f"lastSuccessfulTime {reached.value!r} (expected {t + h!r})")
+
+    def transfer(self, name, refs, data):
+        """fmiXSetReal or fmiXGetReal of the whole arrays refs into or from
+        data; 3.0 also takes the number of elements."""
+        extra = () if self.version == "2" else (len(data),)
+        self.call(name, (ctypes.c_uint * len(refs))(*refs), len(refs), data, *extra)
+
+    def set_real(self, values, current):
+        """Sets the elements {name: value}, each with its whole array, the
+        other elements of which take their values from current {name:
+        value}."""
+        elements = self.description.elements
+        arrays = {}
+        for name, (reference, _, _, offset) in elements.items():
+            arrays.setdefault(reference, [None] * self.description.sizes[reference])
+            arrays[reference][offset] = current.get(name)
+        touched = sorted({elements[name][0] for name in values})
+        for name, value in values.items():
+            arrays[elements[name][0]][elements[name][3]] = value
+        data = [x for reference in touched for x in arrays[reference]]
+        if data:
+            self.transfer(self.set_name, touched, (ctypes.c_double * len(data))(*data))
+
+    def get_real(self, refs):
+        """The values of the whole arrays refs, one list each."""
+        sizes = [self.description.sizes[r] for r in refs]
+        data = (ctypes.c_double * sum(sizes))()
+        self.transfer(self.get_name, refs, data)
+        values, first = [], 0
+        for size in sizes:
+            values.append(list(data[first:first + size]))
+            first += size
+        return values
+
+    def free(self):
+        self.call("Terminate")
+        getattr(self.lib, self.fmi + "FreeInstance")(self.component)
         _ctypes.dlclose(self.lib._handle)
         self.lib = None
 
 
 def step_fmu(path, starts):
-    """(modelIdentifier, the Real outputs after every step: {name: [value
-    per step]}) of the FMU at path."""
+    """(modelIdentifier, FMI version, the Real outputs after every step:
+    {2.0 name: [value per step]}) of the FMU at path."""
     folder = tempfile.mkdtemp(prefix="stepFmus.")
     try:
         with zipfile.ZipFile(path) as archive:
             archive.extractall(folder)
-        identifier, guid, variables = model_description(folder)
-        unknown = set(starts.get(identifier, {})) - set(variables)
+        description = Description(folder)
+        identifier, elements = description.identifier, description.elements
+        unknown = set(starts.get(identifier, {})) - set(elements)
         if unknown:
             raise Failure(f"--set names no Real variable of {identifier}: {', '.join(sorted(unknown))}")
         for name, value in starts.get(identifier, {}).items():
-            reference, causality, _ = variables[name]
-            variables[name] = (reference, causality, value)
-        outputs = sorted((n for n, v in variables.items() if v[1] == "output"),
-                         key=lambda n: variables[n][0])
+            reference, causality, _, offset = elements[name]
+            elements[name] = (reference, causality, value, offset)
+        current = {name: element[2] for name, element in elements.items()}
+        outputs = sorted((n for n, v in elements.items() if v[1] == "output"),
+                         key=lambda n: elements[n][0::3])
         if not outputs:
             raise Failure("no Real output in modelDescription.xml")
         before = set(loaded_objects())
-        fmu = Fmu(folder, identifier)
+        fmu = Fmu(folder, description)
         brought = [os.path.basename(n) for n in loaded_objects() if n not in before]
-        print(f"  {identifier}: loaded with {' '.join(brought)}")
+        print(f"  {identifier} (FMI {description.version}.0): loaded with {' '.join(brought)}")
         foreign = [n for n in brought if n.startswith(FOREIGN)]
         if foreign:
             raise Failure(f"it brought {' '.join(foreign)}: an FMU must carry it inside")
-        resources = pathlib.Path(folder, "resources").as_uri().encode()
-        component = fmu.lib.fmi2Instantiate(identifier.encode(), FMI2_CO_SIMULATION,
-                                            guid.encode(), resources,
-                                            ctypes.byref(fmu.callbacks), 0, 0)
-        if not component:
-            raise Failure("fmi2Instantiate returned NULL: " + "; ".join(fmu.messages))
-        fmu.set_real(component, {variables[n][0]: v for n, v in starts.get(identifier, {}).items()})
-        fmu.call("fmi2SetupExperiment", component, 0, 0.0, 0.0, 0, 0.0)
-        fmu.call("fmi2EnterInitializationMode", component)
-        fmu.set_real(component, inputs_at(0.0, variables))
-        fmu.call("fmi2ExitInitializationMode", component)
-        refs = [variables[n][0] for n in outputs]
+        fmu.instantiate(os.path.join(folder, "resources"))
+        fmu.set_real(starts.get(identifier, {}), current)
+        fmu.enter_initialization()
+        fmu.set_real(inputs_at(0.0, elements), current)
+        fmu.call("ExitInitializationMode")
+        refs = sorted({elements[n][0] for n in outputs})
         history = {n: [] for n in outputs}
         for k in range(STEPS):
             t = k * H
-            fmu.set_real(component, inputs_at(t + H, variables))
-            fmu.call("fmi2DoStep", component, t, H, 1)
-            for name, value in zip(outputs, fmu.get_real(component, refs)):
+            fmu.set_real(inputs_at(t + H, elements), current)
+            fmu.do_step(t, H)
+            arrays = dict(zip(refs, fmu.get_real(refs)))
+            for name in outputs:
+                value = arrays[elements[name][0]][elements[name][3]]
                 if not math.isfinite(value):
                     raise Failure(f"{name} = {value} after the step at t = {t}")
                 history[name].append(value)
-        fmu.call("fmi2Terminate", component)
-        fmu.lib.fmi2FreeInstance(component)
-        fmu.unload()
-        print(f"  {identifier}: {STEPS} steps, {len(outputs)} outputs finite, "
-              f"{outputs[0]} = {history[outputs[0]][-1]:.6g}")
-        return identifier, history
+        fmu.free()
+        print(f"  {identifier} (FMI {description.version}.0): {STEPS} steps, "
+              f"{len(outputs)} outputs finite, {outputs[0]} = {history[outputs[0]][-1]:.6g}")
+        return identifier, description.version, history
     finally:
         shutil.rmtree(folder, ignore_errors=True)
 
@@ -268,6 +412,35 @@ def compare(results, reference):
     return summary, failures
 
 
+def compare_versions(results):
+    """(summary, failures) of the 2.0 and 3.0 FMUs of each modelIdentifier
+    of results: the same outputs, bitwise. 2.0's X.x[i], X.y[i], X.z[i]
+    (a line's shape) are the 3.0 array X's row i."""
+    summary, failures = [], []
+    for identifier in sorted(set(results) & {k[len("fmi3/"):] for k in results
+                                             if k.startswith("fmi3/")}):
+        two, three = results[identifier], results["fmi3/" + identifier]
+        names = {}
+        for name in two:
+            base, _, index = name.partition("[")
+            column = "xyz".find(base[-1:]) + 1 if base[-2:-1] == "." else 0
+            if name not in three and column and index:
+                names[name] = f"{base[:-2]}[{index[:-1]},{column}]"
+            else:
+                names[name] = name
+        if sorted(names.values()) != sorted(three):
+            failures.append(f"{identifier}: the 3.0 FMU's outputs are not the 2.0 FMU's: "
+                            f"{', '.join(sorted(set(three) ^ set(names.values()))[:6])}")
+            continue
+        differ = [name for name in two if two[name] != three[names[name]]]
+        if differ:
+            failures.append(f"{identifier}: {len(differ)} outputs of the 3.0 FMU differ from "
+                            f"the 2.0 FMU's, {differ[0]} first")
+        summary.append(f"{identifier}: {len(two) - len(differ)} of {len(two)} outputs of "
+                       "the 3.0 FMU bit-identical to the 2.0 FMU's")
+    return summary, failures
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("fmus", nargs="+")
@@ -275,6 +448,7 @@ def main():
     parser.add_argument("--reference")
     parser.add_argument("--expect-glibc")
     parser.add_argument("--set", action="append", default=[], metavar="MODEL:NAME=VALUE")
+    parser.add_argument("--same-versions", action="store_true")
     args = parser.parse_args()
 
     starts = {}
@@ -294,14 +468,23 @@ def main():
     results, failed = {}, []
     for path in args.fmus:
         try:
-            identifier, history = step_fmu(path, starts)
-            results[identifier] = history
+            identifier, fmi_version, history = step_fmu(path, starts)
+            results[identifier if fmi_version == "2" else "fmi3/" + identifier] = history
         except Failure as error:
             print(f"  {os.path.basename(path)}: FAILED: {error}")
             failed.append(os.path.basename(path))
     if args.output:
         with open(args.output, "w") as stream:
             json.dump(results, stream)
+    if args.same_versions and not failed:
+        summary, failures = compare_versions(results)
+        if not summary and not failures:
+            failures = ["no modelIdentifier with both an FMI 2.0 and an FMI 3.0 FMU"]
+        print("stepFmus.py: the FMI 3.0 FMUs against the FMI 2.0 ones:\n  "
+              + "\n  ".join(summary or ["none"]))
+        if failures:
+            print("stepFmus.py: the FMI versions differ:\n  " + "\n  ".join(failures))
+            failed.append("same-versions")
     if args.reference and not failed:
         with open(args.reference) as stream:
             summary, failures = compare(results, json.load(stream))
