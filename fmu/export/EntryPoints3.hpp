@@ -6,6 +6,7 @@
 #ifndef FMU_EXPORT_ENTRYPOINTS3_HPP
 #define FMU_EXPORT_ENTRYPOINTS3_HPP
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
@@ -38,15 +39,21 @@ public:
 
     //- The table's value references of the elements of `vr`, in order;
     //  UsageError for a value reference that is no FMI 3.0 variable or
-    //  when the elements are not `nValues`. The list is the instance's own
-    //  buffer, valid until the next call (an instance is called from one
-    //  thread at a time): a get or set allocates nothing once it has grown
+    //  when the elements are not `nValues`. Kept for the lists asked for
+    //  before (an importer asks for the same few lists every step): a get
+    //  or set then allocates nothing and maps nothing again
     const std::vector<fmi2ValueReference>&
     elements(const fmi3ValueReference vr[], std::size_t nvr,
              std::size_t nValues) const
     {
-        std::vector<fmi2ValueReference>& all = elements_;
-        all.clear();
+        for (const ElementList& known : elementLists_) {
+            if (known.arrays.size() == nvr
+                && std::equal(known.arrays.begin(), known.arrays.end(), vr)) {
+                return checkedCount(known.elements, nValues);
+            }
+        }
+        ElementList list;
+        list.arrays.assign(vr, vr + nvr);
         for (std::size_t i = 0; i < nvr; ++i) {
             const ArrayVariable* v = variables_.find(vr[i]);
             if (v == nullptr) {
@@ -54,19 +61,40 @@ public:
                                  + " is not a variable of the FMI 3.0 "
                                    "interface");
             }
-            all.insert(all.end(), v->elements.begin(), v->elements.end());
+            list.elements.insert(list.elements.end(), v->elements.begin(),
+                                 v->elements.end());
         }
-        if (all.size() != nValues) {
-            throw UsageError("nValues = " + std::to_string(nValues)
-                             + ", the value references have "
-                             + std::to_string(all.size()) + " values");
+        if (elementLists_.size() == maxElementLists) {
+            elementLists_.clear(); // lists that change every call
         }
-        return all;
+        elementLists_.push_back(std::move(list));
+        return checkedCount(elementLists_.back().elements, nValues);
     }
 
 private:
-    //- elements()'s list
-    mutable std::vector<fmi2ValueReference> elements_;
+    //- A list of arrays' value references and their elements'
+    struct ElementList {
+        std::vector<fmi3ValueReference> arrays;
+        std::vector<fmi2ValueReference> elements;
+    };
+
+    static constexpr std::size_t maxElementLists = 16;
+
+    //- The elements, UsageError unless they are `nValues`
+    static const std::vector<fmi2ValueReference>&
+    checkedCount(const std::vector<fmi2ValueReference>& elements,
+                 std::size_t nValues)
+    {
+        if (elements.size() != nValues) {
+            throw UsageError("nValues = " + std::to_string(nValues)
+                             + ", the value references have "
+                             + std::to_string(elements.size()) + " values");
+        }
+        return elements;
+    }
+
+    //- elements()'s lists
+    mutable std::vector<ElementList> elementLists_;
 
     //- FmuInstance's fmi2 logger, passed on to the fmi3 one
     static void forward(fmi2ComponentEnvironment environment, fmi2String,
