@@ -73,3 +73,26 @@ def validation(simulation, data, u_num, u_input, u_data):
     uncertainty u_val = sqrt(u_num^2 + u_input^2 + u_D^2) (standard
     uncertainties, the units of S and D). Returns (E, u_val)."""
     return simulation - data, math.sqrt(u_num ** 2 + u_input ** 2 + u_data ** 2)
+
+
+# The apparent orders for which the GCI is taken (below: the three
+# solutions are not in the asymptotic range)
+ORDER_RANGE = (0.5, 3.0)
+
+
+def numerical_uncertainty(phi, h):
+    """Expanded numerical uncertainty U of the finest solution phi_1 (the
+    units of phi) and how it was found: Celik et al.'s GCI x |phi_1| when
+    the three solutions converge monotonically with an apparent order in
+    ORDER_RANGE; otherwise (oscillating, or an order outside it: not in
+    the asymptotic range) three times the solutions' range, the estimate
+    Eca and Hoekstra (J. Comput. Phys. 262, 2014) give for such data.
+    Returns (U, GridConvergence or None, "GCI" or "3 x range")."""
+    data_range = max(phi) - min(phi)
+    try:
+        g = grid_convergence(phi, h)
+    except ConvergenceError:
+        return 3 * data_range, None, "3 x range"
+    if g.oscillatory or not ORDER_RANGE[0] <= g.p <= ORDER_RANGE[1]:
+        return 3 * data_range, g, "3 x range"
+    return g.gci * abs(phi[0]), g, "GCI"

@@ -37,6 +37,22 @@ class GridConvergenceTest(unittest.TestCase):
         with self.assertRaises(uncertainty.ConvergenceError):
             uncertainty.grid_convergence((1, 1, 3), (0.1, 0.2, 0.3))
 
+    def test_numerical_uncertainty(self):
+        h = [n ** -0.5 for n in (18000, 8000, 4500)]
+        u, g, how = uncertainty.numerical_uncertainty((6.063, 5.972, 5.863), h)
+        self.assertEqual(how, "GCI")
+        self.assertAlmostEqual(u, g.gci * 6.063, places=12)
+        # Oscillating: three times the range (0.0093 here)
+        u, g, how = uncertainty.numerical_uncertainty((0.5721, 0.5739, 0.5646), (2, 2.6, 3.38))
+        self.assertEqual(how, "3 x range")
+        self.assertTrue(g.oscillatory)
+        self.assertAlmostEqual(u, 3 * 0.0093, places=12)
+        # Monotonic but an order of 0.15: three times the range
+        u, g, how = uncertainty.numerical_uncertainty((1.58, 1.518, 1.457), (2, 2.6, 3.38))
+        self.assertEqual(how, "3 x range")
+        self.assertLess(g.p, uncertainty.ORDER_RANGE[0])
+        self.assertAlmostEqual(u, 3 * 0.123, places=12)
+
     def test_validation_uncertainty(self):
         e, u = uncertainty.validation(1.1, 1.0, 0.03, 0.04, 0.0)
         self.assertAlmostEqual(e, 0.1, places=15)
