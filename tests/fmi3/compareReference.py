@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """fmusim run on the Reference FMUs (FMI 3.0 co-simulation, built here from
-their sources: referenceFmus/) against the results the Reference FMUs ship
-(<model>/<model>_out.csv, their default experiment). Every difference is
-one that referenceFmus/README.md explains; anything else fails:
+their sources: third_party/referenceFmus/) against the results the
+Reference FMUs ship (<model>/<model>_out.csv, their default experiment). Every difference is
+one that third_party/referenceFmus/README.md explains; anything else fails:
 
 - the numbers: the same doubles (each field read as a float), times and
   values, row for row;
