@@ -1,10 +1,7 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Application
     restraintCost
 
@@ -33,7 +30,6 @@ Description
 
 Usage
     restraintCost [-evaluations <n>] [-rounds <n>] [-case <dir>]
-
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"

@@ -1,10 +1,7 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Application
     rigidBodySim
 
@@ -34,7 +31,6 @@ Description
 
 Usage
     rigidBodySim [-dict <file>] [-nIter <n>] [-case <dir>]
-
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"

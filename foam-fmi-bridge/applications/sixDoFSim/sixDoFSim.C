@@ -1,10 +1,7 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Application
     sixDoFSim
 
@@ -43,7 +40,6 @@ Usage
     are a copy with no parent): a restraint cannot reach the case's time
     through its dictionary then, and the fmuConnector restraint loads its
     FMU at the first evaluation.
-
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"

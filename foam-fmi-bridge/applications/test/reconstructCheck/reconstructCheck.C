@@ -1,10 +1,7 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Application
     reconstructCheck
 
@@ -45,7 +42,6 @@ Usage
     reconstructCheck [-U0 '(1 0.5 0.3)'] [-case <dir>]
 
     The last line is "max |U - U0| = <error> m/s".
-
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"

@@ -1,15 +1,11 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Description
     Variable handling of fmuConnectorCore: its interface variables by
     fmuImport's vocabulary, inputs and outputs (parameters:
     fmuConnectorCoreParameters.C).
-
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnectorCore.H"

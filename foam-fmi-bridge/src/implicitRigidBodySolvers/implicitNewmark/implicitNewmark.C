@@ -1,11 +1,6 @@
-/*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
-\*---------------------------------------------------------------------------*/
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 
 #include "implicitNewmark.H"
 #include "addToRunTimeSelectionTable.H"

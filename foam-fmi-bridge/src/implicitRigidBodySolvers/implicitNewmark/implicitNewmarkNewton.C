@@ -1,14 +1,10 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Description
     The Newton iterations of implicitNewmark: trial states, residual,
     finite-difference Jacobian.
-
 \*---------------------------------------------------------------------------*/
 
 #include "implicitNewmark.H"

@@ -1,13 +1,10 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
     The construction, mesh morphing and state I/O follow OpenFOAM v1912's
     rigidBodyMeshMotion (src/rigidBodyMeshMotion, GPL v3, OpenCFD Ltd. and
     the OpenFOAM Foundation); solve() adds the added-mass coupling.
-
 \*---------------------------------------------------------------------------*/
 
 #include "addedMassRigidBodyMeshMotion.H"

@@ -1,10 +1,7 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
-  foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics
--------------------------------------------------------------------------------
-License
-    This file is part of foam-fmi-bridge, free software under the GNU General
-    Public License version 3 or later (see LICENSE at the project's top).
-
 Description
     The dictionary of addedMassRigidBodyMeshMotion, read strictly. A
     misspelt keyword would silently keep a default (a 'tolerence' the
@@ -21,7 +18,6 @@ Description
         its case: 'couplng', 'addedMassInteval', 'accelerationRelaxaton')
         is a FatalIOError that names the keyword it resembles and lists
         the valid ones.
-
 \*---------------------------------------------------------------------------*/
 
 #include "addedMassRigidBodyMeshMotion.H"
