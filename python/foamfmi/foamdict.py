@@ -8,7 +8,8 @@ sub-dictionary, whose entries come from #include files and $macros.
 A value is the list of its tokens, without the ';' ("(0.1 0 0.17)" is
 ['(', '0.1', '0', '0.17', ')']). Expanded: #include, #includeIfPresent and
 #sinclude (a file name relative to the including file, or starting with
-<case>, <constant> or <system>); '$name;' in a dictionary (the entries of
+<case>, <constant> or <system>; environment variables, $FOAMFMI_DIR of the
+tutorials' shared dictionaries, expanded); '$name;' in a dictionary (the entries of
 the dictionary `name`, looked up in the enclosing dictionaries, merged in);
 '$name' in a value (its tokens spliced in); 'a.b' in a name reaches into a
 sub-dictionary, '$:a.b' starts at the file's top. Other directives
@@ -166,10 +167,22 @@ def _copy(value, parent):
     return copy.copy(value)
 
 
+_ENVIRONMENT = re.compile(r"\$\{(\w+)\}|\$(\w+)")
+
+
 def _include_path(name, folder, case):
     for tag, base in (("<case>", case), ("<constant>", os.path.join(case, "constant")),
                       ("<system>", os.path.join(case, "system")),
                       ("$FOAM_CASE", case)):
         if name.startswith(tag):
             return os.path.join(base, name[len(tag):].lstrip("/"))
+
+    def variable(match):
+        key = match.group(1) or match.group(2)
+        if key not in os.environ:
+            raise DictionaryError("#include \"%s\": the environment variable %s is not set"
+                                  % (name, key))
+        return os.environ[key]
+
+    name = _ENVIRONMENT.sub(variable, name)
     return name if os.path.isabs(name) else os.path.join(folder, name)
