@@ -6,7 +6,7 @@ Units SI: omega in rad/s, depth h in m, wave number k in rad/m.
 import math
 import os
 
-from foamfmi import dictionary
+from foamfmi import dictionary, foamdict
 
 G = 9.81  # m/s^2, the tutorials' gravity (constant/g)
 
@@ -64,7 +64,19 @@ def stokes2_second_harmonic(a, k, depth):
 
 def read_wave_properties(case):
     """Height H (m), period T (s) and rampTime (s) of the waves generated at
-    the inlet, from CASE/constant/waveProperties."""
+    the inlet: the entries of `inlet` in CASE/constant/waveProperties, its
+    #include files and $macros expanded (foamdict)."""
     path = os.path.join(case, "constant", "waveProperties")
-    return tuple(dictionary.read_scalar(path, key)
-                 for key in ("waveHeight", "wavePeriod", "rampTime"))
+    inlet = foamdict.parse(path, case).get("inlet")
+    if not isinstance(inlet, dict):
+        raise dictionary.DictionaryError("no inlet dictionary in %s" % path)
+    values = []
+    for key in ("waveHeight", "wavePeriod", "rampTime"):
+        if key not in inlet:
+            raise dictionary.DictionaryError("no %s in inlet in %s" % (key, path))
+        try:
+            values.append(float(foamdict.word(inlet[key])))
+        except ValueError:
+            raise dictionary.DictionaryError("%s in inlet in %s: not a number: %s"
+                                             % (key, path, " ".join(inlet[key]))) from None
+    return tuple(values)
