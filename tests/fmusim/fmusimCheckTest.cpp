@@ -1,19 +1,11 @@
 // `fmusim check` on the plain-C testSpring connector, on its defective
 // variant, on an FMU that is not a connector, and on the project's connector
 // FMUs when they are built.
-#include "fmusimHarness.hpp"
-
-#include <gtest/gtest.h>
+#include "fmusimTest.hpp"
 
 namespace {
 
-using harness::fixture;
-using harness::fmusim;
-
-bool contains(const std::string& text, const std::string& part)
-{
-    return text.find(part) != std::string::npos;
-}
+using namespace harness;
 
 // Every line of a passing check: PASS, or SKIP with a reason.
 void expectAllPass(const harness::Result& r)

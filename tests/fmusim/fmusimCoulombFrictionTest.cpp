@@ -2,24 +2,16 @@
 // along a guide of the world decelerates under the friction and stops at
 // the analytic distance and time (Coulomb's, and the regularised law's
 // exact ones); `fmusim check` passes it.
-#include "fmusimHarness.hpp"
-
-#include <gtest/gtest.h>
+#include "fmusimTest.hpp"
 
 #include <cmath>
 #include <string>
 
 namespace {
 
-using harness::fmusim;
-using harness::scratch;
+using namespace harness;
 
 #ifdef CONNECTOR_FMU_DIR
-
-bool contains(const std::string& text, const std::string& part)
-{
-    return text.find(part) != std::string::npos;
-}
 
 TEST(FmusimCoulombFriction, CheckPasses)
 {
