@@ -1,11 +1,13 @@
 """Build massEcho.fmu (massEcho.c) into a directory: the C compiler, the
-FMI headers of fmu/include, and modelDescription.xml written here."""
+FMI headers of fmu/include, the fixture FMUs' FMI plumbing (tests/fixtureFmu)
+and modelDescription.xml written here."""
 import os
 import subprocess
 import zipfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
+PLUMBING = os.path.join(TOP, "tests", "fixtureFmu")
 GUID = "{6d1f0e6a-7c1b-4c55-9d1e-massecho0001}"
 
 
@@ -62,8 +64,10 @@ def model_description():
 def build(directory):
     """Build massEcho.fmu in directory; return its path."""
     so = os.path.join(directory, "massEcho.so")
-    subprocess.run(["cc", "-shared", "-fPIC", "-O1", "-I", os.path.join(TOP, "fmu", "include"),
-                    os.path.join(HERE, "massEcho.c"), "-o", so], check=True)
+    subprocess.run(["cc", "-shared", "-fPIC", "-O1", "-fvisibility=hidden", "-DFIXTURE_CS_ONLY", f"-DFIXTURE_GUID=\"{GUID}\"",
+                    "-I", os.path.join(TOP, "fmu", "include"), "-I", PLUMBING, os.path.join(HERE, "massEcho.c"),
+                    os.path.join(PLUMBING, "fixtureFmu.c"), os.path.join(PLUMBING, "fixtureUnsupported.c"),
+                    "-o", so], check=True)
     fmu = os.path.join(directory, "massEcho.fmu")
     with zipfile.ZipFile(fmu, "w") as z:
         z.writestr("modelDescription.xml", model_description())
