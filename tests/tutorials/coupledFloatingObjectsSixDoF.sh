@@ -44,12 +44,7 @@ runTutorial coupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
 runTutorial coupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
     -end-time $endTime
 
-for c in "$sixDoF" "$rigidBody"
-do
-    checkRanToEnd "$c" $endTime
-    # shellcheck disable=SC2086
-    checkBodies "$c" $bodies
-done
+checkRuns $endTime "$bodies" "$sixDoF" "$rigidBody"
 
 checkConnectorRows "$sixDoF" spring balanced
 
@@ -97,10 +92,4 @@ compareSeries "$rigidBody/$dat" "$sixDoF/$dat" "$(columnOf "$sixDoF/$dat" tensio
 
 
 # --- Plots -------------------------------------------------------------------
-for png in rotation displacement connector_spring snapshots
-do
-    f="$sixDoF/plots/$png.png"
-    requireFile "$f" "plot"
-    [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
-done
-pass "plots: rotation.png, displacement.png, connector_spring.png, snapshots.png"
+checkPlots "$sixDoF" rotation displacement connector_spring snapshots

@@ -48,27 +48,16 @@ runTutorial uncoupledFloatingObjects "$uncoupled" -mesh-factor 0.5 \
 runTutorial damperFloatingObjects "$damped" -mesh-factor 0.5 \
     -end-time $endTime
 
-for c in "$uncoupled" "$damped"
-do
-    checkRanToEnd "$c" $endTime
-    # shellcheck disable=SC2086
-    checkBodies "$c" $bodies
-done
+checkRuns $endTime "$bodies" "$uncoupled" "$damped"
 
 
 # --- The damper's output -----------------------------------------------------
 checkConnectorRows "$damped" damper balanced
 
 dat=$(connectorFile "$damped" damper) || exit 1
-cols=""
-for name in 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
+cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
     'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' \
-    lengthRate tension dissipatedPower
-do
-    c=$(columnOf "$dat" "$name")
-    [ -n "$c" ] || fail "$dat: no column $name in the \"# Time ...\" header"
-    cols="$cols $c"
-done
+    lengthRate tension dissipatedPower) || exit 1
 
 # Total moment about the origin with the reference points (the fixed centres
 # of mass), and the law. Tolerances: 1e-9 relative to the loads, and for the
@@ -119,39 +108,14 @@ pass "damper: $(cat "$workDir/check.out")"
 # state is the one the step ends with. They differ by a small part of one
 # step's motion: the tolerance is a tenth of the largest change of length in
 # one step.
-for c in "$uncoupled" "$damped"
-do
-    attachmentDistance \
-        "$c/postProcessing/rigidBodyMotion/floatingObject1.dat" \
-        "$c/postProcessing/rigidBodyMotion/floatingObject2.dat" \
-        "$attachmentA" "$attachmentB" > "$c/attachmentDistance.dat" \
-        || fail "$c: attachment points from the body motion"
-done
+attachmentDistances "$attachmentA" "$attachmentB" "$uncoupled" "$damped"
 checkLengthAgainstMotion "$damped/attachmentDistance.dat" "$dat" > "$workDir/check.out" \
     || fail "$dat: length against the body motion"
 pass "damper: $(cat "$workDir/check.out")"
 
 
 # --- The damper reduces the motion -------------------------------------------
-for body in floatingObject1 floatingObject2
-do
-    dampedPitch=$(maxAbsColumn "$damped/postProcessing/rigidBodyMotion/$body.dat" 7)
-    uncoupledPitch=$(maxAbsColumn "$uncoupled/postProcessing/rigidBodyMotion/$body.dat" 7)
-    awk -v d="$dampedPitch" -v u="$uncoupledPitch" 'BEGIN { exit !(d <= 0.8*u) }' \
-        || fail "$body: largest pitch $dampedPitch deg with the damper," \
-            "$uncoupledPitch deg without: not 20 % smaller"
-    pass "$body: largest pitch $dampedPitch deg with the damper," \
-        "$uncoupledPitch deg without"
-done
-
-dampedChange=$(largestChange "$damped/attachmentDistance.dat" $restLength)
-uncoupledChange=$(largestChange "$uncoupled/attachmentDistance.dat" $restLength)
-awk -v d="$dampedChange" -v u="$uncoupledChange" 'BEGIN { exit !(d <= 0.8*u) }' \
-    || fail "distance between the attachment points changes by up to" \
-        "$dampedChange m with the damper, $uncoupledChange m without:" \
-        "not 20 % less"
-pass "distance between the attachment points changes by up to" \
-    "$dampedChange m with the damper, $uncoupledChange m without"
+checkSmallerMotion "$damped" "$uncoupled" damper 20 20 $restLength
 
 
 # --- Plots -------------------------------------------------------------------

@@ -17,10 +17,4 @@ runTutorial uncoupledFloatingObjects "$case" -mesh-factor 0.5 -end-time $endTime
 checkRanToEnd "$case" $endTime
 checkBodies "$case" floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43
 
-for png in rotation displacement snapshots
-do
-    f="$case/plots/$png.png"
-    requireFile "$f" "plot"
-    [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
-done
-pass "plots: rotation.png, displacement.png, snapshots.png"
+checkPlots "$case" rotation displacement snapshots

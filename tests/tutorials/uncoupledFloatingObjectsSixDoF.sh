@@ -28,11 +28,8 @@ runTutorial uncoupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
 runTutorial uncoupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
     -end-time $endTime
 
-for c in "$sixDoF" "$rigidBody"
-do
-    checkRanToEnd "$c" $endTime
-    checkBodies "$c" floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43
-done
+checkRuns $endTime "floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43" \
+    "$sixDoF" "$rigidBody"
 
 for body in floatingObject1 floatingObject2
 do
@@ -42,10 +39,4 @@ do
         0.2
 done
 
-for png in rotation displacement snapshots
-do
-    f="$sixDoF/plots/$png.png"
-    requireFile "$f" "plot"
-    [ "$(head -c 4 "$f" | tail -c 3)" = PNG ] || fail "$f is not a PNG image"
-done
-pass "plots: rotation.png, displacement.png, snapshots.png"
+checkPlots "$sixDoF" rotation displacement snapshots
