@@ -62,13 +62,7 @@ checkImplicitNewmark "$hinged"
 checkConnectorRows "$hinged" hinge balanced
 
 dat=$(connectorFile "$hinged" hinge) || exit 1
-cols=""
-for name in gap misalignment angle
-do
-    c=$(columnOf "$dat" "$name")
-    [ -n "$c" ] || fail "$dat: no column $name in the \"# Time ...\" header"
-    cols="$cols $c"
-done
+cols=$(columnsOf "$dat" gap misalignment angle) || exit 1
 awk -v cols="$cols" -v gapBound=$gapBound -v misBound=$misalignmentBound '
 function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
 BEGIN { split(cols, k, " "); deg = 45/atan2(1, 1) }

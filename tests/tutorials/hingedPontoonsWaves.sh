@@ -118,14 +118,8 @@ do
     name=hinge$i
     checkConnectorRows "$case" $name balanced
     dat=$(connectorFile "$case" $name) || exit 1
-    cols=""
-    for n in 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
-        'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' ptoTorque angle
-    do
-        c=$(columnOf "$dat" "$n")
-        [ -n "$c" ] || fail "$dat: no column $n in the \"# Time ...\" header"
-        cols="$cols $c"
-    done
+    cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
+        'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' ptoTorque angle) || exit 1
     awk -v cols="$cols" -v pa="$hingeA" -v pb="$hingeB" -v gapBound=$gapBound \
         "$rotateAwk"'
     function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }

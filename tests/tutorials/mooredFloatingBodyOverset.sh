@@ -148,13 +148,7 @@ do
 
     checkConnectorRows "$moored" "$name"
     dat=$(connectorFile "$moored" "$name") || exit 1
-    cols=""
-    for n in 'A.F[1]' H V fairleadTension 'shape.x[1]' 'shape.y[1]' 'shape.z[1]'
-    do
-        c=$(columnOf "$dat" "$n")
-        [ -n "$c" ] || fail "$dat: no column $n in the \"# Time ...\" header"
-        cols="$cols $c"
-    done
+    cols=$(columnsOf "$dat" 'A.F[1]' H V fairleadTension 'shape.x[1]' 'shape.y[1]' 'shape.z[1]') || exit 1
 
     awk -v cols="$cols" -v pa="$fairlead" -v anchor="$anchor" -v x0="$x0" \
         -v L=$lineLength -v w=$lineWeight -v EA=$lineEA \

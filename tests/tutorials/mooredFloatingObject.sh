@@ -102,14 +102,8 @@ do
 
     checkConnectorRows "$moored" "$name"
     dat=$(connectorFile "$moored" "$name") || exit 1
-    cols=""
-    for n in 'A.F[1]' 'A.F[2]' 'A.F[3]' fairleadTension anchorTension \
-        groundedLength length
-    do
-        c=$(columnOf "$dat" "$n")
-        [ -n "$c" ] || fail "$dat: no column $n in the \"# Time ...\" header"
-        cols="$cols $c"
-    done
+    cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' fairleadTension anchorTension \
+        groundedLength length) || exit 1
 
     awk -v cols="$cols" -v T0="$restTension" -v quasiStatic="$quasiStatic" \
         -v pa="$fairlead" -v anchor="$anchor" "$rotateAwk"'
