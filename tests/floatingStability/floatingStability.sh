@@ -61,29 +61,11 @@ do
     shift
 done
 
-. "$testTop/etc/bashrc" || { echo "FAIL: cannot source etc/bashrc" 1>&2; exit 1; }
-
-# A failure keeps the runs for inspection
-fail()
-{
-    echo "FAIL [$testName]: $*" 1>&2
-    if [ -n "${workDir:-}" ]
-    then
-        keep=true
-        echo "FAIL [$testName]: the runs are kept in $workDir" 1>&2
-    fi
-    exit 1
-}
-
-pass()
-{
-    echo "ok   [$testName]: $*"
-}
+kept="the runs are"
+. "$testDir/stabilityTestFunctions"
 
 stockSolver=interFoam
-command -v "$fixedSolver" > /dev/null 2>&1 \
-    || { echo "FAIL [$testName]: $fixedSolver not found:" \
-         "build it with foam-fmi-bridge/Allwmake" 1>&2; exit 1; }
+requireBuilt "$fixedSolver"
 command -v "$stockSolver" > /dev/null 2>&1 \
     || { echo "FAIL [$testName]: Debian's $stockSolver not found" 1>&2; exit 1; }
 
@@ -92,8 +74,7 @@ tutorial="$FOAM_TUTORIALS/multiphase/interFoam/RAS/floatingObject"
     || { echo "FAIL [$testName]: $tutorial not found" \
          "(Debian package openfoam-examples)" 1>&2; exit 1; }
 
-workDir=$(mktemp -d "${TMPDIR:-/tmp}/floatingStability.XXXXXX")
-trap '$keep || rm -rf "$workDir"' EXIT
+makeWorkDir
 
 # Copy of the tutorial's case files, writable
 copyTutorial()

@@ -33,35 +33,15 @@ do
     esac
 done
 
-. "$testTop/etc/bashrc" || { echo "FAIL: cannot source etc/bashrc" 1>&2; exit 1; }
-
-fail()
-{
-    echo "FAIL [$testName]: $*" 1>&2
-    if [ -n "${workDir:-}" ]
-    then
-        keep=true
-        echo "FAIL [$testName]: the case is kept in $workDir" 1>&2
-    fi
-    exit 1
-}
-
-pass()
-{
-    echo "ok   [$testName]: $*"
-}
+kept="the case is"
+. "$testDir/stabilityTestFunctions"
 
 aliasSafe=reconstructCheck
 debianFlags=reconstructCheckDebianFlags
-for app in $aliasSafe $debianFlags
-do
-    command -v $app > /dev/null 2>&1 \
-        || { echo "FAIL [$testName]: $app not found:" \
-             "build it with foam-fmi-bridge/Allwmake" 1>&2; exit 1; }
-done
+requireBuilt $aliasSafe
+requireBuilt $debianFlags
 
-workDir=$(mktemp -d "${TMPDIR:-/tmp}/reconstructCheck.XXXXXX")
-trap '$keep || rm -rf "$workDir"' EXIT
+makeWorkDir
 
 case="$workDir/rotatedBlock"
 mkdir -p "$case"
