@@ -1,8 +1,8 @@
 // fmusim: run, check and couple FMI 2.0 co-simulation FMUs without CFD.
-#include "Check.hpp"
+#include "check/Check.hpp"
 #include "Errors.hpp"
-#include "Run.hpp"
-#include "TwoBody.hpp"
+#include "run/Run.hpp"
+#include "twobody/TwoBody.hpp"
 
 #include "fmuImport/fmuImport.hpp"
 

@@ -1,7 +1,7 @@
 // Command-line parsing shared by the subcommands: positional arguments,
 // `--name value` or `--name=value` options (repeatable) and flags.
-#ifndef FMUSIM_ARGS_HPP
-#define FMUSIM_ARGS_HPP
+#ifndef FMUSIM_IO_ARGS_HPP
+#define FMUSIM_IO_ARGS_HPP
 
 #include "fmuImport/fmuImport.hpp"
 

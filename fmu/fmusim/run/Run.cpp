@@ -1,10 +1,10 @@
-#include "Run.hpp"
+#include "run/Run.hpp"
 
-#include "Args.hpp"
-#include "Csv.hpp"
+#include "io/Args.hpp"
+#include "io/Csv.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
-#include "Settings.hpp"
+#include "io/Settings.hpp"
 
 #include <climits>
 #include <cmath>

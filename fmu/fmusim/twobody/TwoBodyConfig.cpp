@@ -1,6 +1,6 @@
-#include "TwoBodyConfig.hpp"
+#include "twobody/TwoBodyConfig.hpp"
 
-#include "Args.hpp"
+#include "io/Args.hpp"
 #include "Errors.hpp"
 
 #include <sstream>

@@ -1,8 +1,8 @@
 // A connector FMU's inputs and outputs as fmusim drives them: two bodies'
 // kinematics and mass properties in, loads out. The interface's vocabulary
 // and rules are fmuImport's (fmuImport::connector).
-#ifndef FMUSIM_CONNECTORIO_HPP
-#define FMUSIM_CONNECTORIO_HPP
+#ifndef FMUSIM_IO_CONNECTORIO_HPP
+#define FMUSIM_IO_CONNECTORIO_HPP
 
 #include "fmuImport/fmuImport.hpp"
 

@@ -1,4 +1,4 @@
-#include "RigidBody.hpp"
+#include "twobody/RigidBody.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "Args.hpp"
+#include "io/Args.hpp"
 
 #include "Errors.hpp"
 

@@ -1,9 +1,9 @@
-#include "TwoBody.hpp"
+#include "twobody/TwoBody.hpp"
 
-#include "Csv.hpp"
+#include "io/Csv.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
-#include "TwoBodyConfig.hpp"
+#include "twobody/TwoBodyConfig.hpp"
 
 #include <chrono>
 #include <cmath>

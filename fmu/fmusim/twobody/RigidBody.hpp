@@ -1,10 +1,10 @@
 // Rigid bodies for `fmusim twobody`: state, prescribed motion, and the
 // explicit and trapezoidal updates. Reference point = centre of mass;
 // velocities and angular velocities in the global frame.
-#ifndef FMUSIM_RIGIDBODY_HPP
-#define FMUSIM_RIGIDBODY_HPP
+#ifndef FMUSIM_TWOBODY_RIGIDBODY_HPP
+#define FMUSIM_TWOBODY_RIGIDBODY_HPP
 
-#include "ConnectorIo.hpp"
+#include "io/ConnectorIo.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>

@@ -1,7 +1,7 @@
 // `name = value` settings from files (parameter files, twobody
 // configurations) and --set options, and applying them to FMU variables.
-#ifndef FMUSIM_SETTINGS_HPP
-#define FMUSIM_SETTINGS_HPP
+#ifndef FMUSIM_IO_SETTINGS_HPP
+#define FMUSIM_IO_SETTINGS_HPP
 
 #include "fmuImport/fmuImport.hpp"
 

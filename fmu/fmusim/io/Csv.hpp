@@ -1,7 +1,7 @@
 // CSV input tables (time in the first column, one column per variable) and
 // CSV output.
-#ifndef FMUSIM_CSV_HPP
-#define FMUSIM_CSV_HPP
+#ifndef FMUSIM_IO_CSV_HPP
+#define FMUSIM_IO_CSV_HPP
 
 #include <fstream>
 #include <optional>

@@ -1,10 +1,10 @@
 // The behavioural part of `fmusim check`: probes that drive instances of a
 // connector FMU with random and special kinematics.
-#ifndef FMUSIM_CHECKPROBES_HPP
-#define FMUSIM_CHECKPROBES_HPP
+#ifndef FMUSIM_CHECK_CHECKPROBES_HPP
+#define FMUSIM_CHECK_CHECKPROBES_HPP
 
-#include "Check.hpp"
-#include "ConnectorIo.hpp"
+#include "check/Check.hpp"
+#include "io/ConnectorIo.hpp"
 
 #include <functional>
 #include <random>

@@ -1,4 +1,4 @@
-#include "ConnectorIo.hpp"
+#include "io/ConnectorIo.hpp"
 
 namespace fmusim {
 

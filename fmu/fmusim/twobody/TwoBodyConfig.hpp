@@ -1,10 +1,10 @@
 // Options of `fmusim twobody`, from a `key = value` configuration file
 // and/or `--key value` on the command line (the command line wins).
-#ifndef FMUSIM_TWOBODYCONFIG_HPP
-#define FMUSIM_TWOBODYCONFIG_HPP
+#ifndef FMUSIM_TWOBODY_TWOBODYCONFIG_HPP
+#define FMUSIM_TWOBODY_TWOBODYCONFIG_HPP
 
-#include "RigidBody.hpp"
-#include "Settings.hpp"
+#include "twobody/RigidBody.hpp"
+#include "io/Settings.hpp"
 
 #include <optional>
 #include <string>

@@ -1,9 +1,9 @@
-#include "Settings.hpp"
+#include "io/Settings.hpp"
 
 #include <iostream>
 
-#include "Args.hpp"
-#include "Csv.hpp"
+#include "io/Args.hpp"
+#include "io/Csv.hpp"
 #include "Errors.hpp"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // `fmusim check`: validate a connector FMU against
 // docs/connector-fmu-interface.md and probe its behaviour.
-#ifndef FMUSIM_CHECK_HPP
-#define FMUSIM_CHECK_HPP
+#ifndef FMUSIM_CHECK_CHECK_HPP
+#define FMUSIM_CHECK_CHECK_HPP
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "Check.hpp"
+#include "check/Check.hpp"
 
-#include "Args.hpp"
-#include "CheckProbes.hpp"
+#include "io/Args.hpp"
+#include "check/CheckProbes.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
 

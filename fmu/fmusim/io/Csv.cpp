@@ -1,6 +1,6 @@
-#include "Csv.hpp"
+#include "io/Csv.hpp"
 
-#include "Args.hpp"
+#include "io/Args.hpp"
 #include "Errors.hpp"
 
 #include <algorithm>

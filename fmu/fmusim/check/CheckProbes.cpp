@@ -1,6 +1,6 @@
-#include "CheckProbes.hpp"
+#include "check/CheckProbes.hpp"
 
-#include "Csv.hpp"
+#include "io/Csv.hpp"
 #include "Session.hpp"
 
 #include <cmath>

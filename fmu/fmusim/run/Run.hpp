@@ -1,7 +1,7 @@
 // `fmusim run`: simulate any FMI 2.0 co-simulation FMU with inputs from a
 // CSV table and outputs to CSV.
-#ifndef FMUSIM_RUN_HPP
-#define FMUSIM_RUN_HPP
+#ifndef FMUSIM_RUN_RUN_HPP
+#define FMUSIM_RUN_RUN_HPP
 
 #include <string>
 #include <vector>

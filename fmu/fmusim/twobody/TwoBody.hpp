@@ -1,6 +1,6 @@
 // `fmusim twobody`: two rigid bodies coupled through a connector FMU.
-#ifndef FMUSIM_TWOBODY_HPP
-#define FMUSIM_TWOBODY_HPP
+#ifndef FMUSIM_TWOBODY_TWOBODY_HPP
+#define FMUSIM_TWOBODY_TWOBODY_HPP
 
 #include <string>
 #include <vector>
