@@ -9,6 +9,13 @@ namespace {
 
 using namespace harness;
 
+// `fmusim run` of the first-order lag with the input table in, holding text
+Result runWithInput(const std::string& in, const std::string& text)
+{
+    writeFile(in, text);
+    return fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+}
+
 TEST(FmusimRun, StepResponseMatchesTheAnalyticSolution)
 {
     const std::string out = scratch("out.csv");
@@ -109,21 +116,15 @@ TEST(FmusimRun, ParameterFileAndSetOverride)
 TEST(FmusimRunErrors, BadRowInTheInputTable)
 {
     const std::string in = scratch("in.csv");
-    harness::writeFile(in, "time,u\n0,0\n1,2,3\n");
-    const harness::Result r
-        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result r = runWithInput(in, "time,u\n0,0\n1,2,3\n");
     EXPECT_TRUE(failed(r, 4, in + ":3: expected 2 values, found 3"));
     EXPECT_TRUE(r.out.empty()) << "no output for a run that never started";
 
-    harness::writeFile(in, "time,u\n0,0\n1,abc\n");
-    const harness::Result notNumber
-        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result notNumber = runWithInput(in, "time,u\n0,0\n1,abc\n");
     EXPECT_TRUE(failed(notNumber, 4,
                        in + ":3: 'abc' in column 2 is not a finite number"));
 
-    harness::writeFile(in, "time,u\n1,0\n0,2\n");
-    const harness::Result backwards
-        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result backwards = runWithInput(in, "time,u\n1,0\n0,2\n");
     EXPECT_TRUE(
         failed(backwards, 4,
                in + ":3: time 0 is before the time of the previous row"));
@@ -132,17 +133,13 @@ TEST(FmusimRunErrors, BadRowInTheInputTable)
 TEST(FmusimRunErrors, MissingVariableInTheInputTable)
 {
     const std::string in = scratch("in.csv");
-    harness::writeFile(in, "time,u,windSpeed\n0,0,1\n");
-    const harness::Result r
-        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result r = runWithInput(in, "time,u,windSpeed\n0,0,1\n");
     EXPECT_TRUE(failed(r, 4,
                        in + ":1: column 'windSpeed': FMU '"
                            + fixture("firstOrderLag")
                            + "' has no variable 'windSpeed'"));
 
-    harness::writeFile(in, "time,y\n0,0\n");
-    const harness::Result output
-        = fmusim("run " + fixture("firstOrderLag") + " --input-file " + in);
+    const harness::Result output = runWithInput(in, "time,y\n0,0\n");
     EXPECT_TRUE(failed(output, 4, "column 'y': the variable is not an input"));
 }
 

@@ -10,6 +10,14 @@ namespace {
 
 using namespace harness;
 
+// `fmusim twobody` of testSpring with the configuration file config, holding
+// text
+Result twobodyWithConfig(const std::string& config, const std::string& text)
+{
+    writeFile(config, text);
+    return fmusim("twobody " + fixture("testSpring") + " --config " + config);
+}
+
 // Angular frequency from the upward zero crossings of s(t), each located by
 // linear interpolation between samples.
 double measuredFrequency(const std::vector<double>& t,
@@ -190,14 +198,12 @@ TEST(FmusimTwoBody, FreeFallUnderGravity)
 TEST(FmusimTwoBodyErrors, BadConfigurations)
 {
     const std::string config = scratch("bad.cfg");
-    harness::writeFile(config, "stop-time = 1\nA.mas = 2\n");
     const harness::Result unknown
-        = fmusim("twobody " + fixture("testSpring") + " --config " + config);
+        = twobodyWithConfig(config, "stop-time = 1\nA.mas = 2\n");
     EXPECT_TRUE(failed(unknown, 4, config + ":2: unknown key 'A.mas'"));
 
-    harness::writeFile(config, "A.inertia = 1 2\n");
     const harness::Result inertia
-        = fmusim("twobody " + fixture("testSpring") + " --config " + config);
+        = twobodyWithConfig(config, "A.inertia = 1 2\n");
     EXPECT_TRUE(failed(inertia, 4,
                        config + ":1: A.inertia: expected 3 (Jxx Jyy Jzz), 6"));
 
