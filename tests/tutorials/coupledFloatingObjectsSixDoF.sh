@@ -30,10 +30,7 @@
 endTime=0.3
 bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
 
-requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
-    "the bridge library (build it: ./Allwmake)"
-requireFile "$FOAMFMI_FMU_DIR/linearSpring.fmu" \
-    "the spring FMU (build it: cmake --build build)"
+requireBridge linearSpring "the spring FMU (build it: cmake --build build)"
 
 makeWorkDir
 

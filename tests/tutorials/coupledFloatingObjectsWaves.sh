@@ -29,10 +29,7 @@ waveHeight=0.05
 attachmentA="0.1 0 0.17"
 attachmentB="-0.1 0 0.17"
 
-requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
-    "the bridge library (build it: ./Allwmake)"
-requireFile "$FOAMFMI_FMU_DIR/linearSpring.fmu" \
-    "the spring FMU (build it: cmake --build build)"
+requireBridge linearSpring "the spring FMU (build it: cmake --build build)"
 
 makeWorkDir
 case=$workDir/coupledFloatingObjectsWaves

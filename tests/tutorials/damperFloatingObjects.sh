@@ -33,10 +33,7 @@ attachmentA="0.1 0 0.17"
 attachmentB="-0.1 0 0.17"
 restLength=0.2
 
-requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
-    "the bridge library (build it: ./Allwmake)"
-requireFile "$FOAMFMI_FMU_DIR/linearDamper.fmu" \
-    "the damper FMU (build it: ./Allwmake)"
+requireBridge linearDamper "the damper FMU (build it: ./Allwmake)"
 
 makeWorkDir
 
