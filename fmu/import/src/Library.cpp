@@ -40,6 +40,11 @@ Library::Library(const std::string& file, const std::string& fmuPath,
     }
 }
 
+void* Library::symbol(const char* name) const
+{
+    return dlsym(handle_, name);
+}
+
 Library::~Library()
 {
     callFmu(dlclose, handle_);

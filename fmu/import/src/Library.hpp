@@ -107,6 +107,11 @@ public:
     const Fmi2Api& api() const { return api_; }
     const Fmi3Api& api3() const { return api3_; }
 
+    // The address the binary exports under name (dlsym), nullptr if none:
+    // for a function outside the lists above (the tests of the FMUs' C
+    // API call the model-exchange ones)
+    void* symbol(const char* name) const;
+
 private:
     void* handle_ = nullptr;
     Fmi2Api api_; // resolved for FMI 2.0
