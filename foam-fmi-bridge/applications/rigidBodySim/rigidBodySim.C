@@ -40,6 +40,7 @@ Usage
 #include "rigidBodyMotion.H"
 #include "rigidBody.H"
 #include "restartFiles.H"
+#include "bodySim.H"
 
 using namespace Foam;
 
@@ -99,13 +100,7 @@ autoPtr<IOdictionary> startState(const Time& runTime)
 
     IOobject io
     (
-        "rigidBodyMotionState",
-        runTime.timeName(),
-        "uniform",
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
+        bodySim::uniformIO(runTime, "rigidBodyMotionState", IOobject::MUST_READ)
     );
 
     if (io.typeHeaderOk<IOdictionary>(true))
@@ -121,23 +116,7 @@ void writeHeader(OFstream& os, const RBD::rigidBodyMotion& motion)
     os  << "# Time";
     for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
     {
-        const word& name = motion.name(bodyID);
-        for (const char* c : {"x", "y", "z"})
-        {
-            os  << ' ' << name << ".c." << c;
-        }
-        for (const char* c : {"x", "y", "z"})
-        {
-            os  << ' ' << name << ".v." << c;
-        }
-        for (const char* c : {"x", "y", "z"})
-        {
-            os  << ' ' << name << ".omega." << c;
-        }
-        for (const char* c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
-        {
-            os  << ' ' << name << ".R." << c;
-        }
+        bodySim::writeBodyHeader(os, motion.name(bodyID), {"c", "v", "omega"});
     }
     os  << nl;
 }
@@ -154,15 +133,12 @@ void writeRow(OFstream& os, const scalar t, const RBD::rigidBodyMotion& motion)
         const spatialVector vc(motion.v(bodyID, c));
 
         const vector centre = X0.E().T() & c;
-        for (const vector& v : {centre + X0.r(), vc.l(), vc.w()})
-        {
-            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
-        }
-        const tensor R(X0.E().T());
-        for (direction i = 0; i < tensor::nComponents; ++i)
-        {
-            os  << ' ' << R[i];
-        }
+        bodySim::writeBodyRow
+        (
+            os,
+            {centre + X0.r(), vc.l(), vc.w()},
+            X0.E().T()
+        );
     }
     os  << nl;
 }
@@ -186,22 +162,11 @@ int main(int argc, char *argv[])
         "Model dictionary (default: rigidBodyMotionCoeffs of"
         " constant/dynamicMeshDict)"
     );
-    argList::addOption
-    (
-        "nIter",
-        "n",
-        "Solves per time step, as PIMPLE outer correctors (default 1)"
-    );
+    bodySim::addNIterOption();
 
     #include "setRootCase.H"
     #include "createTime.H"
-
-    const label nIter = args.getOrDefault<label>("nIter", 1);
-    if (nIter < 1)
-    {
-        FatalErrorInFunction
-            << "-nIter must be at least 1, got " << nIter << exit(FatalError);
-    }
+    #include "setNIter.H"
 
     const dictionary dict(modelDict(args, runTime));
     const autoPtr<IOdictionary> state(startState(runTime));
@@ -217,13 +182,11 @@ int main(int argc, char *argv[])
         << motion.nDoF() << " degrees of freedom, " << nIter
         << " solve(s) per time step" << nl << endl;
 
-    const fileName outputDir
+    autoPtr<OFstream> bodiesPtr
     (
-        runTime.path()/"postProcessing"/"rigidBodySim"/runTime.timeName()
+        bodySim::newBodiesTable(runTime, "rigidBodySim")
     );
-    mkDir(outputDir);
-    OFstream bodies(outputDir/"bodies.dat");
-    bodies.precision(17);
+    OFstream& bodies = *bodiesPtr;
     writeHeader(bodies, motion);
     writeRow(bodies, runTime.value(), motion);
     bodies.flush();
@@ -255,16 +218,7 @@ int main(int argc, char *argv[])
         {
             IOdictionary stateDict
             (
-                IOobject
-                (
-                    "rigidBodyMotionState",
-                    runTime.timeName(),
-                    "uniform",
-                    runTime,
-                    IOobject::NO_READ,
-                    IOobject::NO_WRITE,
-                    false
-                )
+                bodySim::uniformIO(runTime, "rigidBodyMotionState")
             );
             motion.state().write(stateDict);
             if (!restartFiles::write(stateDict))

@@ -48,6 +48,7 @@ Usage
 #include "OFstream.H"
 #include "sixDoFRigidBodyMotion.H"
 #include "restartFiles.H"
+#include "bodySim.H"
 
 using namespace Foam;
 
@@ -73,13 +74,7 @@ IOobject bodiesIO(const Time& runTime)
 
     IOobject restart
     (
-        "sixDoFBodies",
-        runTime.timeName(),
-        "uniform",
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
+        bodySim::uniformIO(runTime, "sixDoFBodies", IOobject::MUST_READ)
     );
     if (restart.typeHeaderOk<IOdictionary>(true))
     {
@@ -102,17 +97,7 @@ void writeHeader(OFstream& os, const wordList& names)
     os  << "# Time";
     for (const word& name : names)
     {
-        for (const char* q : {"r", "c", "v", "omega"})
-        {
-            for (const char* c : {"x", "y", "z"})
-            {
-                os  << ' ' << name << '.' << q << '.' << c;
-            }
-        }
-        for (const char* c : {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"})
-        {
-            os  << ' ' << name << ".R." << c;
-        }
+        bodySim::writeBodyHeader(os, name, {"r", "c", "v", "omega"});
     }
     os  << nl;
 }
@@ -128,19 +113,12 @@ void writeRow
     os  << t;
     for (const sixDoFRigidBodyMotion& m : motions)
     {
-        for
+        bodySim::writeBodyRow
         (
-            const vector& v
-          : {m.centreOfRotation(), m.centreOfMass(), m.v(), m.omega()}
-        )
-        {
-            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
-        }
-        const tensor& R = m.orientation();
-        for (direction i = 0; i < tensor::nComponents; ++i)
-        {
-            os  << ' ' << R[i];
-        }
+            os,
+            {m.centreOfRotation(), m.centreOfMass(), m.v(), m.omega()},
+            m.orientation()
+        );
     }
     os  << nl;
 }
@@ -164,22 +142,11 @@ int main(int argc, char *argv[])
         " sixDoFRigidBodyMotion solver does: restraints cannot reach the"
         " case's time through it"
     );
-    argList::addOption
-    (
-        "nIter",
-        "n",
-        "Solves per time step, as PIMPLE outer correctors (default 1)"
-    );
+    bodySim::addNIterOption();
 
     #include "setRootCase.H"
     #include "createTime.H"
-
-    const label nIter = args.getOrDefault<label>("nIter", 1);
-    if (nIter < 1)
-    {
-        FatalErrorInFunction
-            << "-nIter must be at least 1, got " << nIter << exit(FatalError);
-    }
+    #include "setNIter.H"
 
     // Kept for the whole run: the restraints find the case's time through
     // the file their dictionaries belong to
@@ -217,13 +184,8 @@ int main(int argc, char *argv[])
     Info<< motions.size() << " bodies " << names << ", " << nIter
         << " solve(s) per time step" << nl << endl;
 
-    const fileName outputDir
-    (
-        runTime.path()/"postProcessing"/"sixDoFSim"/runTime.timeName()
-    );
-    mkDir(outputDir);
-    OFstream out(outputDir/"bodies.dat");
-    out.precision(17);
+    autoPtr<OFstream> outPtr(bodySim::newBodiesTable(runTime, "sixDoFSim"));
+    OFstream& out = *outPtr;
     writeHeader(out, names);
     writeRow(out, runTime.value(), motions);
     out.flush();
@@ -264,16 +226,7 @@ int main(int argc, char *argv[])
         {
             IOdictionary state
             (
-                IOobject
-                (
-                    "sixDoFBodies",
-                    runTime.timeName(),
-                    "uniform",
-                    runTime,
-                    IOobject::NO_READ,
-                    IOobject::NO_WRITE,
-                    false
-                ),
+                bodySim::uniformIO(runTime, "sixDoFBodies"),
                 bodiesDict
             );
             dictionary& stateBodies = state.subDict("bodies");
