@@ -4,6 +4,7 @@ Each test writes a throw-away OpenFOAM case (system/controlDict and
 constant/dynamicMeshDict) into a temporary directory, runs rigidBodySim on
 it and reads back the bodies' motion and the connectors' outputs.
 """
+import math
 import os
 import shutil
 import subprocess
@@ -46,15 +47,22 @@ class Case:
 
     def run(self, n_iter=1, expect_failure=False):
         """Run rigidBodySim; return its log (stdout and stderr)."""
+        return self.run_application(
+            ["rigidBodySim", "-case", self.dir, "-nIter", str(n_iter)], expect_failure)
+
+    def run_application(self, command, expect_failure):
+        """Run command, an application on this case; return its log (stdout
+        and stderr) and keep its exit code in self.returncode. Raises
+        AssertionError when it fails, or with expect_failure when it does not."""
         result = subprocess.run(
-            ["rigidBodySim", "-case", self.dir, "-nIter", str(n_iter)],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
         )
+        self.returncode = result.returncode
         if expect_failure:
             if result.returncode == 0:
-                raise AssertionError(f"rigidBodySim succeeded on {self.dir}, expected a failure")
+                raise AssertionError(f"{command[0]} succeeded on {self.dir}, expected a failure")
         elif result.returncode != 0:
-            raise AssertionError(f"rigidBodySim failed on {self.dir}:\n{result.stdout[-3000:]}")
+            raise AssertionError(f"{command[0]} failed on {self.dir}:\n{result.stdout[-3000:]}")
         return result.stdout
 
     def table(self, *path):
@@ -77,6 +85,25 @@ class Case:
     def cleanup(self):
         if os.environ.get("KEEP_CASES") != "1":
             shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def check(name, ok, detail):
+    """Print a PASS or FAIL line for a check; 1 if it failed, else 0."""
+    print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
+    return 0 if ok else 1
+
+
+def check_order(name, errors, low, high, log=math.log2, what="errors", unit=""):
+    """check that the observed orders of convergence, log(e[i] / e[i + 1])
+    of the errors of runs each finer than the one before (math.log2: half the
+    step; math.log10: a tenth), all lie between low and high."""
+    orders = [log(errors[i] / errors[i + 1]) for i in range(len(errors) - 1)]
+    return check(
+        name,
+        all(low < o < high for o in orders),
+        f"{what} {', '.join(f'{e:.2e}' for e in errors)}{unit}; orders "
+        f"{', '.join(f'{o:.2f}' for o in orders)}",
+    )
 
 
 def fmu_path(name):

@@ -5,7 +5,6 @@ sixDoFRigidBodyMotion dictionary per body (named by its keyword, as a patch
 names a body of the sixDoFRigidBodyDisplacement condition), and 'g'.
 """
 import os
-import subprocess
 
 from foamfmi.bridgecase import Case, foam_file, fmu_path, vec  # noqa: F401
 
@@ -39,17 +38,8 @@ class SixDoFCase(Case):
 
     def run(self, n_iter=1, expect_failure=False, args=()):
         """Run sixDoFSim with args; return its log (stdout and stderr)."""
-        result = subprocess.run(
-            ["sixDoFSim", "-case", self.dir, "-nIter", str(n_iter), *args],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-        )
-        self.returncode = result.returncode
-        if expect_failure:
-            if result.returncode == 0:
-                raise AssertionError(f"sixDoFSim succeeded on {self.dir}, expected a failure")
-        elif result.returncode != 0:
-            raise AssertionError(f"sixDoFSim failed on {self.dir}:\n{result.stdout[-3000:]}")
-        return result.stdout
+        return self.run_application(
+            ["sixDoFSim", "-case", self.dir, "-nIter", str(n_iter), *args], expect_failure)
 
     def bodies(self, start="0"):
         return self.table("postProcessing", "sixDoFSim", start, "bodies.dat")

@@ -32,7 +32,7 @@ planar, so the alignment penalty carries no load (misalignment 0).
 import math
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import Case, check, check_order, fmu_path, vec
 
 M, LENGTH = 2.0, 0.5                # mass [kg] and length [m] of each rod
 I_ROD = M * LENGTH**2 / 12          # inertia across the rod, about its centre
@@ -129,11 +129,6 @@ def run(k):
     return diff, swing, max(elbow["gap"]), load, max(elbow["misalignment"]), angle
 
 
-def check(name, ok, detail):
-    print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
-    return 0 if ok else 1
-
-
 def main():
     failures = 0
     results = [run(k) for k in STIFFNESSES]
@@ -163,10 +158,8 @@ def main():
     # First order in 1/k: each tenfold stiffness cuts the difference about
     # tenfold; 0.8 to 1.2 leaves room for the time-step error (fixed) and
     # for the penalty modes.
-    orders = [math.log10(diffs[i] / diffs[i + 1]) for i in range(len(diffs) - 1)]
-    failures += check("order in 1/k", all(0.8 < o < 1.2 for o in orders),
-                      f"differences {', '.join(f'{d:.2e}' for d in diffs)}; orders "
-                      f"{', '.join(f'{o:.2f}' for o in orders)}")
+    failures += check_order("order in 1/k", diffs, 0.8, 1.2, log=math.log10,
+                            what="differences")
 
     # The gap output is the constraint error: at most about load / k (the
     # penalty modes add a transient on top: factor 2).

@@ -20,6 +20,7 @@ linearSpring FMU. For k dt^2/m from 1e-4 to 1e6, over 50 periods (at least
 import math
 import sys
 
+from foamfmi.bridgecase import check
 from foamfmi.implicitcase import (
     MASS, X0, growth, run_bodies, solver_entry, spring_errors, spring_model,
 )
@@ -30,11 +31,6 @@ RATIOS = (1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6)  # k dt^2 / m
 
 def steps(omega):
     return max(200, math.ceil(50 * 2 * math.pi / (omega * DT)))
-
-
-def check(name, ok, detail):
-    print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
-    return 0 if ok else 1
 
 
 def main():
