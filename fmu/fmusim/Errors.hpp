@@ -1,4 +1,6 @@
-// Exit codes of fmusim and the exception class behind each.
+// Exit codes of fmusim and the exception class behind each: a failed FMU
+// call or a simulation that could not go on is the importer's
+// fmuImport::Error, a call that did not come back its fmuImport::LostCall.
 #ifndef FMUSIM_ERRORS_HPP
 #define FMUSIM_ERRORS_HPP
 
@@ -34,12 +36,6 @@ public:
 
 // The FMU could not be loaded or instantiated.
 class LoadError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// The simulation could not go on.
-class SimulationError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };

@@ -1,6 +1,7 @@
 #include "Session.hpp"
 
 #include "Errors.hpp"
+#include "io/Csv.hpp"
 
 #include <iostream>
 
@@ -30,17 +31,54 @@ fmuImport::Logger stderrLogger(bool verbose)
     };
 }
 
+fmuImport::Logger verboseLogger(bool verbose)
+{
+    if (!verbose)
+        return [](const std::string&, int, const std::string&,
+                  const std::string&) {};
+    return stderrLogger(true);
+}
+
 fmuImport::Instance instantiate(const fmuImport::Fmu& fmu,
-                                const std::string& name, bool loggingOn)
+                                const std::string& name,
+                                const fmuImport::Logger& logger, bool loggingOn)
 {
     try {
-        return fmuImport::Instance(fmu, name, stderrLogger(loggingOn),
-                                   loggingOn);
+        return fmuImport::Instance(fmu, name, logger, loggingOn);
     } catch (const fmuImport::LostCall&) {
         throw;
     } catch (const fmuImport::Error& e) {
         throw LoadError(e.what());
     }
+}
+
+std::string instanceName(const fmuImport::Instance& instance)
+{
+    return "FMU '" + instance.fmuPath() + "', instance '" + instance.name()
+        + "'";
+}
+
+bool stepOrEnd(fmuImport::Instance& instance, double t, double h)
+{
+    using Result = fmuImport::Instance::StepResult;
+    const Result result = instance.tryDoStep(t, h);
+    if (result == Result::completed)
+        return true;
+    const std::string reason = instance.lastMessage();
+    if (result == Result::terminated) {
+        std::cerr << "fmusim: " << instanceName(instance)
+                  << " ended the simulation at t = " << formatNumber(t)
+                  << (reason.empty() ? "" : ": " + reason) << '\n';
+        return false;
+    }
+    throw fmuImport::Error(
+        instanceName(instance)
+        + " discarded the step from t = " + formatNumber(t) + " to "
+        + formatNumber(t + h) + " (last successful time "
+        + formatNumber(instance.lastSuccessfulTime())
+        + ") without asking to end the simulation"
+        + (reason.empty() ? "" : ": " + reason)
+        + "; fmusim takes the steps it is given and cannot retry a shorter one");
 }
 
 } // namespace fmusim

@@ -119,11 +119,10 @@ int main(int argc, char** argv)
         return e.reason() == fmuImport::LostCall::Reason::timedOut
             ? fmusim::exitTimeout
             : fmusim::exitFmuEnded;
-    } catch (const fmusim::SimulationError& e) {
-        std::cerr << "fmusim: simulation error: " << e.what() << '\n';
-        return fmusim::exitSimulation;
     } catch (const std::exception& e) {
-        // fmuImport::Error after loading: an FMU call failed.
+        // fmuImport::Error after loading: an FMU call failed, or fmusim
+        // found the simulation broken (a non-finite output or body state, a
+        // coupling that did not converge, a discarded step).
         std::cerr << "fmusim: simulation error: " << e.what() << '\n';
         return fmusim::exitSimulation;
     }

@@ -45,26 +45,6 @@ std::string joined(const std::vector<std::string>& problems)
     return text;
 }
 
-// fmi2Instantiate and fmi2FreeInstance, the FMU's messages shown only when
-// verbose (as in the probes); LoadError if it cannot be instantiated.
-void instantiateQuietly(const fmuImport::Fmu& fmu, bool verbose)
-{
-    try {
-        fmuImport::Instance(
-            fmu, "check",
-            [verbose](const std::string& i, int status,
-                      const std::string& category, const std::string& m) {
-                if (verbose)
-                    stderrLogger(true)(i, status, category, m);
-            },
-            false);
-    } catch (const fmuImport::LostCall&) {
-        throw;
-    } catch (const fmuImport::Error& e) {
-        throw LoadError(e.what());
-    }
-}
-
 CheckResult verdict(const std::string& name,
                     const std::vector<std::string>& problems)
 {
@@ -148,14 +128,16 @@ int checkCommand(const std::vector<std::string>& arguments)
     // fmi2Instantiate) is a load error, exit code 3 as for run and twobody,
     // not merely a failed check: nothing else can be checked. The report
     // still ends with its reason and the count.
+    // fmi2Instantiate and fmi2FreeInstance, the FMU's messages shown only
+    // when verbose (as in the probes).
     try {
-        instantiateQuietly(fmu, options.verbose);
+        instantiate(fmu, "check", verboseLogger(options.verbose), false);
     } catch (const LoadError& e) {
         report({"initialization", CheckResult::fail, e.what()});
         std::cout << passed << " passed, " << failed << " failed\n";
         throw;
     }
-    if (connector.missingRequired().empty())
+    if (connector.variables().missingRequired().empty())
         runProbes(fmu, connector, options, report);
     else
         report({"probes", CheckResult::skip,

@@ -2,6 +2,7 @@
 
 #include "io/Csv.hpp"
 #include "Session.hpp"
+#include "io/Values.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -24,24 +25,16 @@ public:
         : fmu_(fmu), connector_(connector), options_(options),
           rng_(options.seed)
     {
-        for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-            if (v.causality == fmuImport::Causality::output
-                && v.type == fmuImport::Type::Real)
-                outputs_.push_back(&v);
+        for (const fmuImport::Variable* v : outputsOf(fmu))
+            if (v->type == fmuImport::Type::Real)
+                outputs_.push_back(v);
     }
 
     // An instance initialised with the start values, at t = 0.
     fmuImport::Instance started(const std::string& name)
     {
-        const bool verbose = options_.verbose;
-        fmuImport::Instance instance(
-            fmu_, name,
-            [verbose](const std::string& i, int status,
-                      const std::string& category, const std::string& m) {
-                if (verbose)
-                    stderrLogger(true)(i, status, category, m);
-            },
-            false);
+        fmuImport::Instance instance
+            = instantiate(fmu_, name, verboseLogger(options_.verbose), false);
         instance.setupExperiment(0.0);
         instance.enterInitializationMode();
         instance.exitInitializationMode();
@@ -77,7 +70,8 @@ public:
                     Kinematics* A = nullptr, Kinematics* B = nullptr)
     {
         const Kinematics a = random();
-        const Kinematics b = connector_.twoBody() ? random() : Kinematics();
+        const Kinematics b
+            = connector_.variables().twoBody() ? random() : Kinematics();
         step(instance, t, a, b);
         t += options_.stepSize;
         if (A)
@@ -329,8 +323,9 @@ void stepSizeProbe(Prober& p,
         double t = 0;
         for (const double h : {1.0, 2.5, 0.4, 1e-3}) {
             const Kinematics A = p.random();
-            const Kinematics B
-                = p.connector_.twoBody() ? p.random() : Kinematics();
+            const Kinematics B = p.connector_.variables().twoBody()
+                ? p.random()
+                : Kinematics();
             p.connector_.setKinematics(instance, A, B);
             instance.doStep(t, h * p.options_.stepSize);
             t += h * p.options_.stepSize;
@@ -363,7 +358,8 @@ void nonFiniteProbe(Prober& p,
             double t = 0;
             p.randomStep(instance, t);
             Kinematics A = p.random(),
-                       B = p.connector_.twoBody() ? p.random() : Kinematics();
+                       B = p.connector_.variables().twoBody() ? p.random()
+                                                              : Kinematics();
             p.connector_.setKinematics(instance, A, B);
             std::string nonFinite;
             try {

@@ -25,16 +25,7 @@ std::vector<double> rowMajor(const Eigen::Matrix3d& m)
 
 } // namespace
 
-ConnectorIo::Body ConnectorIo::body(const std::string& prefix) const
-{
-    auto refs
-        = [&](const char* term) { return variables_.refs(prefix + term); };
-    return {refs(".r"), refs(".R"), refs(".v"), refs(".omega"), refs(".m"),
-            refs(".c"), refs(".J"), refs(".F"), refs(".M")};
-}
-
-ConnectorIo::ConnectorIo(const fmuImport::Fmu& fmu)
-    : variables_(fmu), A_(body("A")), B_(body("B"))
+ConnectorIo::ConnectorIo(const fmuImport::Fmu& fmu) : variables_(fmu)
 {
 }
 
@@ -43,15 +34,15 @@ void ConnectorIo::setKinematics(fmuImport::Instance& instance,
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;
-    auto add = [&](const Body& body, const Kinematics& k) {
-        append(vrs, values, body.r, k.r.data());
-        append(vrs, values, body.R, rowMajor(k.R).data());
-        append(vrs, values, body.v, k.v.data());
-        append(vrs, values, body.omega, k.omega.data());
+    auto add = [&](const std::string& body, const Kinematics& k) {
+        append(vrs, values, variables_.refs(body + ".r"), k.r.data());
+        append(vrs, values, variables_.refs(body + ".R"), rowMajor(k.R).data());
+        append(vrs, values, variables_.refs(body + ".v"), k.v.data());
+        append(vrs, values, variables_.refs(body + ".omega"), k.omega.data());
     };
-    add(A_, A);
-    if (twoBody())
-        add(B_, B);
+    add("A", A);
+    if (variables_.twoBody())
+        add("B", B);
     instance.setReal(vrs, values);
 }
 
@@ -61,14 +52,14 @@ void ConnectorIo::setMassProperties(fmuImport::Instance& instance,
 {
     std::vector<unsigned int> vrs;
     std::vector<double> values;
-    auto add = [&](const Body& body, const MassProperties& p) {
-        append(vrs, values, body.m, &p.m);
-        append(vrs, values, body.c, p.c.data());
-        append(vrs, values, body.J, rowMajor(p.J).data());
+    auto add = [&](const std::string& body, const MassProperties& p) {
+        append(vrs, values, variables_.refs(body + ".m"), &p.m);
+        append(vrs, values, variables_.refs(body + ".c"), p.c.data());
+        append(vrs, values, variables_.refs(body + ".J"), rowMajor(p.J).data());
     };
-    add(A_, A);
-    if (twoBody())
-        add(B_, B);
+    add("A", A);
+    if (variables_.twoBody())
+        add("B", B);
     if (!vrs.empty())
         instance.setReal(vrs, values);
 }
@@ -76,12 +67,11 @@ void ConnectorIo::setMassProperties(fmuImport::Instance& instance,
 void ConnectorIo::getLoads(fmuImport::Instance& instance, Loads& A,
                            Loads& B) const
 {
-    std::vector<unsigned int> vrs = A_.F;
-    vrs.insert(vrs.end(), A_.M.begin(), A_.M.end());
-    if (hasLoadsB()) {
-        vrs.insert(vrs.end(), B_.F.begin(), B_.F.end());
-        vrs.insert(vrs.end(), B_.M.begin(), B_.M.end());
-    }
+    std::vector<unsigned int> vrs;
+    for (const char* term : {"A.F", "A.M", "B.F", "B.M"})
+        if (term[0] == 'A' || hasLoadsB())
+            for (const unsigned int vr : variables_.refs(term))
+                vrs.push_back(vr);
     const std::vector<double> values = instance.getReal(vrs);
     A.F = Eigen::Vector3d(values[0], values[1], values[2]);
     A.M = Eigen::Vector3d(values[3], values[4], values[5]);
@@ -99,7 +89,7 @@ ConnectorIo::kinematicInputs() const
     std::vector<std::pair<std::string, unsigned int>> inputs;
     using fmuImport::connector::Shape;
     for (const char* prefix : {"A", "B"}) {
-        if (*prefix == 'B' && !twoBody())
+        if (*prefix == 'B' && !variables_.twoBody())
             break;
         for (const auto& term : {std::make_pair(".r", Shape::vector),
                                  std::make_pair(".R", Shape::matrix),

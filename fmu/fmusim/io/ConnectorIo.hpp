@@ -37,30 +37,24 @@ struct Loads {
         = Eigen::Vector3d::Zero(); // moment about the reference point [N.m]
 };
 
-// A connector FMU's kinematic inputs, mass property inputs and load outputs,
-// by value reference (declared terms of fmuImport::connector::Variables).
+// A connector FMU's kinematic inputs, mass property inputs and load outputs
+// as Eigen vectors, set and read through the value references of its
+// interface variables (fmuImport::connector::Variables).
 class ConnectorIo {
 public:
     explicit ConnectorIo(const fmuImport::Fmu& fmu);
 
-    // The FMU's interface variables and their departures from the interface
+    // The FMU's interface variables: whether it is a two-body connector,
+    // the required terms it lacks, its departures from the interface
     const fmuImport::connector::Variables& variables() const
     {
         return variables_;
     }
 
-    bool twoBody() const { return variables_.twoBody(); } // declares B. inputs
-    // The required terms not fully declared ("A.F", ...); empty for a
-    // usable connector.
-    std::vector<std::string> missingRequired() const
+    // Declares the loads on B (B.F and B.M).
+    bool hasLoadsB() const
     {
-        return variables_.missingRequired();
-    }
-    bool hasLoadsB() const { return !B_.F.empty() && !B_.M.empty(); }
-    bool hasVelocities() const
-    {
-        return !A_.v.empty() || !A_.omega.empty() || !B_.v.empty()
-            || !B_.omega.empty();
+        return variables_.declared("B.F") && variables_.declared("B.M");
     }
 
     // Sets the declared inputs; for a one-body connector B is ignored.
@@ -73,19 +67,12 @@ public:
     // Loads on A and B (zero for B when B.F, B.M are not declared).
     void getLoads(fmuImport::Instance& instance, Loads& A, Loads& B) const;
 
-    // The value references of the declared kinematic inputs, for probing.
+    // The names and value references of the declared kinematic inputs, for
+    // probing.
     std::vector<std::pair<std::string, unsigned int>> kinematicInputs() const;
 
 private:
-    // Value references of one body's terms, empty when not declared
-    struct Body {
-        std::vector<unsigned int> r, R, v, omega, m, c, J, F, M;
-    };
-
-    Body body(const std::string& prefix) const;
-
     fmuImport::connector::Variables variables_;
-    Body A_, B_;
 };
 
 } // namespace fmusim

@@ -1,10 +1,7 @@
 #include "io/Settings.hpp"
 
-#include <iostream>
-
-#include "io/Args.hpp"
-#include "io/Csv.hpp"
 #include "Errors.hpp"
+#include "io/Args.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -78,30 +75,6 @@ bool isSettable(const fmuImport::Variable& v)
         || initialExactOrApprox;
 }
 
-bool stepOrEnd(fmuImport::Instance& instance, double t, double h)
-{
-    using Result = fmuImport::Instance::StepResult;
-    const Result result = instance.tryDoStep(t, h);
-    if (result == Result::completed)
-        return true;
-    const std::string reason = instance.lastMessage();
-    const std::string who = "FMU '" + instance.fmuPath() + "', instance '"
-        + instance.name() + "'";
-    if (result == Result::terminated) {
-        std::cerr << "fmusim: " << who
-                  << " ended the simulation at t = " << formatNumber(t)
-                  << (reason.empty() ? "" : ": " + reason) << '\n';
-        return false;
-    }
-    throw SimulationError(
-        who + " discarded the step from t = " + formatNumber(t) + " to "
-        + formatNumber(t + h) + " (last successful time "
-        + formatNumber(instance.lastSuccessfulTime())
-        + ") without asking to end the simulation"
-        + (reason.empty() ? "" : ": " + reason)
-        + "; fmusim takes the steps it is given and cannot retry a shorter one");
-}
-
 void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance,
                    const std::vector<Setting>& settings)
 {
@@ -144,66 +117,6 @@ void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance,
                    "'" + s.value + "' for '" + s.name + "' is not an integer");
         instance.setInteger(vr, {static_cast<int>(*number)});
     }
-}
-
-std::vector<std::string>
-readValues(fmuImport::Instance& instance,
-           const std::vector<const fmuImport::Variable*>& variables)
-{
-    using fmuImport::Type;
-    // One fmi2Get call per type: gather the value references, then scatter.
-    std::vector<unsigned int> vrs[4];
-    std::vector<std::size_t> where[4];
-    auto group = [](Type t) {
-        return t == Type::Real   ? 0
-            : t == Type::Boolean ? 2
-            : t == Type::String  ? 3
-                                 : 1;
-    };
-    for (std::size_t i = 0; i < variables.size(); ++i) {
-        const int g = group(variables[i]->type);
-        vrs[g].push_back(variables[i]->valueReference);
-        where[g].push_back(i);
-    }
-    std::vector<std::string> text(variables.size());
-    if (!vrs[0].empty()) {
-        const std::vector<double> values = instance.getReal(vrs[0]);
-        for (std::size_t k = 0; k < values.size(); ++k) {
-            const fmuImport::Variable& v = *variables[where[0][k]];
-            if (!std::isfinite(values[k]))
-                throw SimulationError(nonFiniteMessage(
-                    instance,
-                    (v.causality == fmuImport::Causality::output ? "output '"
-                                                                 : "variable '")
-                        + v.name + "'",
-                    values[k], instance.time()));
-            text[where[0][k]] = formatNumber(values[k]);
-        }
-    }
-    if (!vrs[1].empty()) {
-        const std::vector<int> values = instance.getInteger(vrs[1]);
-        for (std::size_t k = 0; k < values.size(); ++k)
-            text[where[1][k]] = std::to_string(values[k]);
-    }
-    if (!vrs[2].empty()) {
-        const std::vector<bool> values = instance.getBoolean(vrs[2]);
-        for (std::size_t k = 0; k < values.size(); ++k)
-            text[where[2][k]] = values[k] ? "1" : "0";
-    }
-    if (!vrs[3].empty()) {
-        const std::vector<std::string> values = instance.getString(vrs[3]);
-        for (std::size_t k = 0; k < values.size(); ++k)
-            text[where[3][k]] = csvField(values[k]);
-    }
-    return text;
-}
-
-std::string nonFiniteMessage(const fmuImport::Instance& instance,
-                             const std::string& what, double value, double time)
-{
-    return "FMU '" + instance.fmuPath() + "', instance '" + instance.name()
-        + "': " + what + " is " + formatNumber(value)
-        + " at t = " + formatNumber(time) + ", expected a finite number";
 }
 
 } // namespace fmusim

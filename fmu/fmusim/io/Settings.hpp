@@ -32,31 +32,12 @@ std::vector<Setting> parseSetOptions(const std::vector<std::string>& options);
 // fmi2EnterInitializationMode, where all of these may be set.
 bool isSettable(const fmuImport::Variable& v);
 
-// One fmi2DoStep from t by h. Returns true when the step was taken, false
-// when the FMU asks to end the simulation (fmi2Discard with fmi2Terminated,
-// reported on stderr with the FMU's reason); a step the FMU discards without
-// asking to end throws SimulationError: fmusim takes the steps it was given
-// and cannot retry a shorter one.
-bool stepOrEnd(fmuImport::Instance& instance, double t, double h);
-
 // Sets each setting on the instance, converted to the variable's type.
 // Unknown or unsettable variables and values of the wrong type throw
 // FileError (settings from a file) or UsageError (from --set), naming the
 // origin.
 void applySettings(const fmuImport::Fmu& fmu, fmuImport::Instance& instance,
                    const std::vector<Setting>& settings);
-
-// The current values of the variables, as text for CSV output. A NaN or
-// infinite Real throws SimulationError (nonFiniteMessage).
-std::vector<std::string>
-readValues(fmuImport::Instance& instance,
-           const std::vector<const fmuImport::Variable*>& variables);
-
-// "FMU 'x.fmu', instance 'x': output 'y' is nan at t = 0.5, expected a
-// finite number"; what: "output 'y'" or "variable 'y'".
-std::string nonFiniteMessage(const fmuImport::Instance& instance,
-                             const std::string& what, double value,
-                             double time);
 
 } // namespace fmusim
 

@@ -5,6 +5,7 @@
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "io/Settings.hpp"
+#include "io/Values.hpp"
 
 #include <climits>
 #include <cmath>
@@ -158,13 +159,9 @@ void setInputs(fmuImport::Instance& instance, const InputTable* table,
 std::vector<const fmuImport::Variable*>
 outputVariables(const fmuImport::Fmu& fmu, const RunOptions& o)
 {
+    if (!o.outputVariables)
+        return outputsOf(fmu);
     std::vector<const fmuImport::Variable*> chosen;
-    if (!o.outputVariables) {
-        for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-            if (v.causality == fmuImport::Causality::output)
-                chosen.push_back(&v);
-        return chosen;
-    }
     for (const std::string& name : splitNames(*o.outputVariables)) {
         if (!fmu.hasVariable(name))
             throw UsageError("--output-variables: FMU '" + fmu.path()
@@ -204,8 +201,8 @@ int runCommand(const std::vector<std::string>& arguments)
     const std::vector<const fmuImport::Variable*> outputs
         = outputVariables(fmu, o);
 
-    fmuImport::Instance instance
-        = instantiate(fmu, md.modelIdentifier, o.logging);
+    fmuImport::Instance instance = instantiate(
+        fmu, md.modelIdentifier, stderrLogger(o.logging), o.logging);
     instance.setupExperiment(t0, true, t1);
     applySettings(fmu, instance, o.settings);
     instance.enterInitializationMode();

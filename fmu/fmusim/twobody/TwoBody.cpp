@@ -1,6 +1,7 @@
 #include "twobody/TwoBody.hpp"
 
 #include "io/Csv.hpp"
+#include "io/Values.hpp"
 #include "Errors.hpp"
 #include "Session.hpp"
 #include "twobody/TwoBodyConfig.hpp"
@@ -115,12 +116,10 @@ public:
     Simulation(const TwoBodyConfig& config, const fmuImport::Fmu& fmu,
                const ConnectorIo& connector)
         : c_(config), fmu_(fmu), connector_(connector),
-          instance_(instantiate(fmu, "twobody", config.logging)),
-          out_(config.outputFile)
+          instance_(instantiate(fmu, "twobody", stderrLogger(config.logging),
+                                config.logging)),
+          out_(config.outputFile), outputs_(outputsOf(fmu))
     {
-        for (const fmuImport::Variable& v : fmu.modelDescription().variables)
-            if (v.causality == fmuImport::Causality::output)
-                outputs_.push_back(&v);
     }
 
     void run()
@@ -144,7 +143,7 @@ public:
                 break; // the rows end at the last step written
             }
             if (!finite(a_) || !finite(b_))
-                throw SimulationError(
+                throw fmuImport::Error(
                     "the state of a body is not finite at t = "
                     + formatNumber(next));
             if ((n + 1) % c_.writeEvery == 0 || n + 1 == steps)
@@ -201,7 +200,7 @@ private:
     }
 
     // Sets the kinematics at t + h, steps the FMU from t, reads the loads;
-    // a non-finite load stops the run (SimulationError) before it moves a
+    // a non-finite load stops the run (fmuImport::Error) before it moves a
     // body or reaches the output.
     LoadVector evaluate(const BodyState& a1, const BodyState& b1, double t,
                         double h)
@@ -215,7 +214,7 @@ private:
         const LoadVector loads = pack(la, lb);
         for (int i = 0; i < loads.size(); ++i)
             if (!std::isfinite(loads[i]))
-                throw SimulationError(nonFiniteMessage(
+                throw fmuImport::Error(nonFiniteMessage(
                     instance_, "output '" + loadNames()[i] + "'", loads[i],
                     t + h));
         return loads;
@@ -268,7 +267,7 @@ private:
             guess += relaxation * residual;
             lastResidual = residual;
         }
-        throw SimulationError(
+        throw fmuImport::Error(
             "the implicit coupling did not converge at t = " + formatNumber(t)
             + " after " + std::to_string(c_.maxCouplingIterations)
             + " iterations (load change " + formatNumber(residual.norm())
@@ -310,7 +309,8 @@ int twoBodyCommand(const std::vector<std::string>& args)
     const fmuImport::Fmu fmu = loadFmu(
         config.fmuPath, {config.isolation, config.timeout, std::string()});
     const ConnectorIo connector(fmu);
-    const std::vector<std::string> missing = connector.missingRequired();
+    const std::vector<std::string> missing
+        = connector.variables().missingRequired();
     if (!missing.empty()) {
         std::string list;
         for (const std::string& m : missing)
@@ -318,7 +318,7 @@ int twoBodyCommand(const std::vector<std::string>& args)
         throw LoadError("FMU '" + fmu.path()
                         + "' is not a connector: it does not declare " + list);
     }
-    if (!connector.twoBody()) {
+    if (!connector.variables().twoBody()) {
         if (config.bMotionGiven && config.B.motion != MotionKind::world)
             throw UsageError(
                 "B.motion: FMU '" + fmu.path()
