@@ -36,6 +36,24 @@ Catenary::Catenary(const CatenaryParameters& parameters)
     }
     requireNonNegative(lawName, "seabedFriction",
                        parameters.line.seabedFriction, "1");
+    // sections 2, 3, ... and the joints below them, named as the FMU's
+    // parameters
+    for (std::size_t k = 0; k < parameters.line.sections.size(); ++k) {
+        const CatenarySection& s = parameters.line.sections[k];
+        const std::string section = "section" + std::to_string(k + 2) + ".";
+        requirePositive((section + "unstretchedLength").c_str(), s.length,
+                        "m");
+        requirePositive((section + "EA").c_str(), s.EA, "N");
+        if (!std::isfinite(s.weight)) {
+            throw ParameterError(lawName, section + "weight", s.weight, "N/m",
+                                 "finite");
+        }
+        if (!std::isfinite(s.jointWeight)) {
+            throw ParameterError(lawName,
+                                 "joint" + std::to_string(k + 1) + ".weight",
+                                 s.jointWeight, "N", "finite");
+        }
+    }
 }
 
 ConnectorResult Catenary::evaluate(const BodyKinematics& A,
@@ -79,7 +97,7 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     out.anchorTension = std::hypot(s.HA, s.VA);
     r.tension = out.fairleadTension;
     r.potentialEnergy
-        = catenaryEnergy(line, s, x, z) + line.weight * line.length * p_WQ_W[2];
+        = catenaryEnergy(line, s, x, z) + totalWeight(line) * p_WQ_W[2];
     r.dissipatedPower = 0.0;
 
     if (shapePoints == 1 || shapePoints < 0) {
@@ -87,11 +105,23 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
     }
     out.shape.resize(std::size_t(shapePoints));
     out.shapeTension.resize(std::size_t(shapePoints));
+    const double L = totalLength(line);
     for (int i = 0; i < shapePoints; ++i) {
-        const double sArc = line.length * (1.0 - double(i) / (shapePoints - 1));
+        const double sArc = L * (1.0 - double(i) / (shapePoints - 1));
         const Eigen::Vector2d p = catenaryPoint(line, s, x, z, sArc);
         out.shape[std::size_t(i)] = p_WQ_W + p[0] * eH + p[1] * zHat;
         out.shapeTension[std::size_t(i)] = catenaryTension(line, s, sArc);
+    }
+    if (!line.sections.empty()) {
+        const CatenarySectionTensions t = catenarySectionTensions(line, s, x);
+        out.sectionLowerTension = t.lower;
+        out.sectionUpperTension = t.upper;
+        double arc = 0.0;
+        for (std::size_t k = 0; k < line.sections.size(); ++k) {
+            arc += k == 0 ? line.length : line.sections[k - 1].length;
+            const Eigen::Vector2d p = catenaryPoint(line, s, x, z, arc);
+            out.joints.push_back(p_WQ_W + p[0] * eH + p[1] * zHat);
+        }
     }
     return out;
 }

@@ -12,7 +12,8 @@
 //   moments about the reference points:  M_A = (R_A p_A) x F_A, likewise B
 //
 // F_A + F_B = -w L z^ when no part lies on the seabed (the bodies carry the
-// line's weight); the seabed carries the rest otherwise. Diagnostics:
+// line's weight; for a line of sections, its sections' and joint points'
+// weight); the seabed carries the rest otherwise. Diagnostics:
 // fairlead tension sqrt(H^2 + V^2), anchor tension sqrt(HA^2 + VA^2), the
 // grounded length, potentialEnergy = strain energy + weight potential
 // (heights from global z = 0); the quasi-static line dissipates nothing.
@@ -32,7 +33,8 @@ struct CatenaryParameters {
     Vector3 p_AoP_A = Vector3::Zero();
     //- Anchor or second fairlead Q on B, B's frame [m]
     Vector3 p_BoQ_B = Vector3::Zero();
-    //- Unstretched length, weight, stiffness, seabed model
+    //- Unstretched length, weight, stiffness, seabed model; sections after
+    //  the first (from Q towards P) with the points at their joints
     CatenaryLine line;
 };
 
@@ -49,6 +51,11 @@ struct CatenaryOutput {
     std::vector<Vector3> shape;
     //- Effective tension at the shape points [N] (catenaryTension)
     std::vector<double> shapeTension;
+    //- A line of sections: per section from Q, the tension at its end
+    //  towards Q (lower) and towards P (upper) [N]; the positions of the
+    //  joints from Q, global frame [m] (all empty for a uniform line)
+    std::vector<double> sectionLowerTension, sectionUpperTension;
+    std::vector<Vector3> joints;
 };
 
 class Catenary final : public ConnectorLaw {

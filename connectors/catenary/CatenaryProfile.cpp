@@ -4,57 +4,17 @@
 #include <cmath>
 #include <string>
 
+#include "catenary/CatenarySections.hpp"
+#include "catenary/CatenarySpan.hpp"
 #include "common/ConnectorError.hpp"
 
 namespace connectors {
 
 namespace {
 
-//- asinh(d)/d, smooth through d = 0 (series error below 1e-25 there)
-double asinhOverX(double d)
-{
-    return std::abs(d) < 1e-6 ? 1.0 - d * d / 6.0 : std::asinh(d) / d;
-}
-
-//- r = (a sb - b sa)/(a - b) with sa = sqrt(1+a^2), sb = sqrt(1+b^2),
-//  without cancellation: asinh a - asinh b = asinh((a - b) r)
-double divided(double a, double b, double sa, double sb)
-{
-    if (a * b > 0.0) {
-        return (a + b) / (a * sb + b * sa);
-    }
-    if (a == b) {
-        return 1.0; // a = b = 0
-    }
-    return (a * sb - b * sa) / (a - b);
-}
-
-//- Span (x, z) and its Jacobian d(x, z)/d(H, V) at one iterate
-struct Span {
-    double x = 0.0, z = 0.0;
-    double xH = 0.0, xV = 0.0, zH = 0.0, zV = 0.0;
-};
-
-//- Suspended line of length s whose lower end carries vertical tension Va
-//  and horizontal tension H > 0 (upper end: Va + w s); any sign of w
-Span suspendedSpan(double s, double EA, double w, double H, double Va)
-{
-    const double V = Va + w * s;
-    const double a = V / H, b = Va / H;
-    const double sa = std::hypot(1.0, a), sb = std::hypot(1.0, b);
-    const double r = divided(a, b, sa, sb);
-    const double Q = r * asinhOverX(r * (a - b)); // (asinh a - asinh b)/(a-b)
-    const double g = r / (sa * sb);
-    const double p = -(a + b) / (sa * sb * (sa + sb));
-    Span out;
-    out.x = s * Q + H * s / EA;
-    out.z = s * (a + b) / (sa + sb) + (Va * s + 0.5 * w * s * s) / EA;
-    out.xH = (s / H) * (Q - g) + s / EA;
-    out.xV = (s / H) * p;
-    out.zH = (s / H) * p;
-    out.zV = (s / H) * g + s / EA;
-    return out;
-}
+using catenarySpan::asinhOverX;
+using catenarySpan::Span;
+using catenarySpan::suspendedSpan;
 
 //- Anchored line with a grounded part (w > 0, V < wL)
 Span touchdownSpan(const CatenaryLine& line, double H, double V)
@@ -81,12 +41,18 @@ Span touchdownSpan(const CatenaryLine& line, double H, double V)
 
 bool grounded(const CatenaryLine& line, double V)
 {
+    if (!line.sections.empty()) {
+        return catenarySections::grounded(line, V);
+    }
     return line.seabedContact && line.weight > 0.0
         && V < line.weight * line.length;
 }
 
 Span span(const CatenaryLine& line, double H, double V)
 {
+    if (!line.sections.empty()) {
+        return catenarySections::span(line, H, V);
+    }
     if (grounded(line, V)) {
         return touchdownSpan(line, H, V);
     }
@@ -123,8 +89,26 @@ CatenaryGuess coldGuess(const CatenaryLine& line, double x, double z)
     return g;
 }
 
+//- Newton's first iterate: a usable previous solution, else a cold guess
+//  (for a line of sections that of its uniform equivalent)
+CatenaryGuess start(const CatenaryGuess* guess, const CatenaryLine& line,
+                    double x, double z)
+{
+    if (guess != nullptr && guess->H > 0.0 && std::isfinite(guess->H)
+        && std::isfinite(guess->V)) {
+        return *guess;
+    }
+    return line.sections.empty()
+        ? coldGuess(line, x, z)
+        : coldGuess(catenarySections::equivalentUniform(line), x, z);
+}
+
 void fillEnds(const CatenaryLine& line, CatenarySolution& s)
 {
+    if (!line.sections.empty()) {
+        catenarySections::fillEnds(line, s);
+        return;
+    }
     const double w = line.weight, L = line.length;
     if (s.regime == CatenaryRegime::touchdown) {
         s.groundedLength = std::clamp(L - s.V / w, 0.0, L);
@@ -202,6 +186,24 @@ CatenarySolution newton(const CatenaryLine& line, double x, double z,
 
 } // namespace
 
+double totalLength(const CatenaryLine& line)
+{
+    double L = line.length;
+    for (const CatenarySection& s : line.sections) {
+        L += s.length;
+    }
+    return L;
+}
+
+double totalWeight(const CatenaryLine& line)
+{
+    double W = line.weight * line.length;
+    for (const CatenarySection& s : line.sections) {
+        W += s.jointWeight + s.weight * s.length;
+    }
+    return W;
+}
+
 const char* regimeName(CatenaryRegime regime)
 {
     switch (regime) {
@@ -238,6 +240,12 @@ CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
         }
         z = std::max(z, 0.0);
     }
+    if (!line.sections.empty()) {
+        if (catenarySections::closedForm(line, x, z, s)) {
+            return s;
+        }
+        return newton(line, x, z, start(guess, line, x, z), options);
+    }
     if (w == 0.0 && std::hypot(x, z) <= L) {
         s.regime = CatenaryRegime::slackWeightless;
         return s;
@@ -267,17 +275,16 @@ CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
         s.VA = s.V - w * L;
         return s;
     }
-    const CatenaryGuess start = guess != nullptr && guess->H > 0.0
-            && std::isfinite(guess->H) && std::isfinite(guess->V)
-        ? *guess
-        : coldGuess(line, x, z);
-    return newton(line, x, z, start, options);
+    return newton(line, x, z, start(guess, line, x, z), options);
 }
 
 Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
                               const CatenarySolution& sol, double x, double z,
                               double s)
 {
+    if (!line.sections.empty()) {
+        return catenarySections::point(line, sol, x, z, s);
+    }
     const double L = line.length, EA = line.EA, w = line.weight, H = sol.H;
     s = std::clamp(s, 0.0, L);
     switch (sol.regime) {
@@ -331,6 +338,9 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
 double catenaryTension(const CatenaryLine& line, const CatenarySolution& sol,
                        double s)
 {
+    if (!line.sections.empty()) {
+        return catenarySections::tension(line, sol, s);
+    }
     const double w = line.weight, H = sol.H;
     s = std::clamp(s, 0.0, line.length);
     switch (sol.regime) {
@@ -355,6 +365,9 @@ double catenaryTension(const CatenaryLine& line, const CatenarySolution& sol,
 double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
                       double x, double z)
 {
+    if (!line.sections.empty()) {
+        return catenarySections::energy(line, sol, x);
+    }
     const double L = line.length, EA = line.EA, w = line.weight, H = sol.H;
     if (sol.regime == CatenaryRegime::slackWeightless) {
         return 0.0;
@@ -372,33 +385,31 @@ double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
         strain += (Lb - s0) * (T0 * T0 + T0 * H + H * H) / 3.0;
     }
     strain /= 2.0 * EA;
-    // Weight: w times the integral of z over the suspended part, composite
-    // 5-point Gauss-Legendre on 8 panels (z(s) is analytic there; a folded
-    // line is integrated on each side of its fold)
-    static const double node[5] = {0.0, 0.5384693101056831, -0.5384693101056831,
-                                   0.9061798459386640, -0.9061798459386640};
-    static const double weightOf[5]
-        = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-           0.2369268850561891, 0.2369268850561891};
+    // Weight: w times the integral of z over the suspended part (z(s) is
+    // analytic there; a folded line is integrated on each side of its fold)
     const auto integrateZ = [&](double from, double to) {
-        const int panels = 8;
-        const double h = (to - from) / panels;
-        double sum = 0.0;
-        for (int k = 0; k < panels; ++k) {
-            const double mid = from + (k + 0.5) * h;
-            for (int i = 0; i < 5; ++i) {
-                sum += weightOf[i] * 0.5 * h
-                    * catenaryPoint(line, sol, x, z,
-                                    mid + 0.5 * h * node[i])[1];
-            }
-        }
-        return sum;
+        return catenarySpan::integrate(
+            [&](double s) { return catenaryPoint(line, sol, x, z, s)[1]; },
+            from, to);
     };
     const double fold = sol.regime == CatenaryRegime::folded
         ? std::clamp(-sol.VA / w, Lb, L)
         : L;
     const double zIntegral = integrateZ(Lb, fold) + integrateZ(fold, L);
     return strain + w * zIntegral;
+}
+
+CatenarySectionTensions catenarySectionTensions(const CatenaryLine& line,
+                                                 const CatenarySolution& sol,
+                                                 double x)
+{
+    if (!line.sections.empty()) {
+        return catenarySections::sectionTensions(line, sol, x);
+    }
+    CatenarySectionTensions t;
+    t.lower = {catenaryTension(line, sol, 0.0)};
+    t.upper = {catenaryTension(line, sol, line.length)};
+    return t;
 }
 
 } // namespace connectors

@@ -39,12 +39,38 @@
 //    shape is undefined and drawn as the straight chord.
 // A fairlead below the seabed is UndefinedStateError; so is a Newton
 // failure, whose message gives the regime and the residual.
+//
+// A line of sections (CatenaryLine::sections; CatenarySections.hpp): the
+// sections follow each other from the anchor to the fairlead, each with
+// its own L_k, EA_k and w_k, a point load J_k at each joint (a clump
+// weight's or a buoy's net submerged weight). H is the same along the
+// suspended part; the vertical tension falls by w_k L_k along a section
+// and by J_k across a joint on the way from the fairlead down, and each
+// suspended piece is the closed form above. With seabed contact the
+// touchdown point is the highest point where the vertical tension would
+// reach zero; everything below it lies on the seabed (possibly several
+// sections, the touchdown possibly at a joint whose point the seabed then
+// partly carries), the tension falling there by CB w_k per m and by CB
+// times the seabed's reaction at each grounded point.
 #ifndef CONNECTORS_CATENARY_CATENARYPROFILE_HPP
 #define CONNECTORS_CATENARY_CATENARYPROFILE_HPP
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace connectors {
+
+//- A section of the line after the first (whose properties are those of
+//  CatenaryLine itself), with the point at its joint with the section
+//  before it
+struct CatenarySection {
+    //- Net submerged weight of the point at the section's lower joint [N]:
+    //  > 0 a clump weight, < 0 a buoy (its buoyancy less its weight), 0 none
+    double jointWeight = 0.0;
+    //- Unstretched length [m] > 0, axial stiffness [N] > 0, submerged weight
+    //  per unstretched length [N/m] (< 0: buoyant)
+    double length = 1.0, EA = 1.0, weight = 0.0;
+};
 
 struct CatenaryLine {
     //- Unstretched length L [m], > 0
@@ -57,7 +83,16 @@ struct CatenaryLine {
     double seabedFriction = 0.0;
     //- True when the anchor lies on the seabed (the plane through it)
     bool seabedContact = false;
+    //- Sections 2, 3, ... from the anchor towards the fairlead after the
+    //  first (length, EA, weight above); empty: a uniform line
+    std::vector<CatenarySection> sections;
 };
+
+//- Unstretched length of all sections together [m]
+double totalLength(const CatenaryLine& line);
+
+//- Weight of all sections and joint points together [N]
+double totalWeight(const CatenaryLine& line);
 
 enum class CatenaryRegime {
     suspended,
@@ -108,7 +143,8 @@ CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,
                                const CatenaryGuess* guess = nullptr,
                                const CatenaryOptions& options = {});
 
-//- Point of the line at unstretched arc length s in [0, L] from the anchor,
+//- Point of the line at unstretched arc length s in [0, L] from the anchor
+//  (L the total length),
 //  as (horizontal, vertical) from the anchor [m]
 Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
                               const CatenarySolution& solution, double x,
@@ -118,14 +154,25 @@ Eigen::Vector2d catenaryPoint(const CatenaryLine& line,
 //  anchor: sqrt(H^2 + (VA + w s)^2) on a suspended line; on the seabed H,
 //  falling by CB w per m towards the anchor (never below 0), and
 //  sqrt(H^2 + (w (s - Lb))^2) above the touchdown point; the vertical
-//  regimes |VA + w s| (H = 0); 0 on a slack weightless line
+//  regimes |VA + w s| (H = 0); 0 on a slack weightless line. A line of
+//  sections: the same per piece; at a joint, the section above it
 double catenaryTension(const CatenaryLine& line,
                        const CatenarySolution& solution, double s);
 
 //- Strain energy plus the weight's potential energy relative to the
-//  anchor's height: integral of T^2/(2EA) + w z(s) over s [J]
+//  anchor's height: integral of T^2/(2EA) + w z(s) over s, plus J_k z_k of
+//  the joints' points [J]
 double catenaryEnergy(const CatenaryLine& line,
                       const CatenarySolution& solution, double x, double z);
+
+//- Effective tension at each section's lower (towards the anchor) and
+//  upper end [N], sections from the anchor (one for a uniform line: the
+//  anchor's and the fairlead's); x the horizontal span
+struct CatenarySectionTensions {
+    std::vector<double> lower, upper;
+};
+CatenarySectionTensions catenarySectionTensions(
+    const CatenaryLine& line, const CatenarySolution& solution, double x);
 
 } // namespace connectors
 

@@ -1,0 +1,688 @@
+#include "catenary/CatenarySections.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/ConnectorError.hpp"
+
+namespace connectors {
+namespace catenarySections {
+
+namespace {
+
+using catenarySpan::Span;
+using catenarySpan::suspendedSpan;
+
+struct Properties {
+    double length, EA, w;
+};
+
+std::size_t count(const CatenaryLine& l)
+{
+    return 1 + l.sections.size();
+}
+
+Properties properties(const CatenaryLine& l, std::size_t k)
+{
+    if (k == 0) {
+        return {l.length, l.EA, l.weight};
+    }
+    const CatenarySection& s = l.sections[k - 1];
+    return {s.length, s.EA, s.weight};
+}
+
+//- Net weight of the point at the top of section k (0 at the fairlead) [N]
+double jointAbove(const CatenaryLine& l, std::size_t k)
+{
+    return k + 1 < count(l) ? l.sections[k].jointWeight : 0.0;
+}
+
+//- Vertical tension at the top and bottom of each section for the
+//  fairlead's V (the line held from above alone), and the arcs of the
+//  sections' lower ends from the anchor
+struct Profile {
+    std::vector<double> top, bottom, s0;
+};
+
+Profile profile(const CatenaryLine& l, double V)
+{
+    const std::size_t n = count(l);
+    Profile p;
+    p.top.resize(n);
+    p.bottom.resize(n);
+    p.s0.resize(n);
+    double s = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        p.s0[k] = s;
+        s += properties(l, k).length;
+    }
+    double Vt = V;
+    for (std::size_t k = n; k-- > 0;) {
+        const Properties q = properties(l, k);
+        p.top[k] = Vt;
+        p.bottom[k] = Vt - q.w * q.length;
+        Vt = p.bottom[k] - (k > 0 ? jointAbove(l, k - 1) : 0.0);
+    }
+    return p;
+}
+
+struct Touchdown {
+    bool grounded = false;
+    //- Section holding the touchdown point
+    std::size_t section = 0;
+    //- At the top of `section` (its upper joint's point on the seabed)
+    bool atJoint = false;
+    //- Suspended length of `section` (inside it) [m]
+    double hanging = 0.0;
+    //- Arc of the touchdown point from the anchor [m]
+    double arc = 0.0;
+};
+
+//- The lowest point from which the line rises (seabed contact only): going
+//  up from the anchor, where the vertical tension of the line held from
+//  above turns positive, inside a heavy section or at a joint. Below it
+//  that tension is <= 0: the seabed carries the line there.
+Touchdown touchdown(const CatenaryLine& l, const Profile& p)
+{
+    Touchdown t;
+    if (!l.seabedContact) {
+        return t;
+    }
+    const std::size_t n = count(l);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Properties q = properties(l, k);
+        if (p.bottom[k] >= 0.0) {
+            if (k > 0) {
+                // rising from the point at the top of section k - 1
+                t.grounded = true;
+                t.section = k - 1;
+                t.atJoint = true;
+                t.arc = p.s0[k];
+            }
+            return t;
+        }
+        if (q.w > 0.0 && (p.top[k] > 0.0 || k + 1 == n)) {
+            t.grounded = true;
+            t.section = k;
+            t.hanging = p.top[k] / q.w;
+            t.arc = p.s0[k] + q.length - t.hanging;
+            return t;
+        }
+    }
+    // a light top section and V <= 0: the fairlead on the seabed
+    t.grounded = true;
+    t.section = n - 1;
+    t.atJoint = true;
+    t.arc = p.s0[n - 1] + properties(l, n - 1).length;
+    return t;
+}
+
+//- Integral of the grounded tension max(T - c u, 0) over the depth u from
+//  a piece's top to m [N.m]
+double groundedIntegral(double T, double c, double m)
+{
+    return c > 0.0 && c * m > T ? T * T / (2.0 * c) : m * T - 0.5 * c * m * m;
+}
+
+//- Span of one piece from its lower end, with its derivatives in (H, V)
+Span pieceSpan(const Piece& p, double H)
+{
+    Span out;
+    switch (p.kind) {
+    case Piece::Kind::suspended: {
+        const Span f = suspendedSpan(p.length, p.EA, p.w, H, p.Va);
+        out = f;
+        if (p.partial) {
+            // the length V_top/w moves with V, the lower end's tension 0
+            const double Vt = p.w * p.length, T = std::hypot(H, Vt);
+            out.xV = (H / T + H / p.EA) / p.w;
+            out.zV = (Vt / T + Vt / p.EA) / p.w;
+        }
+        return out;
+    }
+    case Piece::Kind::grounded: {
+        const double m = p.length, T = p.Ttop, c = p.friction;
+        out.x = m + groundedIntegral(T, c, m) / p.EA;
+        const bool clamped = c > 0.0 && c * m > T;
+        const double dIdT = clamped ? T / c : m;
+        const double dIdm = clamped ? 0.0 : T - c * m;
+        out.xH = dIdT * p.dTdH / p.EA;
+        out.xV = p.dLengthdV + (dIdT * p.dTdV + dIdm * p.dLengthdV) / p.EA;
+        return out;
+    }
+    case Piece::Kind::vertical:
+        out.z = p.direction * p.length
+            + (p.Va * p.length + 0.5 * p.w * p.length * p.length) / p.EA;
+        return out;
+    }
+    return out;
+}
+
+//- Places the pieces end to end from the anchor (heaped pieces gathered
+//  below the horizontal span x)
+void position(std::vector<Piece>& pieces, double H, double x)
+{
+    double x0 = 0.0, z0 = 0.0;
+    for (Piece& p : pieces) {
+        p.x0 = p.heaped ? std::min(p.s0, x) : x0;
+        p.reach = x;
+        p.z0 = z0;
+        const Span f = pieceSpan(p, H);
+        x0 = p.heaped ? std::min(p.s0 + p.length, x) : x0 + f.x;
+        z0 += f.z;
+    }
+}
+
+//- The grounded pieces below the touchdown point, from the anchor up; T,
+//  dTdH, dTdV: the tension at the touchdown point and its derivatives
+std::vector<Piece> groundedPieces(const CatenaryLine& l, const Profile& p,
+                                  const Touchdown& t, double T, double dTdH,
+                                  double dTdV, bool heaped)
+{
+    const double CB = l.seabedFriction;
+    std::vector<Piece> out;
+    for (std::size_t k = t.section + 1; k-- > 0;) {
+        const Properties q = properties(l, k);
+        const bool top = k == t.section && !t.atJoint;
+        Piece g;
+        g.kind = Piece::Kind::grounded;
+        g.section = k;
+        g.heaped = heaped;
+        g.EA = q.EA;
+        g.w = q.w;
+        g.s0 = p.s0[k];
+        g.length = top ? q.length - t.hanging : q.length;
+        g.dLengthdV = top ? -1.0 / q.w : 0.0;
+        g.Ttop = T;
+        g.dTdH = dTdH;
+        g.dTdV = dTdV;
+        g.friction = heaped ? 0.0 : CB * q.w;
+        out.push_back(g);
+        // the tension at its lower end, then across the point below it
+        T -= g.friction * g.length + (k > 0 ? CB * jointAbove(l, k - 1) : 0.0);
+        dTdV -= g.friction * g.dLengthdV;
+        if (!(T > 0.0)) {
+            T = dTdH = dTdV = 0.0;
+        }
+    }
+    std::reverse(out.begin(), out.end());
+    return out;
+}
+
+//- The piece holding arc (the upper one at a joint) and the arc within it
+const Piece& locate(const std::vector<Piece>& ps, double& arc)
+{
+    std::size_t i = 0;
+    while (i + 1 < ps.size() && arc >= ps[i + 1].s0) {
+        ++i;
+    }
+    arc = std::clamp(arc - ps[i].s0, 0.0, ps[i].length);
+    return ps[i];
+}
+
+Eigen::Vector2d pointOf(const Piece& p, double H, double t)
+{
+    switch (p.kind) {
+    case Piece::Kind::suspended: {
+        if (t == 0.0) {
+            return {p.x0, p.z0};
+        }
+        const Span f = suspendedSpan(t, p.EA, p.w, H, p.Va);
+        return {p.x0 + f.x, p.z0 + f.z};
+    }
+    case Piece::Kind::grounded:
+        if (p.heaped) {
+            return {std::min(p.s0 + t, p.reach), 0.0};
+        }
+        return {p.x0 + t
+                    + (groundedIntegral(p.Ttop, p.friction, p.length)
+                       - groundedIntegral(p.Ttop, p.friction, p.length - t))
+                        / p.EA,
+                0.0};
+    case Piece::Kind::vertical:
+        return {p.x0,
+                p.z0 + p.direction * t
+                    + (p.Va * t + 0.5 * p.w * t * t) / p.EA};
+    }
+    return {p.x0, p.z0};
+}
+
+double tensionOf(const Piece& p, double H, double t)
+{
+    switch (p.kind) {
+    case Piece::Kind::suspended:
+        return std::hypot(H, p.Va + p.w * t);
+    case Piece::Kind::grounded:
+        return std::max(p.Ttop - p.friction * (p.length - t), 0.0);
+    case Piece::Kind::vertical:
+        return std::abs(p.Va + p.w * t);
+    }
+    return 0.0;
+}
+
+std::string sectionName(std::size_t k)
+{
+    return "section " + std::to_string(k + 1);
+}
+
+std::string jointName(std::size_t k)
+{
+    return "joint " + std::to_string(k + 1) + " (between sections "
+        + std::to_string(k + 1) + " and " + std::to_string(k + 2) + ")";
+}
+
+//- Throws unless what lies below the touchdown point stays there: no
+//  section lighter than water, no buoy
+void requireGroundable(const CatenaryLine& l, const Touchdown& t, double H,
+                       double V)
+{
+    const auto refuse = [&](const std::string& what) {
+        throw UndefinedStateError(
+            "catenary: " + what
+            + " lies on the seabed below the touchdown point (at "
+            + formatValue(t.arc)
+            + " m from the anchor) and would rise from it: the line would "
+              "touch the seabed twice, which the quasi-static catenary does "
+              "not solve (H = "
+            + formatValue(H) + " N, V = " + formatValue(V) + " N)");
+    };
+    for (std::size_t k = 0; k <= t.section; ++k) {
+        const Properties q = properties(l, k);
+        if (!(q.w > 0.0)) {
+            refuse(sectionName(k) + " (weight " + formatValue(q.w)
+                   + " N/m, allowed > 0 on the seabed)");
+        }
+        if (k < t.section && jointAbove(l, k) < 0.0) {
+            refuse("the buoy at " + jointName(k) + " (net weight "
+                   + formatValue(jointAbove(l, k))
+                   + " N, allowed >= 0 on the seabed)");
+        }
+    }
+}
+
+//- Throws if the suspended part dips below the seabed (z = 0) at a low
+//  point: inside a heavy piece where its vertical tension turns positive,
+//  or at a joint (two touchdowns)
+void requireAboveSeabed(const CatenaryLine& l, const std::vector<Piece>& ps,
+                        double H)
+{
+    const double tolerance = 1e-9 * totalLength(l);
+    for (const Piece& p : ps) {
+        if (p.kind != Piece::Kind::suspended) {
+            continue;
+        }
+        double t = 0.0;
+        if (p.w > 0.0 && p.Va < 0.0 && p.Va + p.w * p.length > 0.0) {
+            t = -p.Va / p.w;
+        }
+        const double z = t == 0.0 ? p.z0 : pointOf(p, H, t)[1];
+        if (z < -tolerance) {
+            throw UndefinedStateError(
+                "catenary: the line would reach " + formatValue(-z)
+                + " m below the seabed at " + formatValue(p.s0 + t)
+                + " m from the anchor (" + sectionName(p.section)
+                + "), held up on both sides: it would touch the seabed "
+                  "twice, which the quasi-static catenary does not solve (H "
+                  "= "
+                + formatValue(H) + " N)");
+        }
+    }
+}
+
+} // namespace
+
+std::vector<Piece> pieces(const CatenaryLine& l, double H, double V)
+{
+    const Profile p = profile(l, V);
+    const Touchdown t = touchdown(l, p);
+    const std::size_t n = count(l);
+    std::vector<Piece> out;
+    std::size_t firstSuspended = 0;
+    if (t.grounded) {
+        double T = H, dTdV = 0.0;
+        if (t.atJoint) {
+            // the seabed carries the point less what the line above holds
+            const double held = t.section + 1 < n ? p.bottom[t.section + 1] : V;
+            T -= l.seabedFriction * (jointAbove(l, t.section) - held);
+            dTdV = l.seabedFriction;
+        }
+        out = T > 0.0 ? groundedPieces(l, p, t, T, 1.0, dTdV, false)
+                      : groundedPieces(l, p, t, 0.0, 0.0, 0.0, false);
+        firstSuspended = t.section + 1;
+        if (!t.atJoint) {
+            const Properties q = properties(l, t.section);
+            Piece s;
+            s.section = t.section;
+            s.s0 = t.arc;
+            s.length = t.hanging;
+            s.EA = q.EA;
+            s.w = q.w;
+            s.partial = true;
+            out.push_back(s);
+        }
+    }
+    for (std::size_t k = firstSuspended; k < n; ++k) {
+        const Properties q = properties(l, k);
+        Piece s;
+        s.section = k;
+        s.s0 = p.s0[k];
+        s.length = q.length;
+        s.EA = q.EA;
+        s.w = q.w;
+        s.Va = p.bottom[k];
+        s.dTdV = 1.0;
+        out.push_back(s);
+    }
+    position(out, H, 0.0);
+    return out;
+}
+
+std::vector<Piece> pieces(const CatenaryLine& l, const CatenarySolution& s,
+                          double x)
+{
+    if (s.regime == CatenaryRegime::suspended
+        || s.regime == CatenaryRegime::touchdown) {
+        return pieces(l, s.H, s.V);
+    }
+    // H = 0: the line vertical above its touchdown point, if any
+    const Profile p = profile(l, s.V);
+    Touchdown t;
+    if (s.regime == CatenaryRegime::slackOnSeabed) {
+        t = touchdown(l, p);
+    }
+    std::vector<Piece> out;
+    if (t.grounded) {
+        out = groundedPieces(l, p, t, 0.0, 0.0, 0.0, true);
+    }
+    const double direction = s.regime == CatenaryRegime::vertical && s.V < 0.0
+        ? -1.0
+        : 1.0;
+    for (std::size_t k = t.grounded ? t.section : 0; k < count(l); ++k) {
+        const Properties q = properties(l, k);
+        const bool partial = t.grounded && k == t.section;
+        if (partial && t.atJoint) {
+            continue;
+        }
+        Piece v;
+        v.kind = Piece::Kind::vertical;
+        v.section = k;
+        v.s0 = partial ? t.arc : p.s0[k];
+        v.length = partial ? t.hanging : q.length;
+        v.EA = q.EA;
+        v.w = q.w;
+        v.Va = partial ? 0.0 : p.bottom[k];
+        v.direction = direction;
+        out.push_back(v);
+    }
+    position(out, 0.0, x);
+    if (t.grounded) {
+        // the hanging part stands on the seabed at the fairlead's span
+        for (Piece& v : out) {
+            v.x0 = v.kind == Piece::Kind::vertical ? x : v.x0;
+        }
+    }
+    return out;
+}
+
+Span span(const CatenaryLine& line, double H, double V)
+{
+    Span out;
+    for (const Piece& p : pieces(line, H, V)) {
+        const Span f = pieceSpan(p, H);
+        out.x += f.x;
+        out.z += f.z;
+        out.xH += f.xH;
+        out.xV += f.xV;
+        out.zH += f.zH;
+        out.zV += f.zV;
+    }
+    return out;
+}
+
+bool grounded(const CatenaryLine& line, double V)
+{
+    return touchdown(line, profile(line, V)).grounded;
+}
+
+void fillEnds(const CatenaryLine& line, CatenarySolution& s)
+{
+    const Profile p = profile(line, s.V);
+    const Touchdown t = touchdown(line, p);
+    if (!t.grounded) {
+        if (line.seabedContact) {
+            requireAboveSeabed(line, pieces(line, s.H, s.V), s.H);
+        }
+        s.regime = CatenaryRegime::suspended;
+        s.groundedLength = 0.0;
+        s.HA = s.H;
+        s.VA = p.bottom[0];
+        return;
+    }
+    requireGroundable(line, t, s.H, s.V);
+    requireAboveSeabed(line, pieces(line, s.H, s.V), s.H);
+    s.regime = CatenaryRegime::touchdown;
+    s.groundedLength = std::clamp(t.arc, 0.0, totalLength(line));
+    const Piece& anchor = pieces(line, s.H, s.V).front();
+    s.HA = std::max(anchor.Ttop - anchor.friction * anchor.length, 0.0);
+    s.VA = 0.0;
+}
+
+bool closedForm(const CatenaryLine& l, double x, double z,
+                CatenarySolution& s)
+{
+    const std::size_t n = count(l);
+    const double L = totalLength(l), tiny = 1e-12 * L;
+    bool weightless = true;
+    for (std::size_t k = 0; k < n; ++k) {
+        weightless = weightless && properties(l, k).w == 0.0
+            && jointAbove(l, k) == 0.0;
+    }
+    if (weightless && std::hypot(x, z) <= L) {
+        s.regime = CatenaryRegime::slackWeightless;
+        return true;
+    }
+    if (l.seabedContact) {
+        // Hanging vertically from the fairlead down to a touchdown point,
+        // from the top: at section k's upper joint the line carries a
+        // share of its point (z linear in it), inside section k a length d
+        // (z = A + B d + C d^2). Z0, V0: height and fairlead tension with
+        // the touchdown at the top of section k and none of its point
+        // carried; R the compliance and Lh the length above it.
+        const Profile p0 = profile(l, 0.0);
+        double Z0 = 0.0, V0 = 0.0, R = 0.0, Lh = 0.0;
+        for (std::size_t k = n; k-- > 0;) {
+            const Properties q = properties(l, k);
+            const double J = jointAbove(l, k);
+            double V = 0.0, Ls = 0.0;
+            bool found = false;
+            Touchdown t; // at the top of section k, or d below it
+            t.grounded = true;
+            t.section = k;
+            if (J != 0.0 && z > Z0) {
+                if (J < 0.0) {
+                    break; // a buoy on the hanging line: Newton
+                }
+                if (z <= Z0 + J * R) {
+                    V = V0 + J * (z - Z0) / (J * R);
+                    Ls = Lh;
+                    t.atJoint = true;
+                    found = true;
+                }
+            }
+            const double A = Z0 + J * R;
+            if (!found && z > A) {
+                if (!(q.w > 0.0)) {
+                    break; // a buoyant section on the hanging line: Newton
+                }
+                const double B = 1.0 + q.w * R, C = q.w / (2.0 * q.EA);
+                if (z <= A + (B + C * q.length) * q.length) {
+                    const double d = 2.0 * (z - A)
+                        / (B + std::sqrt(B * B + 4.0 * C * (z - A)));
+                    V = V0 + J + q.w * d;
+                    Ls = Lh + d;
+                    t.hanging = d;
+                    found = true;
+                }
+            }
+            if (!found && z <= A) {
+                V = V0 + J;
+                Ls = Lh;
+                found = true;
+            }
+            if (found) {
+                if (!(x <= L - Ls)) {
+                    break;
+                }
+                t.arc = p0.s0[k] + q.length - t.hanging;
+                requireGroundable(l, t, 0.0, V);
+                s.regime = CatenaryRegime::slackOnSeabed;
+                s.V = V;
+                s.groundedLength = std::clamp(t.arc, 0.0, L);
+                return true;
+            }
+            Z0 += (q.w * q.length + J) * R + q.length
+                + 0.5 * q.w * q.length * q.length / q.EA;
+            V0 += J + q.w * q.length;
+            R += q.length / q.EA;
+            Lh += q.length;
+        }
+    }
+    if (!(x <= tiny)) {
+        return false;
+    }
+    // Both ends on one vertical, taut: z = dir L + sum over the sections
+    // of (V_bottom L + w L^2/2)/EA, linear in V
+    const double direction = z > 0.0 ? 1.0 : -1.0;
+    const Profile p0 = profile(l, 0.0);
+    double R = 0.0, S = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Properties q = properties(l, k);
+        R += q.length / q.EA;
+        S += (p0.bottom[k] + 0.5 * q.w * q.length) * q.length / q.EA;
+    }
+    s.regime = CatenaryRegime::vertical;
+    s.V = (z - direction * L - S) / R;
+    const Profile p = profile(l, s.V);
+    bool taut = z != 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        taut = taut && direction * p.top[k] >= 0.0
+            && direction * p.bottom[k] >= 0.0;
+    }
+    if (!taut) {
+        throw UndefinedStateError(
+            "catenary: the fairlead is straight above or below the anchor "
+            "(horizontal span "
+            + formatValue(x) + " m, vertical span " + formatValue(z)
+            + " m) and the line of sections is slack there: a folded line "
+              "of sections is not solved by the quasi-static catenary");
+    }
+    s.VA = p.bottom[0];
+    return true;
+}
+
+CatenaryLine equivalentUniform(const CatenaryLine& line)
+{
+    CatenaryLine u = line;
+    u.sections.clear();
+    u.length = totalLength(line);
+    u.weight = totalWeight(line) / u.length;
+    double compliance = 0.0;
+    for (std::size_t k = 0; k < count(line); ++k) {
+        const Properties q = properties(line, k);
+        compliance += q.length / q.EA;
+    }
+    u.EA = u.length / compliance;
+    return u;
+}
+
+
+Eigen::Vector2d point(const CatenaryLine& line, const CatenarySolution& s,
+                      double x, double z, double arc)
+{
+    const double L = totalLength(line);
+    if (s.regime == CatenaryRegime::slackWeightless) {
+        return Eigen::Vector2d(x, z) * (std::clamp(arc, 0.0, L) / L);
+    }
+    const std::vector<Piece> ps = pieces(line, s, x);
+    const Piece& p = locate(ps, arc);
+    return pointOf(p, s.H, arc);
+}
+
+double tension(const CatenaryLine& line, const CatenarySolution& s,
+               double arc)
+{
+    if (s.regime == CatenaryRegime::slackWeightless) {
+        return 0.0;
+    }
+    const std::vector<Piece> ps = pieces(line, s, 0.0);
+    const Piece& p = locate(ps, arc);
+    return tensionOf(p, s.H, arc);
+}
+
+double energy(const CatenaryLine& line, const CatenarySolution& s, double x)
+{
+    if (s.regime == CatenaryRegime::slackWeightless) {
+        return 0.0;
+    }
+    const std::vector<Piece> ps = pieces(line, s, x);
+    double strain = 0.0, weight = 0.0;
+    for (const Piece& p : ps) {
+        const double m = p.length;
+        if (p.kind == Piece::Kind::grounded) {
+            // T falls linearly from Ttop over m0 <= m, then is 0
+            const double c = p.friction;
+            const double m0 = c > 0.0 ? std::min(m, p.Ttop / c) : m;
+            const double T0 = p.Ttop - c * m0;
+            strain += m0 * (T0 * T0 + T0 * p.Ttop + p.Ttop * p.Ttop) / 3.0
+                / (2.0 * p.EA);
+            continue;
+        }
+        const double H = p.kind == Piece::Kind::suspended ? s.H : 0.0;
+        const double Va = p.Va, Vb = p.Va + p.w * m;
+        strain += (H * H * m + m * (Va * Va + Va * Vb + Vb * Vb) / 3.0)
+            / (2.0 * p.EA);
+        weight += p.w
+            * catenarySpan::integrate(
+                      [&](double t) { return pointOf(p, s.H, t)[1]; }, 0.0, m);
+    }
+    // the joints' points at the tops of sections 1 .. n-1
+    for (std::size_t k = 0; k + 1 < count(line); ++k) {
+        const double J = jointAbove(line, k);
+        if (J != 0.0) {
+            double arc = 0.0;
+            for (std::size_t i = 0; i <= k; ++i) {
+                arc += properties(line, i).length;
+            }
+            double t = arc;
+            const Piece& below = locate(ps, t); // the piece above the joint
+            weight += J * pointOf(below, s.H, t)[1];
+        }
+    }
+    return strain + weight;
+}
+
+CatenarySectionTensions sectionTensions(const CatenaryLine& line,
+                                        const CatenarySolution& s, double x)
+{
+    CatenarySectionTensions t;
+    t.lower.assign(count(line), 0.0);
+    t.upper = t.lower;
+    if (s.regime == CatenaryRegime::slackWeightless) {
+        return t;
+    }
+    // the pieces from the anchor up: a section's first gives its lower
+    // end, its last its upper end
+    const std::vector<Piece> ps = pieces(line, s, x);
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+        const Piece& p = ps[i];
+        if (i == 0 || ps[i - 1].section != p.section) {
+            t.lower[p.section] = tensionOf(p, s.H, 0.0);
+        }
+        t.upper[p.section] = tensionOf(p, s.H, p.length);
+    }
+    return t;
+}
+
+} // namespace catenarySections
+} // namespace connectors
