@@ -106,6 +106,13 @@ def check_order(name, errors, low, high, log=math.log2, what="errors", unit=""):
     )
 
 
+def summary(checks, failures):
+    """Print the closing line, "<passed> passed, <failed> failed"; return the
+    exit code, 1 if a check failed."""
+    print(f"{checks - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
 def fmu_path(name):
     path = os.path.join(os.environ["FOAMFMI_FMU_DIR"], name + ".fmu")
     if not os.path.isfile(path):

@@ -34,7 +34,7 @@ import subprocess
 import sys
 import time
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
 from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 
 DT, FAULT_TIME, END = 0.01, 0.3, 1.0
@@ -250,8 +250,7 @@ def main():
     case.cleanup()
 
     checks = 15
-    print(f"{checks - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(checks, failures)
 
 
 if __name__ == "__main__":

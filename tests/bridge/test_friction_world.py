@@ -20,7 +20,7 @@ distance 0.2500406 m (symplectic, 3 solves: the regularised law's own) to
 import math
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary
 
 M, V0, FC, VS = 5.0, 0.2, 0.4, 1e-3
 DIRECTION = (0.6, 0.8, 0.0)
@@ -121,8 +121,7 @@ def main():
                   f"{solver} nIter {n_iter}: friction output -F_c while sliding "
                   f"({len(sliding)} rows)")
             case.cleanup()
-    print(f"{checks - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(checks, failures)
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ planar, so the alignment penalty carries no load (misalignment 0).
 import math
 import sys
 
-from foamfmi.bridgecase import Case, check, check_order, fmu_path, vec
+from foamfmi.bridgecase import Case, check, check_order, fmu_path, summary, vec
 
 M, LENGTH = 2.0, 0.5                # mass [kg] and length [m] of each rod
 I_ROD = M * LENGTH**2 / 12          # inertia across the rod, about its centre
@@ -168,8 +168,7 @@ def main():
         f"{gap:.1e} m <= 2 x {load / k:.1e} m" for k, (_, _, gap, load, _, _) in
         zip(STIFFNESSES, results)))
 
-    print(f"{5 - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(5, failures)
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ linearSpring FMU. For k dt^2/m from 1e-4 to 1e6, over 50 periods (at least
 import math
 import sys
 
-from foamfmi.bridgecase import check
+from foamfmi.bridgecase import check, summary
 from foamfmi.implicitcase import (
     MASS, X0, growth, run_bodies, solver_entry, spring_errors, spring_model,
 )
@@ -119,8 +119,7 @@ def main():
                           limit[0] <= amplitude <= limit[1],
                           f"final amplitude {amplitude:.3e} X0 after {n} steps")
 
-    print(f"{checks - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(checks, failures)
 
 
 if __name__ == "__main__":

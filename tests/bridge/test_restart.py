@@ -11,7 +11,7 @@ import shutil
 import subprocess
 import sys
 
-from foamfmi.bridgecase import Case
+from foamfmi.bridgecase import Case, summary
 from test_two_bodies import model
 
 
@@ -127,8 +127,7 @@ def main():
 
     case.cleanup()
     restarted.cleanup()
-    print(f"{checks - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(checks, failures)
 
 
 if __name__ == "__main__":

@@ -16,7 +16,7 @@ import os
 import shutil
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
 from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 
 PARAMETERS = f"stiffness 50; damping 0.5; restLength 0.5; A.p {vec((0.1, 0, 0.05))}; B.p {vec((0.3, 0.2, 1.2))};"
@@ -131,8 +131,7 @@ def main():
     full.cleanup()
     restarted.cleanup()
 
-    print(f"{count - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(count, failures)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,7 @@ must match the built-in one in every combination.
 """
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
 
 ANCHOR = (0.3, 0.2, 1.2)
 ATTACHMENT = (0.1, 0.0, 0.05)  # body frame, from the centre of mass
@@ -92,8 +92,7 @@ def main():
                 print(f"FAIL {solver} nIter {n_iter}: {len(out['Time'])} output rows "
                       f"for {len(b['Time']) - 1} time steps")
             case.cleanup()
-    print(f"{checks - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(checks, failures)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,7 @@ as the time step shrinks.
 import math
 import sys
 
-from foamfmi.bridgecase import Case, check, check_order, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, check, check_order, fmu_path, rigid_body, summary, vec
 
 M1, M2, K, L0 = 2.0, 3.0, 50.0, 1.0
 STRETCH = 0.1  # initial extension of the spring [m]
@@ -116,8 +116,7 @@ def main():
     errors = [abs(measured_period(run("symplectic", n)[0]) / PERIOD - 1) for n in (25, 50, 100)]
     failures += check_order("symplectic order", errors, 1.8, 2.3, what="period errors")
 
-    print(f"{5 - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(5, failures)
 
 
 if __name__ == "__main__":
