@@ -180,15 +180,23 @@ struct Reference {
     }
 };
 
+//- A line of one section: length [m], EA [N], w [N/m], seabed, friction
+CatenaryLine uniformLine(double length, double EA, double weight, bool seabed,
+                         double friction)
+{
+    CatenaryLine l;
+    l.length = length;
+    l.EA = EA;
+    l.weight = weight;
+    l.seabedContact = seabed;
+    l.seabedFriction = friction;
+    return l;
+}
+
 //- Chain (section 1, from the anchor), rope (section 2), a point between
 CatenaryLine chainRope(double jointWeight, bool seabed, double friction = 0.0)
 {
-    CatenaryLine l;
-    l.length = 60.0;
-    l.EA = 5e8;
-    l.weight = 700.0;
-    l.seabedContact = seabed;
-    l.seabedFriction = friction;
+    CatenaryLine l = uniformLine(60.0, 5e8, 700.0, seabed, friction);
     CatenarySection rope;
     rope.length = 60.0;
     rope.EA = 5e7;
@@ -383,12 +391,8 @@ TEST(CatenarySections, EqualSectionsAreTheUniformLine)
     // 6e-15 of the tension, 1e-12 allowed
     for (const double friction : {0.0, 0.4}) {
         for (const bool seabed : {false, true}) {
-            CatenaryLine uniform;
-            uniform.length = 100.0;
-            uniform.EA = 5e7;
-            uniform.weight = 700.0;
-            uniform.seabedContact = seabed;
-            uniform.seabedFriction = friction;
+            const CatenaryLine uniform
+                = uniformLine(100.0, 5e7, 700.0, seabed, friction);
             CatenaryLine cut = uniform;
             cut.length = 100.0 / 3.0;
             CatenarySection third;
@@ -508,27 +512,24 @@ TEST(CatenarySections, ForceIsMinusTheEnergyGradient)
         const BodyKinematics B
             = body(Vector3(0, 0, line.seabedContact ? 0 : -10));
         const CatenaryOutput out = law.evaluate(A, B, nullptr, 0);
+        // -dE/dr_i with the body `moved` (A: 0, B: 1) displaced along i
+        const auto minusGradient = [&](int moved, int i) {
+            BodyKinematics k[2][2] = {{A, B}, {A, B}};
+            k[0][moved].p_WKo_W[i] += 1e-4;
+            k[1][moved].p_WKo_W[i] -= 1e-4;
+            return (law.evaluate(k[1][0], k[1][1]).potentialEnergy
+                    - law.evaluate(k[0][0], k[0][1]).potentialEnergy)
+                / 2e-4;
+        };
         for (int i = 0; i < 3; ++i) {
-            const double h = 1e-4;
-            BodyKinematics plus = A, minus = A;
-            plus.p_WKo_W[i] += h;
-            minus.p_WKo_W[i] -= h;
-            const double dE = (law.evaluate(plus, B).potentialEnergy
-                               - law.evaluate(minus, B).potentialEnergy)
-                / (2 * h);
-            EXPECT_NEAR(-dE, out.loads.A.f_W[i], 1e-4 * out.fairleadTension)
+            EXPECT_NEAR(minusGradient(0, i), out.loads.A.f_W[i],
+                        1e-4 * out.fairleadTension)
                 << regimeName(out.solution.regime) << " " << i;
-            if (line.seabedContact && i == 2) {
-                continue; // the seabed moves with the anchor
+            if (!(line.seabedContact && i == 2)) { // the seabed moves with B
+                EXPECT_NEAR(minusGradient(1, i), out.loads.B.f_W[i],
+                            1e-4 * out.fairleadTension)
+                    << regimeName(out.solution.regime) << " " << i;
             }
-            BodyKinematics bp = B, bm = B;
-            bp.p_WKo_W[i] += h;
-            bm.p_WKo_W[i] -= h;
-            const double dEB = (law.evaluate(A, bp).potentialEnergy
-                                - law.evaluate(A, bm).potentialEnergy)
-                / (2 * h);
-            EXPECT_NEAR(-dEB, out.loads.B.f_W[i], 1e-4 * out.fairleadTension)
-                << regimeName(out.solution.regime) << " " << i;
         }
         // off the seabed the bodies carry the whole weight
         if (out.solution.groundedLength == 0.0) {
@@ -547,6 +548,21 @@ TEST(CatenarySections, ForceIsMinusTheEnergyGradient)
     }
 }
 
+//- The call throws UndefinedStateError with each of `parts` in its message
+template <class Call>
+void expectRefusal(Call&& call, const std::vector<std::string>& parts)
+{
+    try {
+        call();
+        ADD_FAILURE() << "no exception";
+    } catch (const connectors::UndefinedStateError& e) {
+        for (const std::string& part : parts) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 TEST(CatenarySections, TwoTouchdownsAreRefused)
 {
     // a buoy on the grounded chain would lift it off the seabed between
@@ -559,31 +575,31 @@ TEST(CatenarySections, TwoTouchdownsAreRefused)
     chain.jointWeight = -500.0;
     l.sections.insert(l.sections.begin(), chain); // chain, chain, rope
     l.sections[1].jointWeight = 0.0;
-    try {
-        solveCatenary(l, 120.0, 20.0);
-        ADD_FAILURE() << "no exception";
-    } catch (const connectors::UndefinedStateError& e) {
-        const std::string m = e.what();
-        EXPECT_NE(m.find("the buoy at joint 1 (between sections 1 and 2) "
-                         "(net weight -500 N, allowed >= 0 on the seabed) "
-                         "lies on the seabed below the touchdown point"),
-                  std::string::npos)
-            << m;
-        EXPECT_NE(m.find("touch the seabed twice"), std::string::npos) << m;
-    }
+    expectRefusal([&] { solveCatenary(l, 120.0, 20.0); },
+                  {"the buoy at joint 1 (between sections 1 and 2) (net "
+                   "weight -500 N, allowed >= 0 on the seabed) lies on the "
+                   "seabed below the touchdown point",
+                   "touch the seabed twice"});
     // a buoyant first section would rise from the seabed as well
     CatenaryLine buoyant = chainRope(0.0, true);
     buoyant.weight = -10.0;
     buoyant.sections[0].jointWeight = 4e4; // pins the joint to the seabed
-    try {
-        solveCatenary(buoyant, 110.0, 20.0);
-        ADD_FAILURE() << "no exception";
-    } catch (const connectors::UndefinedStateError& e) {
-        EXPECT_NE(std::string(e.what()).find(
-                      "section 1 (weight -10 N/m, allowed > 0 on the seabed)"),
-                  std::string::npos)
-            << e.what();
-    }
+    expectRefusal(
+        [&] { solveCatenary(buoyant, 110.0, 20.0); },
+        {"section 1 (weight -10 N/m, allowed > 0 on the seabed)"});
+    // a buoy holding up a long heavy rope whose sag would go through the
+    // seabed between the buoy and the fairlead
+    CatenaryLine sag = chainRope(-2e4, true);
+    sag.length = 30.0;
+    sag.sections[0].length = 90.0;
+    sag.sections[0].weight = 200.0;
+    expectRefusal([&] { solveCatenary(sag, 110.0, 20.0); },
+                  {"catenary: the line would reach 1.4393",
+                   "m below the seabed at 65.119",
+                   "m from the anchor (section 2), held up on both sides: "
+                   "it would touch the seabed twice"});
+    EXPECT_EQ(solveCatenary(sag, 116.0, 20.0).regime,
+              CatenaryRegime::touchdown); // taut enough to clear it
     // a slack line of sections folded on one vertical
     expectThrowWithMessage<connectors::UndefinedStateError>(
         [&] { solveCatenary(chainRope(2e4, false), 0.0, 10.0); },
