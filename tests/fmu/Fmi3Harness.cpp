@@ -1,11 +1,10 @@
 #include "Fmi3Harness.hpp"
 
-#include <dlfcn.h>
-
-#include <sstream>
 #include <stdexcept>
 
 #include "FmuHarness.hpp"
+#include "FmuImpl.hpp"
+#include "Unzip.hpp"
 
 namespace fmuTest {
 
@@ -18,16 +17,6 @@ void recordLog(fmi3InstanceEnvironment env, fmi3Status status,
         {status, category ? category : "", message ? message : ""});
 }
 
-std::vector<double> numbers(const std::string& text, bool boolean)
-{
-    std::vector<double> out;
-    std::istringstream in(text);
-    for (std::string word; in >> word;) {
-        out.push_back(boolean ? (word == "true" ? 1.0 : 0.0) : std::stod(word));
-    }
-    return out;
-}
-
 } // namespace
 
 std::string fmu3Path(const std::string& name)
@@ -35,58 +24,49 @@ std::string fmu3Path(const std::string& name)
     return std::string(FOAMFMI_FMU_DIR) + "/fmi3/" + name + ".fmu";
 }
 
-LoadedFmu3::LoadedFmu3(const std::string& modelName) : name(modelName)
+LoadedFmu3::LoadedFmu3(const std::string& modelName)
+    : name(modelName),
+      fmu_(std::make_shared<fmuImport::Fmu::Impl>(fmu3Path(modelName)))
 {
-    directory = unpack(fmu3Path(name));
-    const std::string xml = (directory / "modelDescription.xml").string();
+    const std::string xml = (fmu_->root / "modelDescription.xml").string();
     if (!description.load_file(xml.c_str())) {
         throw std::runtime_error("cannot parse " + xml);
     }
-    const std::string t
-        = (directory / "terminalsAndIcons" / "terminalsAndIcons.xml").string();
-    if (!terminals.load_file(t.c_str())) {
-        throw std::runtime_error("cannot parse " + t);
+    const std::string t = "terminalsAndIcons/terminalsAndIcons.xml";
+    fmuImport::FmuArchive archive(fmu3Path(name),
+                                  fmuImport::UnpackLimits::fromEnvironment());
+    const std::string text = archive.read(t);
+    if (!terminals.load_buffer(text.data(), text.size())) {
+        throw std::runtime_error("cannot parse " + t + " of " + fmu3Path(name));
     }
-    const pugi::xml_node root = description.child("fmiModelDescription");
-    token = root.attribute("instantiationToken").value();
-    for (const pugi::xml_node v : root.child("ModelVariables").children()) {
-        Variable3 var;
-        var.name = v.attribute("name").value();
-        var.valueReference = v.attribute("valueReference").as_uint();
-        var.type = v.name();
-        var.causality = v.attribute("causality").value();
-        for (const pugi::xml_node d : v.children("Dimension")) {
-            var.dimensions.push_back(d.attribute("start").as_ullong());
-            var.size *= var.dimensions.back();
+    token = fmu_->description.guid;
+    for (const fmuImport::Variable& e : fmu_->description.variables) {
+        if (e.element == 0) {
+            Variable3 v;
+            v.name = e.arrayName.empty() ? e.name : e.arrayName;
+            v.valueReference = e.arrayValueReference;
+            v.type = e.typeName;
+            v.causality = e.causality;
+            v.dimensions = e.dimensions;
+            for (const std::size_t n : v.dimensions) {
+                v.size *= n;
+            }
+            variables.push_back(v);
         }
-        var.start
-            = numbers(v.attribute("start").value(), var.type == "Boolean");
-        variables.push_back(var);
+        if (e.hasStart) {
+            variables.back().start.push_back(e.start);
+        }
     }
-    const std::string so
-        = (directory / "binaries" / "x86_64-linux" / (name + ".so")).string();
-    library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (library_ == nullptr) {
-        throw std::runtime_error("dlopen " + so + ": " + dlerror());
-    }
+    fmu_->loadLibrary();
+    const fmuImport::Library& library = fmu_->library();
+    static_cast<fmuImport::Fmi3Api&>(api) = library.api3();
 #define FMU_TEST_RESOLVE(function)                                             \
-    api.function = reinterpret_cast<fmi3##function##TYPE*>(                    \
-        dlsym(library_, "fmi3" #function));                                    \
-    if (api.function == nullptr) {                                             \
-        missing.push_back("fmi3" #function);                                   \
-    }
-    FMU_TEST_FMI3_FUNCTIONS(FMU_TEST_RESOLVE)
+    resolve(library, "fmi3" #function, api.function, missing);
+    FMU_TEST_FMI3_OTHER_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
 }
 
-LoadedFmu3::~LoadedFmu3()
-{
-    if (library_ != nullptr) {
-        dlclose(library_);
-    }
-    std::error_code ignored;
-    std::filesystem::remove_all(directory, ignored);
-}
+LoadedFmu3::~LoadedFmu3() = default;
 
 const Variable3& LoadedFmu3::variable(const std::string& variableName) const
 {

@@ -1,62 +1,49 @@
 // Test harness for the FMI 3.0 connector FMUs through their C entry points:
-// unzips <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu, dlopens
-// binaries/x86_64-linux/<name>.so, resolves the fmi3 functions the tests
-// call and reads modelDescription.xml and terminalsAndIcons.xml.
+// <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu unpacked, its modelDescription.xml read
+// and its binary loaded by the importer (fmuImport: Fmu::Impl, Library),
+// as FmuHarness.hpp does for FMI 2.0; terminalsAndIcons.xml read from the
+// archive with the importer's FmuArchive.
 #ifndef TESTS_FMU_FMI3HARNESS_HPP
 #define TESTS_FMU_FMI3HARNESS_HPP
 
 #include <pugixml.hpp>
 
-#include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "Library.hpp"
 #include "fmi3FunctionTypes.h"
+#include "fmuImport/fmuImport.hpp"
 
 namespace fmuTest {
 
-// The fmi3 functions the tests call, without the fmi3 prefix
+// The fmi3 functions the tests call that fmuImport::Fmi3Api (co-simulation
+// without events) does not have, without the fmi3 prefix
 // clang-format off
-#define FMU_TEST_FMI3_FUNCTIONS(X) \
-    X(GetVersion) \
-    X(InstantiateCoSimulation) \
+#define FMU_TEST_FMI3_OTHER_FUNCTIONS(X) \
     X(InstantiateModelExchange) \
-    X(FreeInstance) \
-    X(EnterInitializationMode) \
-    X(ExitInitializationMode) \
     X(EnterEventMode) \
-    X(Terminate) \
-    X(Reset) \
-    X(GetFloat64) \
-    X(SetFloat64) \
-    X(GetBoolean) \
-    X(GetInt32) \
-    X(GetFMUState) \
-    X(SetFMUState) \
-    X(FreeFMUState) \
-    X(SerializedFMUStateSize) \
-    X(SerializeFMUState) \
-    X(DeserializeFMUState) \
-    X(GetDirectionalDerivative) \
-    X(DoStep)
+    X(GetDirectionalDerivative)
 // clang-format on
 
-struct Fmi3Api {
+struct Fmi3Api : fmuImport::Fmi3Api {
 #define FMU_TEST_DECLARE(name) fmi3##name##TYPE* name = nullptr;
-    FMU_TEST_FMI3_FUNCTIONS(FMU_TEST_DECLARE)
+    FMU_TEST_FMI3_OTHER_FUNCTIONS(FMU_TEST_DECLARE)
 #undef FMU_TEST_DECLARE
 };
 
 //- Path of <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu
 std::string fmu3Path(const std::string& name);
 
-//- A variable of an FMI 3.0 modelDescription.xml
+//- A variable of an FMI 3.0 modelDescription.xml: the importer's
+//  elements of one array (or its one scalar) together
 struct Variable3 {
     std::string name;
     fmi3ValueReference valueReference = 0;
     std::string type; // Float64 or Boolean
-    std::string causality;
+    fmuImport::Causality causality = fmuImport::Causality::local;
     std::vector<std::size_t> dimensions;
     //- Number of elements: the product of the dimensions
     std::size_t size = 1;
@@ -72,19 +59,21 @@ public:
     LoadedFmu3& operator=(const LoadedFmu3&) = delete;
 
     Fmi3Api api;
+    //- Functions of FMU_TEST_FMI3_OTHER_FUNCTIONS the binary does not
+    //  export (one of fmuImport::Fmi3Api missing fails the load)
     std::vector<std::string> missing;
     std::string name;
     std::string token;
+    //- modelDescription.xml and terminalsAndIcons.xml as written in the FMU
     pugi::xml_document description;
     pugi::xml_document terminals;
     //- In the order of modelDescription.xml
     std::vector<Variable3> variables;
-    std::filesystem::path directory;
 
     const Variable3& variable(const std::string& name) const;
 
 private:
-    void* library_ = nullptr;
+    std::shared_ptr<fmuImport::Fmu::Impl> fmu_;
 };
 
 struct LogRecord3 {

@@ -1,12 +1,10 @@
 #include "FmuHarness.hpp"
 
-#include <dlfcn.h>
-#include <zip.h>
-
 #include <cstdarg>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "FmuImpl.hpp"
 
 namespace fmuTest {
 
@@ -26,90 +24,38 @@ void recordLog(fmi2ComponentEnvironment env, fmi2String, fmi2Status status,
 
 } // namespace
 
-void unzip(const std::string& archive, const std::filesystem::path& target)
-{
-    int error = 0;
-    zip_t* zip = zip_open(archive.c_str(), ZIP_RDONLY, &error);
-    if (zip == nullptr) {
-        throw std::runtime_error("cannot open " + archive);
-    }
-    const zip_int64_t n = zip_get_num_entries(zip, 0);
-    for (zip_int64_t i = 0; i < n; ++i) {
-        const std::string name = zip_get_name(zip, zip_uint64_t(i), 0);
-        const std::filesystem::path path = target / name;
-        if (!name.empty() && name.back() == '/') {
-            std::filesystem::create_directories(path);
-            continue;
-        }
-        std::filesystem::create_directories(path.parent_path());
-        zip_file_t* file = zip_fopen_index(zip, zip_uint64_t(i), 0);
-        std::ofstream out(path, std::ios::binary);
-        char buffer[8192];
-        zip_int64_t got = 0;
-        while (file != nullptr
-               && (got = zip_fread(file, buffer, sizeof buffer)) > 0) {
-            out.write(buffer, got);
-        }
-        if (file != nullptr) {
-            zip_fclose(file);
-        }
-    }
-    zip_close(zip);
-}
-
-std::filesystem::path unpack(const std::string& archive)
-{
-    std::string pattern
-        = (std::filesystem::temp_directory_path() / "fmuTest-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) {
-        throw std::runtime_error("mkdtemp failed");
-    }
-    unzip(archive, pattern);
-    return pattern;
-}
-
 std::string fmuPath(const std::string& name)
 {
     return std::string(FOAMFMI_FMU_DIR) + "/" + name + ".fmu";
 }
 
-LoadedFmu::LoadedFmu(const std::string& modelName) : name(modelName)
+LoadedFmu::LoadedFmu(const std::string& modelName)
+    : name(modelName),
+      fmu_(std::make_shared<fmuImport::Fmu::Impl>(fmuPath(modelName)))
 {
-    directory = unpack(fmuPath(name));
+    directory = fmu_->root;
     const std::string xml = (directory / "modelDescription.xml").string();
     if (!description.load_file(xml.c_str())) {
         throw std::runtime_error("cannot parse " + xml);
     }
-    const pugi::xml_node root = description.child("fmiModelDescription");
-    guid = root.attribute("guid").value();
-    for (const pugi::xml_node v :
-         root.child("ModelVariables").children("ScalarVariable")) {
-        vr[v.attribute("name").value()]
-            = v.attribute("valueReference").as_uint();
+    guid = modelDescription().guid;
+    for (const fmuImport::Variable& v : modelDescription().variables) {
+        vr[v.name] = v.valueReference;
     }
-    const std::string so
-        = (directory / "binaries" / "linux64" / (name + ".so")).string();
-    library_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (library_ == nullptr) {
-        throw std::runtime_error("dlopen " + so + ": " + dlerror());
-    }
+    fmu_->loadLibrary();
+    const fmuImport::Library& library = fmu_->library();
+    static_cast<fmuImport::Fmi2Api&>(api) = library.api();
 #define FMU_TEST_RESOLVE(function)                                             \
-    api.function = reinterpret_cast<fmi2##function##TYPE*>(                    \
-        dlsym(library_, "fmi2" #function));                                    \
-    if (api.function == nullptr) {                                             \
-        missing.push_back("fmi2" #function);                                   \
-    }
-    FMU_TEST_FMI2_FUNCTIONS(FMU_TEST_RESOLVE)
+    resolve(library, "fmi2" #function, api.function, missing);
+    FMU_TEST_FMI2_MODEL_EXCHANGE_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
 }
 
-LoadedFmu::~LoadedFmu()
+LoadedFmu::~LoadedFmu() = default;
+
+const fmuImport::ModelDescription& LoadedFmu::modelDescription() const
 {
-    if (library_ != nullptr) {
-        dlclose(library_);
-    }
-    std::error_code ignored;
-    std::filesystem::remove_all(directory, ignored);
+    return fmu_->description;
 }
 
 fmi2ValueReference LoadedFmu::ref(const std::string& variable) const

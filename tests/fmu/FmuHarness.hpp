@@ -1,6 +1,9 @@
-// Test harness for connector FMUs through their C entry points: unzips a
-// .fmu into a temporary directory, dlopens binaries/linux64/<name>.so,
-// resolves every fmi2 function by name and reads modelDescription.xml.
+// Test harness for connector FMUs through their C entry points. The FMU is
+// unpacked, its modelDescription.xml read and its binary loaded by the
+// importer (fmuImport: Fmu::Impl, Library); the harness adds what tests of
+// the C API need: the raw function pointers (to call every fmi2 function,
+// in any order, with any arguments), the model-exchange functions the
+// importer does not resolve, and the XML text as a document.
 #ifndef TESTS_FMU_FMUHARNESS_HPP
 #define TESTS_FMU_FMUHARNESS_HPP
 
@@ -8,41 +11,20 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "Library.hpp"
 #include "fmi2Functions.h"
+#include "fmuImport/fmuImport.hpp"
 
 namespace fmuTest {
 
-// Every function of fmi2Functions.h (44), without the fmi2 prefix
+// The fmi2 functions of model exchange (FMI 2.0, section 3.2), without the
+// fmi2 prefix: fmuImport::Fmi2Api has the common and co-simulation ones
 // clang-format off
-#define FMU_TEST_FMI2_FUNCTIONS(X) \
-    X(GetTypesPlatform) \
-    X(GetVersion) \
-    X(SetDebugLogging) \
-    X(Instantiate) \
-    X(FreeInstance) \
-    X(SetupExperiment) \
-    X(EnterInitializationMode) \
-    X(ExitInitializationMode) \
-    X(Terminate) \
-    X(Reset) \
-    X(GetReal) \
-    X(GetInteger) \
-    X(GetBoolean) \
-    X(GetString) \
-    X(SetReal) \
-    X(SetInteger) \
-    X(SetBoolean) \
-    X(SetString) \
-    X(GetFMUstate) \
-    X(SetFMUstate) \
-    X(FreeFMUstate) \
-    X(SerializedFMUstateSize) \
-    X(SerializeFMUstate) \
-    X(DeSerializeFMUstate) \
-    X(GetDirectionalDerivative) \
+#define FMU_TEST_FMI2_MODEL_EXCHANGE_FUNCTIONS(X) \
     X(EnterEventMode) \
     X(NewDiscreteStates) \
     X(EnterContinuousTimeMode) \
@@ -52,33 +34,34 @@ namespace fmuTest {
     X(GetDerivatives) \
     X(GetEventIndicators) \
     X(GetContinuousStates) \
-    X(GetNominalsOfContinuousStates) \
-    X(SetRealInputDerivatives) \
-    X(GetRealOutputDerivatives) \
-    X(DoStep) \
-    X(CancelStep) \
-    X(GetStatus) \
-    X(GetRealStatus) \
-    X(GetIntegerStatus) \
-    X(GetBooleanStatus) \
-    X(GetStringStatus)
+    X(GetNominalsOfContinuousStates)
 // clang-format on
 
-struct Fmi2Api {
+//- Every function of fmi2Functions.h
+struct Fmi2Api : fmuImport::Fmi2Api {
 #define FMU_TEST_DECLARE(name) fmi2##name##TYPE* name = nullptr;
-    FMU_TEST_FMI2_FUNCTIONS(FMU_TEST_DECLARE)
+    FMU_TEST_FMI2_MODEL_EXCHANGE_FUNCTIONS(FMU_TEST_DECLARE)
 #undef FMU_TEST_DECLARE
 };
 
-//- Extracts every file of a zip archive (an .fmu) into `target`
-void unzip(const std::string& archive, const std::filesystem::path& target);
-
-//- Extracts an .fmu into a new temporary directory, returned
-std::filesystem::path unpack(const std::string& archive);
+//- f set to the function `library` exports as `name`; `name` appended to
+//  `missing` where it exports none
+template <class Function>
+void resolve(const fmuImport::Library& library, const char* name, Function*& f,
+             std::vector<std::string>& missing)
+{
+    f = reinterpret_cast<Function*>(library.symbol(name));
+    if (f == nullptr) {
+        missing.push_back(name);
+    }
+}
 
 //- Path of <FOAMFMI_FMU_DIR>/<name>.fmu
 std::string fmuPath(const std::string& name);
 
+//- <FOAMFMI_FMU_DIR>/<name>.fmu unpacked into a directory of its own and
+//  its binary loaded (the importer's Fmu::Impl, not shared with another
+//  LoadedFmu of the same file: every LoadedFmu loads the binary anew)
 class LoadedFmu {
 public:
     explicit LoadedFmu(const std::string& name);
@@ -87,19 +70,23 @@ public:
     LoadedFmu& operator=(const LoadedFmu&) = delete;
 
     Fmi2Api api;
-    //- fmi2 functions that dlsym did not find
+    //- Model-exchange fmi2 functions the binary does not export (a
+    //  common or co-simulation one missing fails the load)
     std::vector<std::string> missing;
     std::string name;
     std::string guid;
+    //- modelDescription.xml as written in the FMU
     pugi::xml_document description;
     //- ScalarVariable name -> value reference
     std::map<std::string, fmi2ValueReference> vr;
     std::filesystem::path directory;
 
+    //- modelDescription.xml as the importer reads it
+    const fmuImport::ModelDescription& modelDescription() const;
     fmi2ValueReference ref(const std::string& variable) const;
 
 private:
-    void* library_ = nullptr;
+    std::shared_ptr<fmuImport::Fmu::Impl> fmu_;
 };
 
 //- Logger messages of one instance

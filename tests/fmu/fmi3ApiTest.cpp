@@ -40,7 +40,7 @@ protected:
     {
         std::vector<double> all;
         for (const Variable3& v : fmu3->variables) {
-            if (v.causality == "output") {
+            if (v.causality == fmuImport::Causality::output) {
                 const std::vector<double> values = in.get(v.name);
                 all.insert(all.end(), values.begin(), values.end());
             }

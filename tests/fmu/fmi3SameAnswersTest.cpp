@@ -46,7 +46,7 @@ TEST_P(Fmi3SameAnswers, BitwiseIdenticalOutputs)
     std::vector<std::string> names2;
     std::vector<std::string> outputs3;
     for (const Variable3& v : fmu3.variables) {
-        if (v.causality == "output") {
+        if (v.causality == fmuImport::Causality::output) {
             outputs3.push_back(v.name);
             for (const std::string& name : fmi2ElementNames(v, *fmu)) {
                 names2.push_back(name);
