@@ -71,7 +71,8 @@ double submergedHeight(const MooringLineParameters& p, double z, double l)
 
 void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f, const WaterMotion* water)
+                double zb, NodeForces& f, const WaterMotion* water,
+                bool diagnostics)
 {
     const int N = layout.N;
     const std::size_t n = std::size_t(N + 1);
@@ -80,8 +81,13 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
     f.q.resize(std::size_t(N));
     f.stretched.resize(std::size_t(N));
     f.tangent.resize(n);
-    f.a.assign(n, Vector3::Zero());
-    f.F.assign(n, Vector3::Zero());
+    // written for every free node below; the ends' are zero
+    f.a.resize(n);
+    f.F.resize(n);
+    f.a[0].setZero();
+    f.a[N].setZero();
+    f.F[0].setZero();
+    f.F[N].setZero();
     // written for every node below
     f.external.resize(n);
     f.submerged.resize(n);
@@ -95,8 +101,9 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         f.friction.assign(n, 0.0);
         f.sliding.assign(n, Vector3::Zero());
     }
-    f.strainEnergy = f.seabedEnergy = f.dissipatedPower = f.gravityEnergy = 0.0;
-    f.groundedSegments = 0;
+    // accumulated in locals (f's fields would be reloaded after every
+    // store through f's vectors)
+    double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     // the ends count as grounded with seabedContact
     const auto onSeabed = [&](int i) {
         return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
@@ -119,9 +126,11 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             const double strain = stretched * inverseL - 1.0;
             const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
             f.T[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
-            f.strainEnergy += 0.5 * c.EA * std::max(strain, 0.0)
-                * std::max(strain, 0.0) * l;
-            f.dissipatedPower += c.BA * strainRate * strainRate * l;
+            if (diagnostics) {
+                strainEnergy += 0.5 * c.EA * std::max(strain, 0.0)
+                    * std::max(strain, 0.0) * l;
+                dissipatedPower += c.BA * strainRate * strainRate * l;
+            }
         }
     }
     // Every node carries the line around it: a segment (free nodes) or
@@ -156,9 +165,11 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             if (!carried) {
                 E[2] -= (c.dryWeight - c.buoyancy * phi) * c.share;
             }
-            height[c.section] += c.share * r[i][2];
-            if (p.freeSurface) {
-                wetHeight[c.section] += c.share * wetHeightOfNode;
+            if (diagnostics) {
+                height[c.section] += c.share * r[i][2];
+                if (p.freeSurface) {
+                    wetHeight[c.section] += c.share * wetHeightOfNode;
+                }
             }
         }
         if (node.point >= 0) {
@@ -179,13 +190,15 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 node.contact(p.seabedStiffness * depth - damping * v[i][2]),
                 0.0);
             E[2] += push;
-            if (depth > 0.0) {
-                f.seabedEnergy
-                    += node.contact(0.5 * p.seabedStiffness * depth * depth);
+            if (diagnostics) {
+                if (depth > 0.0) {
+                    seabedEnergy += node.contact(0.5 * p.seabedStiffness * depth
+                                                 * depth);
+                }
+                dissipatedPower
+                    += std::min(node.contact(damping * v[i][2] * v[i][2]),
+                                std::abs(push * v[i][2]));
             }
-            f.dissipatedPower
-                += std::min(node.contact(damping * v[i][2] * v[i][2]),
-                            std::abs(push * v[i][2]));
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)
             if (p.seabedFriction > 0.0 && push > 0.0) {
@@ -198,7 +211,9 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                     f.sliding[i] = vh / speed;
                 }
                 E -= c * vh;
-                f.dissipatedPower += c * vh.squaredNorm();
+                if (diagnostics) {
+                    dissipatedPower += c * vh.squaredNorm();
+                }
             }
         }
         Vector3 t = i == 0 ? f.q[0]
@@ -248,15 +263,27 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         const Vector3 drag = f.normalDrag[i] * un + f.tangentialDrag[i] * ut;
         E += drag;
         // power the drag takes from the line's motion relative to the water
-        f.dissipatedPower += drag.dot(u);
+        if (diagnostics) {
+            dissipatedPower += drag.dot(u);
+        }
         f.external[i] = E;
     }
-    for (std::size_t k = 0; k < sections; ++k) {
-        const LineLayout::Section& c = layout.sections[k];
-        f.gravityEnergy += c.dryWeight * height[k]
-            - c.buoyancy * (p.freeSurface ? wetHeight[k] : height[k]);
+    f.strainEnergy = strainEnergy;
+    f.seabedEnergy = seabedEnergy;
+    f.dissipatedPower = diagnostics ? dissipatedPower : 0.0;
+    f.gravityEnergy = 0.0;
+    f.groundedSegments = 0;
+    if (diagnostics) {
+        for (std::size_t k = 0; k < sections; ++k) {
+            const LineLayout::Section& c = layout.sections[k];
+            f.gravityEnergy += c.dryWeight * height[k]
+                - c.buoyancy * (p.freeSurface ? wetHeight[k] : height[k]);
+        }
+        f.gravityEnergy += pointEnergy;
+        for (int j = 0; j < N; ++j) {
+            f.groundedSegments += onSeabed(j) && onSeabed(j + 1);
+        }
     }
-    f.gravityEnergy += pointEnergy;
     f.normalMass[0] = f.tangentialMass[0] = f.normalMass[N]
         = f.tangentialMass[N] = 0.0;
     // the inverses of the last node's masses: the same at every node of a
@@ -280,9 +307,6 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         const Vector3& t = f.tangent[i];
         // (mn (I - t t') + mt t t')^-1 F
         f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
-    }
-    for (int j = 0; j < N; ++j) {
-        f.groundedSegments += onSeabed(j) && onSeabed(j + 1);
     }
 }
 

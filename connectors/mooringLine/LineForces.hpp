@@ -62,10 +62,13 @@ struct NodeForces {
 //  line laid out in `layout` (its sections and joint points), with the
 //  seabed at height zb [m] (also the current profile's lower end), in
 //  still water (water null) or the given water motion, into f (its
-//  storage reused)
+//  storage reused). diagnostics false: the energies, the dissipated
+//  power and the grounded segments are left zero (a time step's Newton
+//  iteration needs the forces, accelerations and drag factors only)
 void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f, const WaterMotion* water = nullptr);
+                double zb, NodeForces& f, const WaterMotion* water = nullptr,
+                bool diagnostics = true);
 //- The same for the parameters' layout with the first section's submerged
 //  weight per length w [N/m]
 NodeForces nodeForces(const MooringLineParameters& p, double w,

@@ -118,14 +118,36 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p,
     return S;
 }
 
+void TrapezoidMatrix::solve(std::vector<Vector3>& x) const
+{
+    const std::size_t n = pivotInverse.size();
+    for (std::size_t i = 1; i < n; ++i) {
+        x[i] -= G[i - 1].transpose() * x[i - 1];
+    }
+    for (std::size_t k = n; k-- > 0;) {
+        Vector3 y = pivotInverse[k] * x[k];
+        if (k + 1 < n) {
+            y -= G[k] * x[k + 1];
+        }
+        x[k] = y;
+    }
+}
+
 void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
-                     double zb, double h, BlockTridiagonal& J)
+                     double zb, double h, TrapezoidMatrix& J)
 {
     const int N = layout.N;
+    const std::size_t n = std::size_t(N - 1);
     const double stiffness = 0.25 * h * h, damping = 0.5 * h;
-    J.diagonal.assign(std::size_t(N - 1), Matrix3::Zero());
-    J.upper.assign(std::size_t(std::max(N - 2, 0)), Matrix3::Zero());
+    // the diagonal blocks D_i
+    J.diagonal.assign(n, TrapezoidMatrix::Symmetric());
+    TrapezoidMatrix::Symmetric* D = J.diagonal.data();
+    J.pivotInverse.resize(n);
+    J.G.resize(n);
+    J.a.assign(n, 0.0);
+    J.b.assign(n, 0.0);
+    J.q.resize(n);
     // Segment j: h^2/4 times staticStiffness's k_j plus h/2 BA/l q q',
     // alpha q q' + beta I
     // section by section, its constants in locals
@@ -134,30 +156,35 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
             const double l = c.l;
             const double s = f.stretched[std::size_t(j)];
+            const Vector3& q = f.q[std::size_t(j)];
+            if (j >= 1 && j + 1 <= N - 1) {
+                J.q[std::size_t(j - 1)] = q;
+            }
             if (!(s > 1e-12 * l)) {
                 continue;
             }
-            const Vector3& q = f.q[std::size_t(j)];
-            const double T = c.EA * std::max(s / l - 1.0, 0.0);
+            const double T = c.EA * std::max(s * c.inverseL - 1.0, 0.0);
             const double geometric = std::max(T, std::abs(c.w) * l) / s;
-            const double axial = s > l ? c.EA / l : geometric;
+            const double axial = s > l ? c.EA * c.inverseL : geometric;
             const double alpha
-                = stiffness * (axial - geometric) + damping * c.BA / l;
-            Matrix3 k = alpha * q * q.transpose();
-            k.diagonal().array() += stiffness * geometric;
+                = stiffness * (axial - geometric) + damping * c.BA * c.inverseL;
+            const double beta = stiffness * geometric;
+            TrapezoidMatrix::Symmetric k;
+            k.addOuter(alpha, q);
+            k.addDiagonal(beta);
             if (j >= 1) {
-                J.diagonal[std::size_t(j - 1)] += k; // node j
+                D[j - 1].add(k); // node j
             }
             if (j + 1 <= N - 1) {
-                J.diagonal[std::size_t(j)] += k; // node j + 1
+                D[j].add(k); // node j + 1
             }
             if (j >= 1 && j + 1 <= N - 1) {
-                J.upper[std::size_t(j - 1)] = -k;
+                J.a[std::size_t(j - 1)] = alpha;
+                J.b[std::size_t(j - 1)] = beta;
             }
         }
     }
     for (int i = 1; i < N; ++i) {
-        const double restDepth = layout.nodes[std::size_t(i)].restDepth;
         const std::size_t k = std::size_t(i);
         const Vector3& t = f.tangent[k];
         // mass mn (I - t t') + mt t t'; drag c |u| u of u = U - v (normal
@@ -167,30 +194,54 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
         const double mn = f.normalMass[k], mt = f.tangentialMass[k];
         const double cn = damping * f.normalDrag[k];
         const double ct = damping * f.tangentialDrag[k];
-        Matrix3& b = J.diagonal[k - 1];
-        b.diagonal().array() += mn + cn;
-        b += (mt - mn - cn + 2.0 * ct) * t * t.transpose();
+        TrapezoidMatrix::Symmetric& b = D[k - 1];
+        b.addDiagonal(mn + cn);
+        b.addOuter(mt - mn - cn + 2.0 * ct, t);
         const double un2 = un.squaredNorm();
         if (un2 > 0.0) {
-            b += (cn / un2) * un * un.transpose();
+            b.addOuter(cn / un2, un);
         }
-        b(2, 2) += stiffness * surfaceStiffness(p, layout, i, r[k][2]);
+        if (p.freeSurface) {
+            b.zz += stiffness * surfaceStiffness(p, layout, i, r[k][2]);
+        }
         if (p.seabedContact && r[k][2] <= zb) {
+            const LineLayout::Node& node = layout.nodes[k];
             const double depth = zb - r[k][2];
-            b(2, 2) += layout.nodes[std::size_t(i)].contact(stiffness
-                                                            * p.seabedStiffness)
-                + layout.nodes[std::size_t(i)].contact(
-                    damping * p.seabedDamping
-                    * std::min(depth / restDepth, 1.0));
+            b.zz += node.contact(stiffness * p.seabedStiffness)
+                + node.contact(damping * p.seabedDamping
+                               * std::min(depth / node.restDepth, 1.0));
             // friction: c v below the regularisation speed, of constant
             // magnitude above it (damping only across the sliding
             // direction e: c (I - e e') in the horizontal plane)
-            const Vector3& e = f.sliding[k];
-            Matrix3 friction = Matrix3::Zero();
-            friction(0, 0) = friction(1, 1) = 1.0;
-            friction -= e * e.transpose();
-            b += damping * f.friction[k] * friction;
+            if (f.friction[k] != 0.0) {
+                const double c = damping * f.friction[k];
+                b.xx += c;
+                b.yy += c;
+                b.addOuter(-c, f.sliding[k]);
+            }
         }
+    }
+    // Block LU: with U = -(a q q' + b I) and w = D'^-1 q,
+    // U D'^-1 U = a^2 (q'w) q q' + a b (q w' + w q') + b^2 D'^-1
+    // and G = D'^-1 U = -(a w q' + b D'^-1)
+    for (std::size_t i = 0; i < n; ++i) {
+        TrapezoidMatrix::Symmetric& d = D[i];
+        if (i > 0) {
+            const Matrix3& previous = J.pivotInverse[i - 1];
+            const double a = J.a[i - 1], b = J.b[i - 1];
+            const Vector3& q = J.q[i - 1];
+            const Vector3 w = previous * q;
+            const double A = a * a * q.dot(w), B = a * b, C = b * b;
+            d.addOuter(-A, q);
+            d.xx -= 2.0 * B * q[0] * w[0] + C * previous(0, 0);
+            d.xy -= B * (q[0] * w[1] + w[0] * q[1]) + C * previous(0, 1);
+            d.xz -= B * (q[0] * w[2] + w[0] * q[2]) + C * previous(0, 2);
+            d.yy -= 2.0 * B * q[1] * w[1] + C * previous(1, 1);
+            d.yz -= B * (q[1] * w[2] + w[1] * q[2]) + C * previous(1, 2);
+            d.zz -= 2.0 * B * q[2] * w[2] + C * previous(2, 2);
+            J.G[i - 1] = -(a * w * q.transpose() + b * previous);
+        }
+        J.pivotInverse[i] = d.inverse();
     }
 }
 

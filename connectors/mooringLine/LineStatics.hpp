@@ -53,12 +53,78 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p,
 //  f = nodeForces there (its segment lengths, node tangents, masses, drag
 //  factors and relative velocities): M the nodes' mass with added mass,
 //  S = staticStiffness, D = -dF/dv of the axial damping (BA/l q q' per
-//  segment), the drag, the seabed damping and friction. Symmetric positive definite; it omits the change of M, of the
-//  drag's direction and of the damping force's direction with the
-//  positions, so Newton converges linearly (fast: these are small).
+//  segment), the drag, the seabed damping and friction. Symmetric positive
+//  definite; it omits the change of M, of the drag's direction and of the
+//  damping force's direction with the positions, so Newton converges
+//  linearly (fast: these are small). Block tridiagonal over the free
+//  nodes: diagonal blocks D_i, and the coupling block of segment j between
+//  free nodes j and j + 1, U_j = -(a_j q_j q_j' + b_j I), kept as a_j, b_j
+//  and q_j (q_j q_j' and I are symmetric, so U_j is).
+struct TrapezoidMatrix {
+    //- A symmetric 3 x 3 matrix by its upper triangle
+    struct Symmetric {
+        double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+
+        //- += c v v'
+        void addOuter(double c, const Vector3& v)
+        {
+            const double cx = c * v[0], cy = c * v[1], cz = c * v[2];
+            xx += cx * v[0];
+            xy += cx * v[1];
+            xz += cx * v[2];
+            yy += cy * v[1];
+            yz += cy * v[2];
+            zz += cz * v[2];
+        }
+        //- += c I
+        void addDiagonal(double c)
+        {
+            xx += c;
+            yy += c;
+            zz += c;
+        }
+        void add(const Symmetric& m)
+        {
+            xx += m.xx;
+            xy += m.xy;
+            xz += m.xz;
+            yy += m.yy;
+            yz += m.yz;
+            zz += m.zz;
+        }
+        //- The inverse (cofactors over the determinant)
+        Matrix3 inverse() const
+        {
+            const double c00 = yy * zz - yz * yz, c01 = xz * yz - xy * zz,
+                         c02 = xy * yz - xz * yy, c11 = xx * zz - xz * xz,
+                         c12 = xy * xz - xx * yz, c22 = xx * yy - xy * xy;
+            const double d = 1.0 / (xx * c00 + xy * c01 + xz * c02);
+            Matrix3 m;
+            m << c00 * d, c01 * d, c02 * d, c01 * d, c11 * d, c12 * d, c02 * d,
+                c12 * d, c22 * d;
+            return m;
+        }
+    };
+    //- The diagonal blocks D_i (free node i at i - 1), overwritten by the
+    //  pivots D'_i
+    std::vector<Symmetric> diagonal;
+    //- Block LU factors: per free node i (at i - 1) the inverse of the
+    //  pivot D'_i = D_i - U_i-1 D'^-1_i-1 U_i-1 and G_i = D'^-1_i U_i
+    //  (none for the last); U_i-1 D'^-1_i-1 = G_i-1' is the multiplier
+    std::vector<Matrix3> pivotInverse, G;
+    //- a_j, b_j [kg], q_j of the coupling blocks (at the upper free node
+    //  j's index j - 1)
+    std::vector<double> a, b;
+    std::vector<Vector3> q;
+
+    //- Solves J x = b in place (b given in x)
+    void solve(std::vector<Vector3>& x) const;
+};
+
+//- Assembles J (TrapezoidMatrix) and factorizes it
 void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
-                     double zb, double h, BlockTridiagonal& J);
+                     double zb, double h, TrapezoidMatrix& J);
 
 //- Damped Newton on the static forces of the free nodes (no velocities),
 //  from r (ends r[0], r[N] held). The forces are minus the gradient of the

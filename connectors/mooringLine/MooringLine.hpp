@@ -300,7 +300,7 @@ private:
     struct Workspace {
         std::vector<Vector3> r0, v0, r, v, a0, b;
         NodeForces f;
-        BlockTridiagonal J;
+        TrapezoidMatrix J;
     } work_;
 };
 

@@ -48,13 +48,13 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         && sameBits(lastEvaluated_.water.flow, water_.flow)) {
         w.a0 = lastEvaluated_.f.a;
     } else {
-        nodeForces(parameters_, layout_, w.r0, w.v0, zb, w.f, &water_);
+        nodeForces(parameters_, layout_, w.r0, w.v0, zb, w.f, &water_, false);
         ++trapezoidStatistics_.rhsEvaluations;
         w.a0 = w.f.a;
     }
     // Predictor: the start acceleration held over the step
-    w.r = w.r0;
-    w.v = w.v0;
+    w.r.resize(n + 1);
+    w.v.resize(n + 1);
     endsAt(s1, w.r[0], w.v[0], w.r[n], w.v[n]);
     for (std::size_t i = 1; i < n; ++i) {
         w.r[i] = w.r0[i] + h * w.v0[i] + 0.5 * h * h * w.a0[i];
@@ -72,23 +72,23 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // step, and the tension harmonic equals that of Newton iterated to
     // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
     // first correction above largestMiss segments rejects the step.
+    const double inverseH = 1.0 / h;
     for (int iteration = 0; iteration < 10; ++iteration) {
-        nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_);
+        nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_, false);
         if (iteration == 0) {
             trapezoidMatrix(parameters_, layout_, w.r, w.f, zb, h, w.J);
-            w.J.factorize();
             ++trapezoidStatistics_.jacobianEvaluations;
         }
         ++trapezoidStatistics_.rhsEvaluations;
         for (std::size_t i = 1; i < n; ++i) {
             const Vector3 residual
-                = (w.v[i] - w.v0[i]) / h - 0.5 * (w.a0[i] + w.f.a[i]);
+                = (w.v[i] - w.v0[i]) * inverseH - 0.5 * (w.a0[i] + w.f.a[i]);
             const Vector3& t = w.f.tangent[i];
             const double along = residual.dot(t);
             const double mn = w.f.normalMass[i], mt = w.f.tangentialMass[i];
             w.b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
         }
-        w.J.solveFactored(w.b);
+        w.J.solve(w.b);
         double largest = 0.0;
         bool finite = true;
         for (std::size_t i = 1; i < n; ++i) {

@@ -248,9 +248,12 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     // step's mean velocity instead of the given ones: -0.0013 % at N = 10
     // (1 ms) and -0.0008 % at N = 20 (0.5 ms), where no step is halved;
     // at N = 20 and 1 ms it goes wrong from t = 0.297 s (its predictor
-    // misses, the steps are halved over and over): +110 %, at least 50 %
-    // asserted (connectors/mooringLine/README.md; the README once claimed
-    // -0.002 % for that case)
+    // misses, the steps are halved over and over, the tension swings
+    // between 0.04 and 1 N). That swinging is chaotic: its harmonic moves
+    // with the round-off of the Newton matrix (+110 % with general 3 x 3
+    // block inverses, +30 % with the symmetric blocks' cofactors); at
+    // least 20 % asserted (connectors/mooringLine/README.md; the README
+    // once claimed -0.002 % for that case)
     r.p.relativeTolerance = r.p.absoluteTolerance = 1e-9;
     r.p.hermiteEnds = false;
     const double straightCvode = tensionHarmonic(r, 0.01, 1.0, 2, 1e-3);
@@ -264,7 +267,7 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     r.p.hermiteEnds = false;
     EXPECT_NEAR(tensionHarmonic(r, 0.01, 1.0, 2, 5e-4) / hermite20, 1.0, 1e-4);
     const double straight20 = tensionHarmonic(r, 0.01, 1.0, 2, 1e-3);
-    EXPECT_GT(100.0 * (straight20 / hermite20 - 1.0), 50.0) << straight20;
+    EXPECT_GT(100.0 * (straight20 / hermite20 - 1.0), 20.0) << straight20;
 }
 
 TEST(MooringLineSnap, PulledTautItStaysFiniteAndBalancesEnergy)
