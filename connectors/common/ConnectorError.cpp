@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 namespace connectors {
 
@@ -25,12 +26,48 @@ std::string formatVector(const Vector3& value)
         + formatValue(value[2]) + ")";
 }
 
+const char* refusalName(Refusal code)
+{
+    switch (code) {
+    case Refusal::notFinite:
+        return "notFinite";
+    case Refusal::negative:
+        return "negative";
+    case Refusal::notPositive:
+        return "notPositive";
+    case Refusal::outOfRange:
+        return "outOfRange";
+    case Refusal::noDirection:
+        return "noDirection";
+    case Refusal::inconsistent:
+        return "inconsistent";
+    }
+    return "outOfRange";
+}
+
+ParameterError::ParameterError(Refusal code, const std::string& law,
+                               const std::string& name, double value,
+                               const std::string& unit,
+                               const std::string& allowed)
+    : ParameterError(code, name,
+                     law + ": parameter " + name + " = " + formatValue(value)
+                         + (unit.empty() || unit == "1" ? "" : " " + unit)
+                         + " is out of range (allowed: " + allowed + ")")
+{
+}
+
 ParameterError::ParameterError(const std::string& law, const std::string& name,
                                double value, const std::string& unit,
                                const std::string& allowed)
-    : ConnectorError(law + ": parameter " + name + " = " + formatValue(value)
-                     + (unit.empty() || unit == "1" ? "" : " " + unit)
-                     + " is out of range (allowed: " + allowed + ")")
+    : ParameterError(std::isfinite(value) ? Refusal::outOfRange
+                                          : Refusal::notFinite,
+                     law, name, value, unit, allowed)
+{
+}
+
+ParameterError::ParameterError(Refusal code, std::string name,
+                               const std::string& message)
+    : ConnectorError(message), code_(code), parameter_(std::move(name))
 {
 }
 
@@ -45,7 +82,9 @@ void requireNonNegative(const char* law, const char* name, double value,
                         const char* unit)
 {
     if (!(std::isfinite(value) && value >= 0.0)) {
-        throw ParameterError(law, name, value, unit, "finite and >= 0");
+        throw ParameterError(std::isfinite(value) ? Refusal::negative
+                                                  : Refusal::notFinite,
+                             law, name, value, unit, "finite and >= 0");
     }
 }
 
@@ -53,7 +92,9 @@ void requirePositive(const char* law, const char* name, double value,
                      const char* unit)
 {
     if (!(std::isfinite(value) && value > 0.0)) {
-        throw ParameterError(law, name, value, unit, "finite and > 0");
+        throw ParameterError(std::isfinite(value) ? Refusal::notPositive
+                                                  : Refusal::notFinite,
+                             law, name, value, unit, "finite and > 0");
     }
 }
 
@@ -62,9 +103,10 @@ void requireFinite(const char* law, const char* name, const Vector3& value,
 {
     for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(value[i])) {
-            throw ParameterError(
-                law, std::string(name) + "[" + std::to_string(i + 1) + "]",
-                value[i], unit, "finite");
+            throw ParameterError(Refusal::notFinite, law,
+                                 std::string(name) + "[" + std::to_string(i + 1)
+                                     + "]",
+                                 value[i], unit, "finite");
         }
     }
 }

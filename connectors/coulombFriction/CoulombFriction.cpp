@@ -22,12 +22,13 @@ CoulombFriction::CoulombFriction(const CoulombFrictionParameters& parameters)
     requireFinite(lawName, "B.axis", parameters.axis_B, "1");
     const double norm = parameters.axis_B.norm();
     if (norm > 0.0 && norm < minimumGuideAxisNorm) {
-        throw ParameterError(std::string(lawName) + ": parameter B.axis = "
-                             + formatVector(parameters.axis_B)
-                             + " has no direction (allowed: (0, 0, 0) for "
-                               "friction in every direction, or a finite "
-                               "vector of length >= 1e-12, normalised by "
-                               "the law)");
+        throw ParameterError(Refusal::noDirection, "B.axis",
+                             std::string(lawName) + ": parameter B.axis = "
+                                 + formatVector(parameters.axis_B)
+                                 + " has no direction (allowed: (0, 0, 0) for "
+                                   "friction in every direction, or a finite "
+                                   "vector of length >= 1e-12, normalised by "
+                                   "the law)");
     }
     if (norm > 0.0) {
         a_B_ = parameters.axis_B / norm;

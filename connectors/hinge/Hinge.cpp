@@ -24,10 +24,12 @@ Vector3 unitAxis(const char* name, const Vector3& axis)
     requireFinite(lawName, name, axis, "1");
     const double norm = axis.norm();
     if (!(norm >= minimumAxisNorm)) {
-        throw ConnectorError(std::string(lawName) + ": parameter " + name
-                             + " = " + formatVector(axis)
-                             + " has no direction (allowed: a finite vector "
-                               "of length >= 1e-12, normalised by the law)");
+        throw ParameterError(
+            Refusal::noDirection, name,
+            std::string(lawName) + ": parameter " + name + " = "
+                + formatVector(axis)
+                + " has no direction (allowed: a finite vector "
+                  "of length >= 1e-12, normalised by the law)");
     }
     return axis / norm;
 }
@@ -43,11 +45,12 @@ Vector3 unitReference(const char* name, const char* axisName,
         = reference - reference.dot(unitAxis) * unitAxis;
     const double norm = perpendicular.norm();
     if (!(norm >= minimumReferenceSine * reference.norm())) {
-        throw ConnectorError(std::string(lawName) + ": parameter " + name
-                             + " = " + formatVector(reference)
-                             + " is parallel to " + axisName
-                             + " (allowed: a direction off the axis, or "
-                               "(0, 0, 0) to derive one)");
+        throw ParameterError(Refusal::inconsistent, name,
+                             std::string(lawName) + ": parameter " + name
+                                 + " = " + formatVector(reference)
+                                 + " is parallel to " + axisName
+                                 + " (allowed: a direction off the axis, or "
+                                   "(0, 0, 0) to derive one)");
     }
     return perpendicular / norm;
 }
@@ -90,8 +93,8 @@ Hinge::Hinge(const HingeParameters& parameters) : parameters_(parameters)
     requireNonNegative(lawName, "ptoDamping", parameters.ptoDamping,
                        "N.m.s/rad");
     if (!std::isfinite(parameters.ptoRestAngle)) {
-        throw ParameterError(lawName, "ptoRestAngle", parameters.ptoRestAngle,
-                             "rad", "finite");
+        throw ParameterError(Refusal::notFinite, lawName, "ptoRestAngle",
+                             parameters.ptoRestAngle, "rad", "finite");
     }
 }
 

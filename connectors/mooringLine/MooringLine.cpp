@@ -19,13 +19,6 @@ namespace {
 const char* const lawName = "mooringLine";
 constexpr double pi = 3.14159265358979323846;
 
-void requirePositive(const char* name, double value, const char* unit)
-{
-    if (!(std::isfinite(value) && value > 0.0)) {
-        throw ParameterError(lawName, name, value, unit, "finite and > 0");
-    }
-}
-
 //- Sections 2, 3, ... and their joints' points (ParameterError naming the
 //  FMU variable, section<k>.<name> or joint<k>.<name>)
 void checkSections(const MooringLineParameters& p)
@@ -35,15 +28,18 @@ void checkSections(const MooringLineParameters& p)
         const LineSection& s = p.sections[k];
         const std::string section = "section" + std::to_string(k + 2) + ".";
         const auto name = [&](const char* n) { return section + n; };
-        requirePositive(name("unstretchedLength").c_str(), s.length, "m");
-        requirePositive(name("EA").c_str(), s.EA, "N");
+        requirePositive(lawName, name("unstretchedLength").c_str(), s.length,
+                        "m");
+        requirePositive(lawName, name("EA").c_str(), s.EA, "N");
         requireNonNegative(lawName, name("axialDamping").c_str(),
                            s.axialDamping, "N.s");
-        requirePositive(name("massPerLength").c_str(), s.massPerLength, "kg/m");
+        requirePositive(lawName, name("massPerLength").c_str(), s.massPerLength,
+                        "kg/m");
         requireNonNegative(lawName, name("diameter").c_str(), s.diameter, "m");
         if (p.seabedContact && !(s.diameter > 0.0)) {
             throw ParameterError(
-                lawName, name("diameter"), s.diameter, "m",
+                Refusal::inconsistent, lawName, name("diameter"), s.diameter,
+                "m",
                 "> 0 with seabedContact = 1: the seabed carries the line "
                 "over its contact area, diameter times length");
         }
@@ -57,12 +53,13 @@ void checkSections(const MooringLineParameters& p)
                            s.tangentialAddedMass, "1");
         total += s.segments;
         if (s.segments < 1 || total > 1000) {
-            throw ConnectorError(
+            throw ParameterError(
+                Refusal::outOfRange, name("segments"),
                 "mooringLine: parameter " + name("segments") + " = "
-                + std::to_string(s.segments)
-                + " is out of range (allowed: an integer from 1 to "
-                + std::to_string(std::max(1000 - (total - s.segments), 0))
-                + ": the sections' segments add up to at most 1000)");
+                    + std::to_string(s.segments)
+                    + " is out of range (allowed: an integer from 1 to "
+                    + std::to_string(std::max(1000 - (total - s.segments), 0))
+                    + ": the sections' segments add up to at most 1000)");
         }
         const std::string joint = "joint" + std::to_string(k + 1) + ".";
         requireNonNegative(lawName, (joint + "mass").c_str(), s.joint.mass,
@@ -146,10 +143,10 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
 {
     requireFinite(lawName, "A.p", p.p_AoP_A, "m");
     requireFinite(lawName, "B.p", p.p_BoQ_B, "m");
-    requirePositive("unstretchedLength", p.length, "m");
-    requirePositive("EA", p.EA, "N");
+    requirePositive(lawName, "unstretchedLength", p.length, "m");
+    requirePositive(lawName, "EA", p.EA, "N");
     requireNonNegative(lawName, "axialDamping", p.axialDamping, "N.s");
-    requirePositive("massPerLength", p.massPerLength, "kg/m");
+    requirePositive(lawName, "massPerLength", p.massPerLength, "kg/m");
     requireNonNegative(lawName, "diameter", p.diameter, "m");
     requireNonNegative(lawName, "waterDensity", p.waterDensity, "kg/m3");
     requireNonNegative(lawName, "gravity", p.gravity, "m/s2");
@@ -165,36 +162,35 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
         // length): without either the line would sink through the seabed
         if (!(p.diameter > 0.0)) {
             throw ParameterError(
-                lawName, "diameter", p.diameter, "m",
+                Refusal::inconsistent, lawName, "diameter", p.diameter, "m",
                 "> 0 with seabedContact = 1: the seabed carries the line "
                 "over its contact area, diameter times length");
         }
         if (!(p.seabedStiffness > 0.0)) {
             throw ParameterError(
-                lawName, "seabedStiffness", p.seabedStiffness, "Pa/m",
+                Refusal::inconsistent, lawName, "seabedStiffness",
+                p.seabedStiffness, "Pa/m",
                 "> 0 with seabedContact = 1: the seabed carries the line "
                 "by its penalty stiffness");
         }
     }
     if (p.segments < 2 || p.segments > 1000) {
-        throw ConnectorError(
+        throw ParameterError(
+            Refusal::outOfRange, "segments",
             "mooringLine: parameter segments = " + std::to_string(p.segments)
-            + " is out of range (allowed: an integer from 2 to 1000)");
+                + " is out of range (allowed: an integer from 2 to 1000)");
     }
-    requirePositive("relativeTolerance", p.relativeTolerance, "1");
-    requirePositive("absoluteTolerance", p.absoluteTolerance, "1");
-    if (!(std::isfinite(p.maxStep) && p.maxStep >= 0.0)) {
-        throw ParameterError(lawName, "maxStep", p.maxStep, "s",
-                             "finite and >= 0");
-    }
+    requirePositive(lawName, "relativeTolerance", p.relativeTolerance, "1");
+    requirePositive(lawName, "absoluteTolerance", p.absoluteTolerance, "1");
+    requireNonNegative(lawName, "maxStep", p.maxStep, "s");
     if (!std::isfinite(p.waterLevel)) {
-        throw ParameterError(lawName, "waterLevel", p.waterLevel, "m",
-                             "finite");
+        throw ParameterError(Refusal::notFinite, lawName, "waterLevel",
+                             p.waterLevel, "m", "finite");
     }
     requireFinite(lawName, "current.surface", p.currentSurface, "m/s");
     requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
     requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
-    requirePositive("frictionVelocity", p.frictionVelocity, "m/s");
+    requirePositive(lawName, "frictionVelocity", p.frictionVelocity, "m/s");
     checkSections(p);
     weight_ = p.weight();
     layout_ = lineLayout(p, weight_);

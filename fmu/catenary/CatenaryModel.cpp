@@ -42,9 +42,9 @@ class CatenaryModel final : public fmuExport::LineFmuModel {
 public:
     CatenaryModel();
 
-    void checkParameters(const double* values) const override
+    void setParameters(const double* values) override
     {
-        connectors::Catenary law(parameters(values));
+        law_.build(parameters(values));
     }
 
 protected:
@@ -56,6 +56,7 @@ private:
     connectors::CatenaryParameters parameters(const double* values) const;
 
     Block length_, EA_, weight_, seabedContact_, seabedFriction_;
+    fmuExport::BuiltLaw<connectors::Catenary> law_;
 };
 
 CatenaryModel::CatenaryModel()
@@ -95,20 +96,13 @@ CatenaryModel::CatenaryModel()
 connectors::CatenaryParameters
 CatenaryModel::parameters(const double* values) const
 {
-    const double contact = scalar(values, seabedContact_);
-    if (contact != 0.0 && contact != 1.0) {
-        throw connectors::ConnectorError(
-            "catenary: parameter seabedContact = "
-            + connectors::formatValue(contact)
-            + " is out of range (allowed: 0 or 1)");
-    }
     connectors::CatenaryParameters p;
     p.p_AoP_A = vector3(values, A_p);
     p.p_BoQ_B = vector3(values, B_p);
     p.line.length = scalar(values, length_);
     p.line.EA = scalar(values, EA_);
     p.line.weight = scalar(values, weight_);
-    p.line.seabedContact = contact == 1.0;
+    p.line.seabedContact = flag(values, seabedContact_);
     p.line.seabedFriction = scalar(values, seabedFriction_);
     return p;
 }
@@ -118,11 +112,10 @@ CatenaryModel::evaluate(const double* values,
                         const connectors::BodyKinematics& A,
                         const connectors::BodyKinematics& B) const
 {
-    const connectors::Catenary law(parameters(values));
     const connectors::CatenaryGuess previous {scalar(values, H),
                                               scalar(values, V)};
     const connectors::CatenaryOutput c
-        = law.evaluate(A, B, &previous, shapePoints);
+        = law_.get().evaluate(A, B, &previous, shapePoints);
     fmuExport::LineOutputs o;
     o.loads = c.loads;
     o.fairleadTension = c.fairleadTension;

@@ -73,19 +73,18 @@ public:
         declareStartAtRest();
     }
 
-    void checkParameters(const double* values) const override
+    void setParameters(const double* values) override
     {
-        connectors::CoulombFriction law(parameters(values));
+        law_.build(parameters(values));
     }
 
 protected:
     fmuExport::ConnectorOutputs
-    evaluate(const double* values, const connectors::BodyKinematics& A,
+    evaluate(const double*, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {
         const connectors::CoulombFrictionResult r
-            = connectors::CoulombFriction(parameters(values))
-                  .evaluateSliding(A, B);
+            = law_.get().evaluateSliding(A, B);
         return {r.loads, {r.slidingVelocity, r.friction}};
     }
 
@@ -112,6 +111,7 @@ private:
     }
 
     Block B_axis_, frictionForce_, regularisationVelocity_;
+    fmuExport::BuiltLaw<connectors::CoulombFriction> law_;
 };
 
 } // namespace

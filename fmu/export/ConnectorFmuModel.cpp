@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "ModelDescription.hpp"
+#include "common/ConnectorError.hpp"
 
 namespace fmuExport {
 
@@ -104,6 +105,20 @@ std::vector<Block> ConnectorFmuModel::join(std::vector<Block> a,
 {
     a.insert(a.end(), b.begin(), b.end());
     return a;
+}
+
+bool ConnectorFmuModel::flag(const double* values, Block block) const
+{
+    const double value = scalar(values, block);
+    if (value != 0.0 && value != 1.0) {
+        const std::string& name = variables().variables()[block.first].name;
+        throw connectors::ParameterError(
+            connectors::Refusal::outOfRange, name,
+            identity().modelIdentifier + ": parameter " + name + " = "
+                + connectors::formatValue(value)
+                + " is out of range (allowed: 0 or 1)");
+    }
+    return value == 1.0;
 }
 
 double ConnectorFmuModel::scalar(const double* values, Block block)

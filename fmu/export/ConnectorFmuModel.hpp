@@ -5,7 +5,9 @@
 //   - its parameters, declared with table().parameter() in its constructor,
 //     before or after declareBodies() (the order is that of the value
 //     references, so that of modelDescription.xml);
-//   - evaluate(): its parameters to the law, the law's result to the outputs;
+//   - setParameters(): its parameters to its law, kept in a BuiltLaw (the
+//     FMI layer calls it once per parameter set);
+//   - evaluate(): the law's result to the outputs;
 //   - optionally outputs of its own after the 17 interface outputs
 //     (extraOutput(), filled in by evaluate() in declaration order);
 //   - optionally an internal state through Model's state hooks
@@ -14,6 +16,8 @@
 #ifndef FMU_EXPORT_CONNECTORFMUMODEL_HPP
 #define FMU_EXPORT_CONNECTORFMUMODEL_HPP
 
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +60,30 @@ struct ConnectorOutputs {
     std::vector<double> extra;
 };
 
+//- A connector model's law, built by its setParameters for one parameter
+//  set (and so checked once) and used by every evaluation until the next
+template <class Law> class BuiltLaw {
+public:
+    //- Builds the law from `parameters`; if that throws, no law is kept
+    template <class Parameters> void build(const Parameters& parameters)
+    {
+        law_.reset();
+        law_.emplace(parameters);
+    }
+
+    Law& get() { return law_ ? *law_ : missing(); }
+    const Law& get() const { return law_ ? *law_ : missing(); }
+
+private:
+    [[noreturn]] static Law& missing()
+    {
+        throw std::logic_error("a connector law is used before "
+                               "setParameters built it");
+    }
+
+    std::optional<Law> law_;
+};
+
 class ConnectorFmuModel : public Model {
 public:
     //- Evaluates the law for the parameters and inputs in `values` and
@@ -92,8 +120,8 @@ protected:
                       const std::string& unit, const std::string& description,
                       const std::vector<Block>& dependsOn);
 
-    //- The connector law for the parameters and previous outputs in
-    //  `values`: the outputs for the kinematics of A and B
+    //- The connector law built by setParameters, with the previous outputs
+    //  in `values`: the outputs for the kinematics of A and B
     virtual ConnectorOutputs
     evaluate(const double* values, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const = 0;
@@ -106,6 +134,10 @@ protected:
     std::vector<Block> positionBlocks() const;
     //- Blocks that velocities depend on: A.v, A.omega, B.v, B.omega
     std::vector<Block> velocityBlocks() const;
+
+    //- A parameter that is 0 or 1; throws connectors::ParameterError
+    //  (outOfRange) naming it otherwise
+    bool flag(const double* values, Block block) const;
 
     static double scalar(const double* values, Block block);
     static connectors::Vector3 vector3(const double* values, Block block);

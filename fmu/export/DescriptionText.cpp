@@ -146,6 +146,10 @@ std::string unitsAndLogCategoriesXml(const VariableTable& table,
       << "    <Category name=\"" << logCategoryCalls
       << "\" description=\"Every " << prefix
       << " call (when debug logging is on)\"/>\n"
+      << "    <Category name=\"" << logCategoryRefusal
+      << "\" description=\"A refused parameter, before its error: its name, "
+         "a space, the refusal's code, a colon and the error's text (when "
+         "debug logging is on)\"/>\n"
       << "  </LogCategories>\n";
     return x.str();
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "ModelDescription.hpp"
+#include "common/ConnectorError.hpp"
 
 namespace fmuExport {
 
@@ -13,7 +14,7 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                          const char* fmiPrefix)
     : model_(std::move(model)), instanceName_(std::move(instanceName)),
       guid_(modelGuid(*model_)), callbacks_(callbacks), logCalls_(loggingOn),
-      fmiPrefix_(fmiPrefix)
+      logRefusals_(loggingOn), fmiPrefix_(fmiPrefix)
 {
     for (const ScalarVariable& v : model_->variables().variables()) {
         realAccess_.push_back(
@@ -56,23 +57,31 @@ void FmuInstance::startValues()
     }
     time_ = 0.0;
     outputsValid_ = false;
+    parametersApplied_ = false;
 }
 
 void FmuInstance::setDebugLogging(bool loggingOn, std::size_t nCategories,
                                   const fmi2String categories[])
 {
     bool calls = nCategories == 0;
+    bool refusals = nCategories == 0;
     for (std::size_t i = 0; i < nCategories; ++i) {
         const std::string category = categories[i] ? categories[i] : "";
         if (category == logCategoryCalls) {
             calls = true;
+        } else if (category == logCategoryRefusal) {
+            refusals = true;
         } else if (category != logCategoryError) {
             throw UsageError("unknown log category \"" + category
-                             + "\" (known: logStatusError, logCalls)");
+                             + "\" (known: logStatusError, logCalls, "
+                               "refusedParameter)");
         }
     }
     if (calls) {
         logCalls_ = loggingOn;
+    }
+    if (refusals) {
+        logRefusals_ = loggingOn;
     }
 }
 
@@ -89,9 +98,38 @@ void FmuInstance::enterInitializationMode()
     state_ = initializationMode;
 }
 
+void FmuInstance::applyParameters(const double* values)
+{
+    if (parametersApplied_) {
+        return;
+    }
+    try {
+        model_->setParameters(values);
+    } catch (const connectors::ParameterError& e) {
+        if (logRefusals_) {
+            log(fmi2Error, logCategoryRefusal,
+                e.parameter() + " " + connectors::refusalName(e.code()) + ": "
+                    + e.what());
+        }
+        throw;
+    }
+    parametersApplied_ = true;
+}
+
+bool FmuInstance::sameParameters(const std::vector<double>& values) const
+{
+    for (std::size_t vr = 0; vr < realAccess_.size(); ++vr) {
+        if (realAccess_[vr] == RealAccess::parameter
+            && values[vr] != values_[vr]) {
+            return false;
+        }
+    }
+    return true;
+}
+
 void FmuInstance::exitInitializationMode()
 {
-    model_->checkParameters(values_.data());
+    applyParameters(values_.data());
     model_->initializeState(values_.data(), time_);
     state_ = stepComplete;
 }
@@ -133,6 +171,7 @@ const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
 
 void FmuInstance::computeOutputs()
 {
+    applyParameters(values_.data());
     model_->computeOutputs(values_.data());
     outputsValid_ = true;
 }
@@ -172,6 +211,8 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
     }
     for (std::size_t i = 0; i < n; ++i) {
         values_[vr[i]] = value[i];
+        parametersApplied_
+            = parametersApplied_ && realAccess_[vr[i]] != RealAccess::parameter;
     }
     outputsValid_ = outputsValid_ && n == 0;
 }
@@ -222,6 +263,7 @@ void FmuInstance::doStep(double currentCommunicationPoint,
                          + " does not match the FMU time "
                          + formatDouble(time_));
     }
+    applyParameters(values_.data());
     model_->doStep(values_.data(), t, h);
     outputsValid_ = true;
     time_ = t + h;
@@ -258,9 +300,17 @@ fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
 void FmuInstance::setState(fmi2FMUstate state)
 {
     const SavedState& saved = ownedState(state);
+    const bool sameParameters = this->sameParameters(saved.values);
+    parametersApplied_ = parametersApplied_ && sameParameters;
     try {
+        if (!saved.internal.empty()) {
+            applyParameters(saved.values.data());
+        }
         model_->setInternalState(saved.values.data(), saved.internal);
     } catch (const std::invalid_argument& e) {
+        // values_ stays: what was built for the saved parameters is not
+        // for them
+        parametersApplied_ = parametersApplied_ && sameParameters;
         throw UsageError(e.what());
     }
     values_ = saved.values;

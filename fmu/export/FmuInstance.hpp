@@ -91,6 +91,12 @@ private:
         }
         return realAccess_[vr];
     }
+    //- Model::setParameters for the parameters in `values`, unless done for
+    //  the current ones already; a refusal is logged in category
+    //  refusedParameter (when enabled) before it is thrown on
+    void applyParameters(const double* values);
+    //- Whether the parameters in `values` are those in values_
+    bool sameParameters(const std::vector<double>& values) const;
     void computeOutputs();
     const std::string& variableName(fmi2ValueReference vr) const;
 
@@ -99,10 +105,13 @@ private:
     std::string guid_;
     fmi2CallbackFunctions callbacks_;
     bool logCalls_;
+    bool logRefusals_;
     const char* fmiPrefix_;
     ModelState state_ = instantiated;
     double time_ = 0.0;
     bool outputsValid_ = false;
+    //- Whether the model's setParameters ran for the parameters in values_
+    bool parametersApplied_ = false;
     std::vector<double> values_;
     //- Per value reference: the RealAccess of its variable
     std::vector<RealAccess> realAccess_;

@@ -34,16 +34,22 @@ public:
 
     const VariableTable& variables() const { return variables_; }
 
-    //- Throws an exception naming the parameter and the allowed range for
-    //  a parameter value the model cannot use
-    virtual void checkParameters(const double* values) const = 0;
+    //- Builds what the parameters in `values` determine (the law), and so
+    //  checks them, for the computations that follow; throws
+    //  connectors::ParameterError (its code and the parameter's name) for a
+    //  value the model cannot use. The FMI layer (FmuInstance) calls it once
+    //  per parameter set: before the first computation, at the latest in
+    //  fmi2ExitInitializationMode, and again only after a parameter changed
+    //  (set before initialization, or restored with an FMU state).
+    virtual void setParameters(const double* values) = 0;
 
-    //- Computes every output from the parameters and inputs in `values`;
-    //  throws (naming the variable) where the outputs are undefined. On
-    //  failure the outputs in `values` are left unchanged.
+    //- Computes every output from the inputs in `values` with the
+    //  parameters of the last setParameters; throws (naming the variable)
+    //  where the outputs are undefined. On failure the outputs in `values`
+    //  are left unchanged.
     virtual void computeOutputs(double* values) const = 0;
 
-    //- fmi2ExitInitializationMode, after checkParameters: sets up the
+    //- fmi2ExitInitializationMode, after setParameters: sets up the
     //  internal state for the parameters and inputs in `values` at `time`
     virtual void initializeState(const double* values, double time)
     {
@@ -66,7 +72,8 @@ public:
     virtual std::vector<double> internalState() const { return {}; }
 
     //- Restores a state returned by internalState() for the parameters in
-    //  `values` (empty: back to before initializeState); throws
+    //  `values` (empty: back to before initializeState; not empty: after
+    //  setParameters for them); throws
     //  std::invalid_argument for data that do not fit
     virtual void setInternalState(const double* values,
                                   const std::vector<double>& state)

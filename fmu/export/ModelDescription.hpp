@@ -13,6 +13,8 @@ namespace fmuExport {
 //- Log categories the FMUs declare and accept in fmi2SetDebugLogging
 inline constexpr const char* logCategoryError = "logStatusError";
 inline constexpr const char* logCategoryCalls = "logCalls";
+//- A refused parameter, "<name> <code>: <message>" (debug logging)
+inline constexpr const char* logCategoryRefusal = "refusedParameter";
 
 //- "{xxxxxxxx-xxxx-xxxx-xxxx-xxxxxxxxxxxx}": a 128-bit hash of the identity
 //  and the full variable table, the same on every build and platform

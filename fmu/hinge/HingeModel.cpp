@@ -63,9 +63,9 @@ class HingeModel final : public fmuExport::ConnectorFmuModel {
 public:
     HingeModel();
 
-    void checkParameters(const double* values) const override
+    void setParameters(const double* values) override
     {
-        connectors::Hinge law(parameters(values));
+        law_.build(parameters(values));
     }
 
 protected:
@@ -82,6 +82,7 @@ private:
     Block ptoStiffness_, ptoDamping_, ptoRestAngle_;
     //- The `angle` output (the unwrapping state)
     Block angle_;
+    fmuExport::BuiltLaw<connectors::Hinge> law_;
 };
 
 HingeModel::HingeModel()
@@ -204,9 +205,8 @@ fmuExport::ConnectorOutputs
 HingeModel::evaluate(const double* values, const connectors::BodyKinematics& A,
                      const connectors::BodyKinematics& B) const
 {
-    const connectors::Hinge law(parameters(values));
     const connectors::HingeResult h
-        = law.evaluate(A, B, scalar(values, angle_));
+        = law_.get().evaluate(A, B, scalar(values, angle_));
     return {
         h.loads,
         {h.angle, h.angleRate, h.gap, h.misalignment, h.ptoTorque, h.ptoPower}};

@@ -46,17 +46,17 @@ public:
         declareStartAtRest();
     }
 
-    void checkParameters(const double* values) const override
+    void setParameters(const double* values) override
     {
-        connectors::LinearDamper law(parameters(values));
+        law_.build(parameters(values));
     }
 
 protected:
     fmuExport::ConnectorOutputs
-    evaluate(const double* values, const connectors::BodyKinematics& A,
+    evaluate(const double*, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {
-        return connectors::LinearDamper(parameters(values)).evaluate(A, B);
+        return law_.get().evaluate(A, B);
     }
 
 private:
@@ -70,6 +70,7 @@ private:
     }
 
     Block damping_;
+    fmuExport::BuiltLaw<connectors::LinearDamper> law_;
 };
 
 } // namespace

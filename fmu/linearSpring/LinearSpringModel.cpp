@@ -55,17 +55,17 @@ public:
         declareStartAtRest();
     }
 
-    void checkParameters(const double* values) const override
+    void setParameters(const double* values) override
     {
-        connectors::LinearSpring law(parameters(values));
+        law_.build(parameters(values));
     }
 
 protected:
     fmuExport::ConnectorOutputs
-    evaluate(const double* values, const connectors::BodyKinematics& A,
+    evaluate(const double*, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {
-        return connectors::LinearSpring(parameters(values)).evaluate(A, B);
+        return law_.get().evaluate(A, B);
     }
 
 private:
@@ -81,6 +81,7 @@ private:
     }
 
     Block stiffness_, restLength_, damping_;
+    fmuExport::BuiltLaw<connectors::LinearSpring> law_;
 };
 
 } // namespace

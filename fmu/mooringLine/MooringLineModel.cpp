@@ -173,9 +173,10 @@ class MooringLineModel final : public fmuExport::LineFmuModel {
 public:
     MooringLineModel();
 
-    //- Checks the parameters by building the law, kept for the
-    //  initialization and the evaluations that follow
-    void checkParameters(const double* values) const override { line(values); }
+    void setParameters(const double* values) override
+    {
+        law_.build(parameters(values));
+    }
 
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
@@ -190,11 +191,6 @@ protected:
 
 private:
     connectors::MooringLineParameters parameters(const double* values) const;
-    //- A 0-or-1 parameter; throws naming it otherwise
-    bool flag(const double* values, Block block) const;
-    //- The law for the parameters in `values`, built (and so checked) when
-    //  they differ from those of the last call
-    connectors::MooringLine& line(const double* values) const;
     fmuExport::ConnectorOutputs
     lineOutputs(const connectors::MooringLineOutput& out) const;
 
@@ -206,9 +202,7 @@ private:
     mooringLineFmu::SectionVariables sections_;
     //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..]
     fmi2ValueReference flow_ = 0;
-    //- The law and the parameter values it was built for (line())
-    mutable std::unique_ptr<connectors::MooringLine> line_;
-    mutable std::vector<double> lineParameters_;
+    fmuExport::BuiltLaw<connectors::MooringLine> law_;
     std::optional<connectors::MooringLineState> state_;
 };
 
@@ -273,29 +267,17 @@ MooringLineModel::MooringLineModel()
     }
 }
 
-bool MooringLineModel::flag(const double* values, Block block) const
-{
-    const double value = scalar(values, block);
-    if (value != 0.0 && value != 1.0) {
-        throw connectors::ConnectorError(
-            "mooringLine: parameter "
-            + variables().variables()[block.first].name + " = "
-            + connectors::formatValue(value)
-            + " is out of range (allowed: 0 or 1)");
-    }
-    return value == 1.0;
-}
-
 connectors::MooringLineParameters
 MooringLineModel::parameters(const double* values) const
 {
     const double segments = scalar(values, p_.segments);
     if (!(segments >= 2.0 && segments <= 1000.0
           && segments == std::floor(segments))) {
-        throw connectors::ConnectorError(
+        throw connectors::ParameterError(
+            connectors::Refusal::outOfRange, "segments",
             "mooringLine: parameter segments = "
-            + connectors::formatValue(segments)
-            + " is out of range (allowed: an integer from 2 to 1000)");
+                + connectors::formatValue(segments)
+                + " is out of range (allowed: an integer from 2 to 1000)");
     }
     const auto value = [&](Block b) { return scalar(values, b); };
     connectors::MooringLineParameters p;
@@ -353,24 +335,6 @@ MooringLineModel::flow(const double* values) const
     return points;
 }
 
-connectors::MooringLine& MooringLineModel::line(const double* values) const
-{
-    std::vector<double> current;
-    for (const Scalar& s : scalars) {
-        current.push_back(scalar(values, p_.*s.block));
-    }
-    for (const Block b :
-         {A_p, B_p, currentSurface_, currentSeabed_, sections_.parameters()}) {
-        current.insert(current.end(), values + b.first,
-                       values + b.first + b.size);
-    }
-    if (!line_ || current != lineParameters_) {
-        line_ = std::make_unique<connectors::MooringLine>(parameters(values));
-        lineParameters_ = std::move(current);
-    }
-    return *line_;
-}
-
 fmuExport::ConnectorOutputs
 MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
 {
@@ -395,7 +359,7 @@ MooringLineModel::evaluate(const double* values,
                            const connectors::BodyKinematics& A,
                            const connectors::BodyKinematics& B) const
 {
-    const connectors::MooringLine& law = line(values);
+    const connectors::MooringLine& law = law_.get();
     if (state_) {
         return lineOutputs(
             law.evaluate(*state_, A, B, shapePoints, flow(values)));
@@ -407,9 +371,9 @@ MooringLineModel::evaluate(const double* values,
 
 void MooringLineModel::initializeState(const double* values, double time)
 {
-    connectors::MooringLine& law = line(values);
-    state_ = law.initialState(fmuExport::bodyKinematics(values, A),
-                              fmuExport::bodyKinematics(values, B), time);
+    state_
+        = law_.get().initialState(fmuExport::bodyKinematics(values, A),
+                                  fmuExport::bodyKinematics(values, B), time);
 }
 
 void MooringLineModel::doStep(double* values, double, double h)
@@ -418,7 +382,7 @@ void MooringLineModel::doStep(double* values, double, double h)
         throw std::logic_error("mooringLine: fmi2DoStep before the line was "
                                "initialised");
     }
-    connectors::MooringLine& law = line(values);
+    connectors::MooringLine& law = law_.get();
     const connectors::BodyKinematics bodyA
         = fmuExport::bodyKinematics(values, A);
     const connectors::BodyKinematics bodyB
@@ -437,15 +401,15 @@ std::vector<double> MooringLineModel::internalState() const
     return state_ ? state_->serialize() : std::vector<double> {};
 }
 
-void MooringLineModel::setInternalState(const double* values,
+void MooringLineModel::setInternalState(const double*,
                                         const std::vector<double>& state)
 {
     if (state.empty()) {
         state_.reset();
         return;
     }
-    connectors::MooringLine& law = line(values);
-    state_ = connectors::MooringLineState::deserialize(state, law.parameters());
+    state_ = connectors::MooringLineState::deserialize(state,
+                                                       law_.get().parameters());
 }
 
 } // namespace

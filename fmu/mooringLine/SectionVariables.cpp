@@ -114,23 +114,26 @@ void SectionVariables::read(const double* values,
 {
     const auto name
         = [&](fmi2ValueReference vr) { return t.variables()[vr].name; };
-    const auto refuse = [&](fmi2ValueReference vr, const std::string& unit,
-                            const std::string& allowed) {
-        throw connectors::ParameterError("mooringLine", name(vr), values[vr],
-                                         unit, allowed);
-    };
+    const auto refuse
+        = [&](connectors::Refusal code, fmi2ValueReference vr,
+              const std::string& unit, const std::string& allowed) {
+              throw connectors::ParameterError(code, "mooringLine", name(vr),
+                                               values[vr], unit, allowed);
+          };
     p.sections.clear();
     bool ended = false; // a section was missing
     for (std::size_t k = 0; k < section_.size(); ++k) {
         const fmi2ValueReference s = section_[k].first;
         const double length = values[s];
         if (!(std::isfinite(length) && length >= 0.0)) {
-            refuse(s, "m",
+            refuse(std::isfinite(length) ? connectors::Refusal::negative
+                                         : connectors::Refusal::notFinite,
+                   s, "m",
                    "finite and >= 0; 0: no section " + number(int(k) + 2));
         }
         const bool present = length > 0.0;
         if (present && ended) {
-            refuse(s, "m",
+            refuse(connectors::Refusal::inconsistent, s, "m",
                    "0 while an earlier section's unstretchedLength is 0: the "
                    "sections follow each other from B.p, without gaps");
         }
@@ -138,7 +141,8 @@ void SectionVariables::read(const double* values,
         const Block j = joint_[k];
         for (std::size_t f = 0; f < jointCount && !present; ++f) {
             if (values[j.first + f] != 0.0) {
-                refuse(fmi2ValueReference(j.first + f), jointFields[f].unit,
+                refuse(connectors::Refusal::inconsistent,
+                       fmi2ValueReference(j.first + f), jointFields[f].unit,
                        "0 without section " + number(int(k) + 2)
                            + ": a joint lies between two sections");
             }
@@ -157,7 +161,8 @@ void SectionVariables::read(const double* values,
                 section.*sectionFields[f].member = value;
             } else if (!(value >= 1.0 && value <= 1000.0
                          && value == std::floor(value))) {
-                refuse(fmi2ValueReference(s + f), "1",
+                refuse(connectors::Refusal::outOfRange,
+                       fmi2ValueReference(s + f), "1",
                        "an integer from 1 to 1000");
             } else {
                 section.segments = int(value);

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <random>
 
+#include "common/ConnectorError.hpp"
 #include "common/Kinematics.hpp"
 
 namespace lawTest {
@@ -89,6 +90,23 @@ void expectThrowWithMessage(Call&& call, const std::string& message)
         ADD_FAILURE() << "no exception, expected: " << message;
     } catch (const Exception& e) {
         EXPECT_EQ(std::string(e.what()), message);
+    }
+}
+
+//- call() throws ParameterError with `message`, `code` and `parameter`
+template <class Call>
+void expectRefusal(Call&& call, const std::string& message,
+                   connectors::Refusal code, const std::string& parameter)
+{
+    try {
+        call();
+        ADD_FAILURE() << "no exception, expected: " << message;
+    } catch (const connectors::ParameterError& e) {
+        EXPECT_EQ(std::string(e.what()), message);
+        EXPECT_EQ(connectors::refusalName(e.code()),
+                  std::string(connectors::refusalName(code)))
+            << message;
+        EXPECT_EQ(e.parameter(), parameter) << message;
     }
 }
 

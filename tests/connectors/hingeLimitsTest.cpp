@@ -15,6 +15,7 @@ using namespace lawTest;
 using connectors::ConnectorError;
 using connectors::InputError;
 using connectors::ParameterError;
+using connectors::Refusal;
 
 TEST(HingeLimits, AngleIsContinuousThroughSeveralTurns)
 {
@@ -138,39 +139,45 @@ TEST(HingeLimits, BadParametersAreNamed)
         change(p);
         return p;
     };
-    expectThrowWithMessage<ParameterError>(
+    expectRefusal(
         [&] { Hinge(with([](HingeParameters& p) { p.stiffness = -1.0; })); },
         "hinge: parameter stiffness = -1 N/m is out of range (allowed: finite "
-        "and >= 0)");
-    expectThrowWithMessage<ParameterError>(
+        "and >= 0)",
+        Refusal::negative, "stiffness");
+    expectRefusal(
         [&] {
             Hinge(with([](HingeParameters& p) { p.rotationalDamping = -0.5; }));
         },
         "hinge: parameter rotationalDamping = -0.5 N.m.s/rad is out of range "
-        "(allowed: finite and >= 0)");
-    expectThrowWithMessage<ParameterError>(
+        "(allowed: finite and >= 0)",
+        Refusal::negative, "rotationalDamping");
+    expectRefusal(
         [&] { Hinge(with([&](HingeParameters& p) { p.ptoDamping = nan; })); },
         "hinge: parameter ptoDamping = nan N.m.s/rad is out of range "
-        "(allowed: finite and >= 0)");
-    expectThrowWithMessage<ParameterError>(
+        "(allowed: finite and >= 0)",
+        Refusal::notFinite, "ptoDamping");
+    expectRefusal(
         [&] {
             Hinge(with([](HingeParameters& p) {
                 p.ptoRestAngle = std::numeric_limits<double>::infinity();
             }));
         },
         "hinge: parameter ptoRestAngle = inf rad is out of range (allowed: "
-        "finite)");
-    expectThrowWithMessage<ParameterError>(
+        "finite)",
+        Refusal::notFinite, "ptoRestAngle");
+    expectRefusal(
         [&] { Hinge(with([&](HingeParameters& p) { p.axis_B[1] = nan; })); },
-        "hinge: parameter B.axis[2] = nan is out of range (allowed: finite)");
-    expectThrowWithMessage<ConnectorError>(
+        "hinge: parameter B.axis[2] = nan is out of range (allowed: finite)",
+        Refusal::notFinite, "B.axis[2]");
+    expectRefusal(
         [&] {
             Hinge(with([](HingeParameters& p) { p.axis_A = Vector3::Zero(); }));
         },
         "hinge: parameter A.axis = (0, 0, 0) has no direction (allowed: a "
         "finite "
-        "vector of length >= 1e-12, normalised by the law)");
-    expectThrowWithMessage<ConnectorError>(
+        "vector of length >= 1e-12, normalised by the law)",
+        Refusal::noDirection, "A.axis");
+    expectRefusal(
         [&] {
             Hinge(with([](HingeParameters& p) {
                 p.axis_B = Vector3(1, 0, 0);
@@ -178,7 +185,8 @@ TEST(HingeLimits, BadParametersAreNamed)
             }));
         },
         "hinge: parameter B.ref = (-2, 0, 0) is parallel to B.axis (allowed: a "
-        "direction off the axis, or (0, 0, 0) to derive one)");
+        "direction off the axis, or (0, 0, 0) to derive one)",
+        Refusal::inconsistent, "B.ref");
 }
 
 TEST(HingeLimits, NonFiniteInputIsNamed)

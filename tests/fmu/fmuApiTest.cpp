@@ -249,12 +249,80 @@ TEST_P(FmuApi, DebugLoggingCategories)
     EXPECT_EQ(f.SetDebugLogging(in.c, fmi2True, 1, unknown), fmi2Error);
     EXPECT_EQ(in.lastMessage(),
               "fmi2SetDebugLogging: unknown log category "
-              "\"logEverything\" (known: logStatusError, logCalls)");
+              "\"logEverything\" (known: logStatusError, logCalls, "
+              "refusedParameter)");
     const fmi2String calls[] = {"logCalls"};
     EXPECT_EQ(f.SetDebugLogging(in.c, fmi2True, 1, calls), fmi2OK);
     EXPECT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
     EXPECT_EQ(in.log.back().category, "logCalls");
     EXPECT_EQ(in.lastMessage(), "fmi2SetupExperiment");
+}
+
+TEST_P(FmuApi, RefusedParameterIsLoggedWithItsNameAndCode)
+{
+    // Every connector declares A.p: A.p[2] = NaN is refused at
+    // fmi2ExitInitializationMode. With the category refusedParameter on, the
+    // refusal comes first in it as "<name> <code>: <message>", then the
+    // error in logStatusError, whose text is the same as without it.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Fmi2Api& f = fmu->api;
+    const std::string message = fmu->name
+        + ": parameter A.p[2] = nan m is out of range (allowed: finite)";
+
+    Instance quiet(*fmu);
+    EXPECT_EQ(quiet.initialize({{"A.p[2]", nan}}), fmi2Error);
+    ASSERT_EQ(quiet.log.size(), 1u);
+    EXPECT_EQ(quiet.log[0].category, "logStatusError");
+    EXPECT_EQ(quiet.log[0].message, "fmi2ExitInitializationMode: " + message);
+
+    for (const bool all : {true, false}) {
+        Instance in(*fmu);
+        const fmi2String categories[] = {"refusedParameter"};
+        ASSERT_EQ(f.SetDebugLogging(in.c, fmi2True, all ? 0 : 1, categories),
+                  fmi2OK);
+        EXPECT_EQ(in.initialize({{"A.p[2]", nan}}), fmi2Error);
+        std::vector<LogRecord> log; // without logCalls (on with all)
+        for (const LogRecord& r : in.log) {
+            if (r.category != "logCalls") {
+                log.push_back(r);
+            }
+        }
+        ASSERT_EQ(log.size(), 2u);
+        EXPECT_EQ(log[0].status, fmi2Error);
+        EXPECT_EQ(log[0].category, "refusedParameter");
+        EXPECT_EQ(log[0].message, "A.p[2] notFinite: " + message);
+        EXPECT_EQ(log[1].category, "logStatusError");
+        EXPECT_EQ(log[1].message, quiet.log[0].message);
+    }
+
+    // Debug logging off again: the error alone
+    Instance off(*fmu);
+    ASSERT_EQ(f.SetDebugLogging(off.c, fmi2True, 0, nullptr), fmi2OK);
+    ASSERT_EQ(f.SetDebugLogging(off.c, fmi2False, 0, nullptr), fmi2OK);
+    EXPECT_EQ(off.initialize({{"A.p[2]", nan}}), fmi2Error);
+    for (const LogRecord& r : off.log) {
+        EXPECT_NE(r.category, "refusedParameter") << r.message;
+    }
+    EXPECT_EQ(off.lastMessage(), quiet.log[0].message);
+}
+
+TEST_P(FmuApi, ParametersSetAgainBeforeInitializationAreChecked)
+{
+    // Outputs read before initialization build the law for the parameters
+    // then; a parameter set after that is checked for itself
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Instance in(*fmu);
+    const Fmi2Api& f = fmu->api;
+    ASSERT_EQ(f.SetupExperiment(in.c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
+    ASSERT_EQ(f.EnterInitializationMode(in.c), fmi2OK);
+    std::vector<double> out;
+    ASSERT_EQ(in.get(connectorOutputs(), out), fmi2OK);
+    ASSERT_EQ(in.set({{"A.p[1]", nan}}), fmi2OK);
+    EXPECT_EQ(in.get(connectorOutputs(), out), fmi2Error);
+    EXPECT_EQ(in.lastMessage(),
+              "fmi2GetReal: " + fmu->name
+                  + ": parameter A.p[1] = nan m is out of range (allowed: "
+                    "finite)");
 }
 
 TEST_P(FmuApi, RestConfigurationHasNoLoad)
