@@ -4,13 +4,17 @@ read, with a FatalIOError at the dictionary entry that sets it.
 The FMU checks its parameters when it leaves initialisation mode, which the
 connector's instance does at the first evaluation, with the bodies'
 kinematics. The restraint lets a second instance leave it when the
-dictionary is read; a refusal that names a parameter ("parameter <name>")
-is the dictionary's error:
+dictionary is read; a refusal that the FMU names in its log category
+refusedParameter ("<name> <code>: <message>") is the dictionary's error:
 
 - negative-stiffness: linearSpring's stiffness -10, a scalar entry;
 - zero-axis: hinge's A.axis (0 0 0), a vector entry (the FMU names A.axis);
+- parallel-reference: hinge's B.ref along B.axis, refused with the value of
+  another entry (code inconsistent; the message names B.axis too);
+- seabed-without-diameter: mooringLine's diameter 0 with seabedContact 1
+  (inconsistent), the entry that sets diameter;
 
-both stop before the model is built ("Model with ... bodies" is never
+all stop before the model is built ("Model with ... bodies" is never
 printed), with FOAM FATAL IO ERROR, the entry's path in the dictionary
 (...parameters.stiffness) and the FMU's reason.
 
@@ -67,6 +71,20 @@ CASES = {
         0.0,
         ["FOAM FATAL IO ERROR", "restraint mooring: the FMU refuses parameter 'A.axis'",
          "parameter A.axis", "restraints.mooring.parameters.A.axis"],
+    ),
+    "parallel-reference": (
+        "hinge",
+        f"B.axis {vec((1, 0, 0))}; B.ref {vec((-2, 0, 0))};",
+        0.0,
+        ["FOAM FATAL IO ERROR", "restraint mooring: the FMU refuses parameter 'B.ref'",
+         "parameter B.ref = (-2, 0, 0) is parallel to B.axis", "restraints.mooring.parameters.B.ref"],
+    ),
+    "seabed-without-diameter": (
+        "mooringLine",
+        LINE.replace("diameter 0.0044;", "diameter 0;"),
+        0.5,
+        ["FOAM FATAL IO ERROR", "restraint mooring: the FMU refuses parameter 'diameter'",
+         "parameter diameter = 0 m is out of range", "restraints.mooring.parameters.diameter"],
     ),
     "start-below-seabed": ("mooringLine", LINE, 0.5, None),
 }

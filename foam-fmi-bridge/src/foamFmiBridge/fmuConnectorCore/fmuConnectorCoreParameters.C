@@ -15,7 +15,6 @@ Description
 #include "Map.H"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -35,29 +34,16 @@ std::string tokensText(const Foam::ITstream& is)
 }
 
 
-//- Whether message names the parameter name as "parameter <name>", name
-//  followed by no character a variable name goes on with
-bool namesParameter(const std::string& message, const std::string& name)
+//- The log category in which an FMU names a parameter it refuses, with the
+//  form "<name> <code>: <message>" (docs/connector-fmu-interface.md)
+const char* const refusedParameterCategory = "refusedParameter";
+
+
+//- The name a refusedParameter message begins with: the parameter's
+//  variable name, or the name of a vector refused as a whole
+std::string refusedName(const std::string& message)
 {
-    const std::string phrase("parameter " + name);
-    for
-    (
-        std::string::size_type pos = message.find(phrase);
-        pos != std::string::npos;
-        pos = message.find(phrase, pos + 1)
-    )
-    {
-        const std::string::size_type end = pos + phrase.size();
-        if
-        (
-            end == message.size()
-         || !(std::isalnum(message[end]) || message[end] == '_' || message[end] == '.')
-        )
-        {
-            return true;
-        }
-    }
-    return false;
+    return message.substr(0, message.find(' '));
 }
 
 } // End anonymous namespace
@@ -314,16 +300,30 @@ void Foam::fmuConnectorCore::checkParameters
     const scalar startTime
 ) const
 {
-    // A probe instance, quiet, gone before the connector's own is made (an
-    // FMU may allow one instance per process)
+    // A probe instance, gone before the connector's own is made (an FMU
+    // may allow one instance per process); with debug logging on, of which
+    // it keeps only the name of a refused parameter
     std::string refusal;
+    std::string refused;
     {
         fmuImport::Instance probe
         (
             *fmu_,
             restraintName_,
-            [](const std::string&, int, const std::string&, const std::string&)
-            {}
+            [&refused]
+            (
+                const std::string&,
+                int,
+                const std::string& category,
+                const std::string& message
+            )
+            {
+                if (category == refusedParameterCategory)
+                {
+                    refused = refusedName(message);
+                }
+            },
+            true
         );
         probe.setupExperiment(startTime);
         probe.enterInitializationMode();
@@ -342,23 +342,20 @@ void Foam::fmuConnectorCore::checkParameters
             refusal = err.what();
         }
     }
-    if (refusal.empty())
+    if (refusal.empty() || refused.empty())
     {
         return;
     }
 
-    // The parameter the refusal names (an element, A.p[1], or its vector,
-    // A.p), and the entry that sets it
+    // The refused parameter (an element, A.p[1], or its vector, A.p), and
+    // the entry that sets it
     for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
     {
         const std::string base(var.name.substr(0, var.name.find('[')));
         if
         (
             var.causality != fmuImport::Causality::parameter
-         || !(
-                namesParameter(refusal, var.name)
-             || namesParameter(refusal, base)
-            )
+         || !(refused == var.name || refused == base)
         )
         {
             continue;
