@@ -4,6 +4,9 @@
 // The FMU state is the value array of the export layer. The H and V outputs
 // keep the solution of the previous evaluation there; each evaluation warm
 // starts Newton from them, so a restored state repeats a step exactly.
+#include <cmath>
+#include <string>
+
 #include "LineFmuModel.hpp"
 #include "catenary/Catenary.hpp"
 #include "common/ConnectorError.hpp"
@@ -36,7 +39,23 @@ a damped Newton method warm started from the previous step (outputs
 seabed, vertical (taut or folded) lines and slack weightless lines are
 solved in closed form. fmi2Error (with the regime and residual in the
 message) for a fairlead below the seabed and a Newton failure.
-No SUNDIALS dependency. Details: connectors/catenary/README.md.</p>)";
+No SUNDIALS dependency. Details: connectors/catenary/README.md.</p>
+<p>Sections: the line may be made of up to 4 sections from B.p towards
+A.p, as in mooringLine.fmu: section 1 is the line above, section k = 2..4
+has <code>section&lt;k&gt;.unstretchedLength</code> (0: none),
+<code>.EA</code> and <code>.weight</code> (submerged weight per length, as
+<code>weight</code>), and the point at its lower joint
+<code>joint&lt;k-1&gt;.weight</code>, its net submerged weight in N (a
+clump weight: &gt; 0, a buoy: its buoyancy less its weight, &lt; 0). Each
+suspended piece is the closed form above with the vertical tension falling
+by the sections' and points' weights; the grounded part may reach over
+several sections and rest a clump weight on the seabed. fmi2Error, naming
+the section or joint, for a buoyant section or a buoy below the touchdown
+point or a sag through the seabed (the line would touch it twice), and for
+a folded line of sections.</p>)";
+
+//- Sections of the line, the first (unstretchedLength, EA, weight) included
+constexpr int maxSections = 4;
 
 class CatenaryModel final : public fmuExport::LineFmuModel {
 public:
@@ -55,7 +74,18 @@ protected:
 private:
     connectors::CatenaryParameters parameters(const double* values) const;
 
+    //- The sections after the first into p.line.sections; throws
+    //  connectors::ParameterError naming the parameter for a negative
+    //  length, a section after a missing one, a joint without a section
+    //  above it (the law checks the rest)
+    void readSections(const double* values,
+                      connectors::CatenaryParameters& p) const;
+
     Block length_, EA_, weight_, seabedContact_, seabedFriction_;
+    //- Per section k = 2..maxSections: joint<k-1>.weight, then
+    //  section<k>.unstretchedLength, .EA, .weight; all of them
+    std::vector<Block> sections_;
+    Block allSections_;
     fmuExport::BuiltLaw<connectors::Catenary> law_;
 };
 
@@ -81,11 +111,35 @@ CatenaryModel::CatenaryModel()
                                  {0.0});
     seabedFriction_ = t.parameter("seabedFriction", Shape::scalar, "1",
                                   "seabed friction coefficient, >= 0", {0.0});
+    allSections_.first = fmi2ValueReference(t.size());
+    for (int k = 2; k <= maxSections; ++k) {
+        const std::string n = std::to_string(k), below = std::to_string(k - 1);
+        const std::string of = "section " + n + " (from B.p): ";
+        const Block joint = t.parameter(
+            "joint" + below + ".weight", Shape::scalar, "N",
+            "joint " + below + " (of sections " + below + " and " + n
+                + " from B.p): net submerged weight of its point (clump "
+                  "weight > 0, buoy < 0)",
+            {0.0});
+        t.parameter("section" + n + ".unstretchedLength", Shape::scalar, "m",
+                    of + "unstretched length, >= 0 (0: no such section)",
+                    {0.0});
+        t.parameter("section" + n + ".EA", Shape::scalar, "N",
+                    of + "axial stiffness, > 0", {1e5});
+        t.parameter("section" + n + ".weight", Shape::scalar, "N/m",
+                    of
+                        + "submerged weight per unstretched length (negative: "
+                          "buoyant)",
+                    {1.0});
+        sections_.push_back({joint.first, 4});
+    }
+    allSections_.size = t.size() - allSections_.first;
     declareBodies({1, 0, 0});
     const std::vector<Block> positions = positionBlocks();
     OutputDependencies d;
-    d.loads = join(positions,
-                   {length_, EA_, weight_, seabedContact_, seabedFriction_});
+    d.loads = join(
+        positions,
+        {length_, EA_, weight_, seabedContact_, seabedFriction_, allSections_});
     d.length = positions;
     d.lengthRate = join(positions, velocityBlocks());
     d.tension = d.loads;
@@ -104,7 +158,47 @@ CatenaryModel::parameters(const double* values) const
     p.line.weight = scalar(values, weight_);
     p.line.seabedContact = flag(values, seabedContact_);
     p.line.seabedFriction = scalar(values, seabedFriction_);
+    readSections(values, p);
     return p;
+}
+
+void CatenaryModel::readSections(const double* values,
+                                 connectors::CatenaryParameters& p) const
+{
+    const auto refuse = [&](fmi2ValueReference vr, const char* unit,
+                            const std::string& allowed) {
+        throw connectors::ParameterError("catenary",
+                                         variables().variables()[vr].name,
+                                         values[vr], unit, allowed);
+    };
+    bool ended = false; // a section was missing
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+        const fmi2ValueReference joint = sections_[k].first, length = joint + 1;
+        const std::string number = std::to_string(k + 2);
+        if (!(std::isfinite(values[length]) && values[length] >= 0.0)) {
+            refuse(length, "m", "finite and >= 0; 0: no section " + number);
+        }
+        const bool present = values[length] > 0.0;
+        if (present && ended) {
+            refuse(length, "m",
+                   "0 while an earlier section's unstretchedLength is 0: the "
+                   "sections follow each other from B.p, without gaps");
+        }
+        if (!present && values[joint] != 0.0) {
+            refuse(joint, "N",
+                   "0 without section " + number
+                       + ": a joint lies between two sections");
+        }
+        ended = ended || !present;
+        if (present) {
+            connectors::CatenarySection s;
+            s.jointWeight = values[joint];
+            s.length = values[length];
+            s.EA = values[length + 1];
+            s.weight = values[length + 2];
+            p.line.sections.push_back(s);
+        }
+    }
 }
 
 fmuExport::ConnectorOutputs
