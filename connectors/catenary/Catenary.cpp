@@ -14,13 +14,6 @@ namespace {
 
 const char* const lawName = "catenary";
 
-void requirePositive(const char* name, double value, const char* unit)
-{
-    if (!(std::isfinite(value) && value > 0.0)) {
-        throw ParameterError(lawName, name, value, unit, "finite and > 0");
-    }
-}
-
 } // namespace
 
 Catenary::Catenary(const CatenaryParameters& parameters)
@@ -28,8 +21,8 @@ Catenary::Catenary(const CatenaryParameters& parameters)
 {
     requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
     requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
-    requirePositive("unstretchedLength", parameters.line.length, "m");
-    requirePositive("EA", parameters.line.EA, "N");
+    requirePositive(lawName, "unstretchedLength", parameters.line.length, "m");
+    requirePositive(lawName, "EA", parameters.line.EA, "N");
     if (!std::isfinite(parameters.line.weight)) {
         throw ParameterError(lawName, "weight", parameters.line.weight, "N/m",
                              "finite");
@@ -41,9 +34,9 @@ Catenary::Catenary(const CatenaryParameters& parameters)
     for (std::size_t k = 0; k < parameters.line.sections.size(); ++k) {
         const CatenarySection& s = parameters.line.sections[k];
         const std::string section = "section" + std::to_string(k + 2) + ".";
-        requirePositive((section + "unstretchedLength").c_str(), s.length,
-                        "m");
-        requirePositive((section + "EA").c_str(), s.EA, "N");
+        requirePositive(lawName, (section + "unstretchedLength").c_str(),
+                        s.length, "m");
+        requirePositive(lawName, (section + "EA").c_str(), s.EA, "N");
         if (!std::isfinite(s.weight)) {
             throw ParameterError(lawName, section + "weight", s.weight, "N/m",
                                  "finite");

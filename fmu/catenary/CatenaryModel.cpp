@@ -165,9 +165,9 @@ CatenaryModel::parameters(const double* values) const
 void CatenaryModel::readSections(const double* values,
                                  connectors::CatenaryParameters& p) const
 {
-    const auto refuse = [&](fmi2ValueReference vr, const char* unit,
-                            const std::string& allowed) {
-        throw connectors::ParameterError("catenary",
+    const auto refuse = [&](connectors::Refusal code, fmi2ValueReference vr,
+                            const char* unit, const std::string& allowed) {
+        throw connectors::ParameterError(code, "catenary",
                                          variables().variables()[vr].name,
                                          values[vr], unit, allowed);
     };
@@ -176,16 +176,19 @@ void CatenaryModel::readSections(const double* values,
         const fmi2ValueReference joint = sections_[k].first, length = joint + 1;
         const std::string number = std::to_string(k + 2);
         if (!(std::isfinite(values[length]) && values[length] >= 0.0)) {
-            refuse(length, "m", "finite and >= 0; 0: no section " + number);
+            refuse(std::isfinite(values[length])
+                       ? connectors::Refusal::negative
+                       : connectors::Refusal::notFinite,
+                   length, "m", "finite and >= 0; 0: no section " + number);
         }
         const bool present = values[length] > 0.0;
         if (present && ended) {
-            refuse(length, "m",
+            refuse(connectors::Refusal::inconsistent, length, "m",
                    "0 while an earlier section's unstretchedLength is 0: the "
                    "sections follow each other from B.p, without gaps");
         }
         if (!present && values[joint] != 0.0) {
-            refuse(joint, "N",
+            refuse(connectors::Refusal::inconsistent, joint, "N",
                    "0 without section " + number
                        + ": a joint lies between two sections");
         }
