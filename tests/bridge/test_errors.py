@@ -83,6 +83,12 @@ def main():
         ),
         "unknown body": (model(spring, GOOD, body="barge"), ["restraint mooring", "barge", "hull"]),
         "unknown bodyB": (model(spring, GOOD, "bodyB barge;"), ["mooring", "barge", "hull"]),
+        # A shared line (mooringLine.fmu between two bodies) whose two ends
+        # name the same body
+        "bodyB the same body": (
+            model(fmu_path("mooringLine"), "A.p (0 0 0); B.p (0 0 -1);", "bodyB hull;"),
+            ["restraint mooring", "body and bodyB are the same body hull"],
+        ),
         "negative stiffness": (model(spring, GOOD.replace("stiffness 10", "stiffness -10")), ["mooring", "stiffness"]),
     }
 
