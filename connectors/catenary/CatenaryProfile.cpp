@@ -400,8 +400,8 @@ double catenaryEnergy(const CatenaryLine& line, const CatenarySolution& sol,
 }
 
 CatenarySectionTensions catenarySectionTensions(const CatenaryLine& line,
-                                                 const CatenarySolution& sol,
-                                                 double x)
+                                                const CatenarySolution& sol,
+                                                double x)
 {
     if (!line.sections.empty()) {
         return catenarySections::sectionTensions(line, sol, x);

@@ -171,8 +171,9 @@ double catenaryEnergy(const CatenaryLine& line,
 struct CatenarySectionTensions {
     std::vector<double> lower, upper;
 };
-CatenarySectionTensions catenarySectionTensions(
-    const CatenaryLine& line, const CatenarySolution& solution, double x);
+CatenarySectionTensions
+catenarySectionTensions(const CatenaryLine& line,
+                        const CatenarySolution& solution, double x);
 
 } // namespace connectors
 

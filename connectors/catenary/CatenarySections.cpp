@@ -242,8 +242,7 @@ Eigen::Vector2d pointOf(const Piece& p, double H, double t)
                 0.0};
     case Piece::Kind::vertical:
         return {p.x0,
-                p.z0 + p.direction * t
-                    + (p.Va * t + 0.5 * p.w * t * t) / p.EA};
+                p.z0 + p.direction * t + (p.Va * t + 0.5 * p.w * t * t) / p.EA};
     }
     return {p.x0, p.z0};
 }
@@ -395,9 +394,8 @@ std::vector<Piece> pieces(const CatenaryLine& l, const CatenarySolution& s,
     if (t.grounded) {
         out = groundedPieces(l, p, t, 0.0, 0.0, 0.0, true);
     }
-    const double direction = s.regime == CatenaryRegime::vertical && s.V < 0.0
-        ? -1.0
-        : 1.0;
+    const double direction
+        = s.regime == CatenaryRegime::vertical && s.V < 0.0 ? -1.0 : 1.0;
     for (std::size_t k = t.grounded ? t.section : 0; k < count(l); ++k) {
         const Properties q = properties(l, k);
         const bool partial = t.grounded && k == t.section;
@@ -468,8 +466,7 @@ void fillEnds(const CatenaryLine& line, CatenarySolution& s)
     s.VA = 0.0;
 }
 
-bool closedForm(const CatenaryLine& l, double x, double z,
-                CatenarySolution& s)
+bool closedForm(const CatenaryLine& l, double x, double z, CatenarySolution& s)
 {
     const std::size_t n = count(l);
     const double L = totalLength(l), tiny = 1e-12 * L;
@@ -596,7 +593,6 @@ CatenaryLine equivalentUniform(const CatenaryLine& line)
     return u;
 }
 
-
 Eigen::Vector2d point(const CatenaryLine& line, const CatenarySolution& s,
                       double x, double z, double arc)
 {
@@ -609,8 +605,7 @@ Eigen::Vector2d point(const CatenaryLine& line, const CatenarySolution& s,
     return pointOf(p, s.H, arc);
 }
 
-double tension(const CatenaryLine& line, const CatenarySolution& s,
-               double arc)
+double tension(const CatenaryLine& line, const CatenarySolution& s, double arc)
 {
     if (s.regime == CatenaryRegime::slackWeightless) {
         return 0.0;

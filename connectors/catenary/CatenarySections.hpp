@@ -89,8 +89,7 @@ CatenaryLine equivalentUniform(const CatenaryLine& line);
 
 Eigen::Vector2d point(const CatenaryLine& line, const CatenarySolution& s,
                       double x, double z, double arc);
-double tension(const CatenaryLine& line, const CatenarySolution& s,
-               double arc);
+double tension(const CatenaryLine& line, const CatenarySolution& s, double arc);
 double energy(const CatenaryLine& line, const CatenarySolution& s, double x);
 CatenarySectionTensions sectionTensions(const CatenaryLine& line,
                                         const CatenarySolution& s, double x);

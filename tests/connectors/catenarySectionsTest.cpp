@@ -238,7 +238,8 @@ void expectReference(const CatenaryLine& l, double x, double z,
     lower.w.resize(1);
     lower.J.clear();
     const double jointArc = r.L[0];
-    const Eigen::Vector2d joint = connectors::catenaryPoint(l, s, x, z, jointArc);
+    const Eigen::Vector2d joint
+        = connectors::catenaryPoint(l, s, x, z, jointArc);
     Eigen::Vector2d jointRef;
     if (sStart < jointArc) {
         jointRef = lower.top(Href, sStart, Vstart, l.seabedFriction);
@@ -259,8 +260,8 @@ void expectReference(const CatenaryLine& l, double x, double z,
     EXPECT_NEAR(t.lower[1], std::hypot(Href, VbottomRope), tolerance * scale);
     EXPECT_NEAR(t.upper[1], std::hypot(Href, Vref), tolerance * scale);
     std::cout << "x = " << x << ", z = " << z << ": " << regimeName(s.regime)
-              << ", H = " << s.H << " N (reference " << Href << "), V = "
-              << s.V << " N (" << Vref << "), off by "
+              << ", H = " << s.H << " N (reference " << Href << "), V = " << s.V
+              << " N (" << Vref << "), off by "
               << std::max(std::abs(s.H - Href), std::abs(s.V - Vref)) / scale
               << " of the tension, grounded " << s.groundedLength
               << " m, joint at (" << joint[0] << ", " << joint[1]
@@ -306,8 +307,7 @@ TEST(CatenarySections, ChainRopeAndClumpWeightWithTouchdownMatchTheReference)
         r.solve(x, z, friction, Reference::Unknown::touchdownArc, 0, H, arc);
         EXPECT_NEAR(s.groundedLength, arc, 1e-6 * x);
         const double Vref = r.verticalAt(r.arcOf(2), arc, 0.0);
-        expectReference(l, x, z, s, H, Vref, r, arc, 0.0,
-                        referenceTolerance);
+        expectReference(l, x, z, s, H, Vref, r, arc, 0.0, referenceTolerance);
         // the anchor: the friction takes CB w per m of the grounded chain
         EXPECT_NEAR(s.HA, std::max(H - friction * 700.0 * arc, 0.0),
                     referenceTolerance * s.H);
@@ -334,7 +334,8 @@ TEST(CatenarySections, TheClumpWeightOnTheSeabedMatchesTheReference)
     EXPECT_NEAR(s.V, Vref, referenceTolerance * s.H);
     // the seabed's reaction at the clump: 2e4 - held; the friction on it
     // and on the chain
-    EXPECT_NEAR(s.HA, std::max(H - 0.3 * (2e4 - held) - 0.3 * 700.0 * 60.0, 0.0),
+    EXPECT_NEAR(s.HA,
+                std::max(H - 0.3 * (2e4 - held) - 0.3 * 700.0 * 60.0, 0.0),
                 referenceTolerance * s.H);
     const Eigen::Vector2d joint = connectors::catenaryPoint(l, s, x, z, 60.0);
     EXPECT_EQ(joint[1], 0.0);
@@ -403,9 +404,9 @@ TEST(CatenarySections, EqualSectionsAreTheUniformLine)
             third.EA = uniform.EA;
             third.weight = uniform.weight;
             cut.sections = {third, third};
-            const double spans[][2] = {{85.0, 40.0}, {95.0, 20.0},
-                                       {30.0, 20.0}, {0.0, 100.5},
-                                       {99.0, 1.0},  {60.0, 75.0}};
+            const double spans[][2]
+                = {{85.0, 40.0}, {95.0, 20.0}, {30.0, 20.0},
+                   {0.0, 100.5}, {99.0, 1.0},  {60.0, 75.0}};
             for (const auto& span : spans) {
                 const double x = span[0], z = span[1];
                 const CatenarySolution a = solveCatenary(uniform, x, z);
@@ -484,9 +485,8 @@ TEST(CatenarySections, HangingSlackFromTheFairlead)
     EXPECT_EQ(v.regime, CatenaryRegime::vertical);
     const double ropeStretch
         = ((v.V - 50.0 * 60.0) * 60.0 + 0.5 * 50.0 * 3600.0) / 5e7;
-    const double chainStretch
-        = ((v.V - 50.0 * 60.0 - 2e4 - 700.0 * 60.0) * 60.0
-           + 0.5 * 700.0 * 3600.0)
+    const double chainStretch = ((v.V - 50.0 * 60.0 - 2e4 - 700.0 * 60.0) * 60.0
+                                 + 0.5 * 700.0 * 3600.0)
         / 5e8;
     EXPECT_NEAR(120.0 + ropeStretch + chainStretch, 121.0, 1e-9);
 }
@@ -537,8 +537,8 @@ TEST(CatenarySections, ForceIsMinusTheEnergyGradient)
         // off the seabed the bodies carry the whole weight
         if (out.solution.groundedLength == 0.0) {
             const Vector3 sum = out.loads.A.f_W + out.loads.B.f_W;
-            const double W = 700.0 * 60.0 + 50.0 * 60.0
-                + line.sections[0].jointWeight;
+            const double W
+                = 700.0 * 60.0 + 50.0 * 60.0 + line.sections[0].jointWeight;
             expectVectorNear(sum, -W * Vector3::UnitZ(),
                              1e-9 * out.fairleadTension);
         }
@@ -587,9 +587,8 @@ TEST(CatenarySections, TwoTouchdownsAreRefused)
     CatenaryLine buoyant = chainRope(0.0, true);
     buoyant.weight = -10.0;
     buoyant.sections[0].jointWeight = 4e4; // pins the joint to the seabed
-    expectRefusal(
-        [&] { solveCatenary(buoyant, 110.0, 20.0); },
-        {"section 1 (weight -10 N/m, allowed > 0 on the seabed)"});
+    expectRefusal([&] { solveCatenary(buoyant, 110.0, 20.0); },
+                  {"section 1 (weight -10 N/m, allowed > 0 on the seabed)"});
     // a buoy holding up a long heavy rope whose sag would go through the
     // seabed between the buoy and the fairlead
     CatenaryLine sag = chainRope(-2e4, true);

@@ -64,8 +64,8 @@ CatenaryParameters quasiStatic(const MooringLineParameters& p)
         k.length = s.length;
         k.EA = s.EA;
         k.weight = weight(s);
-        k.jointWeight = (s.joint.mass - p.waterDensity * s.joint.volume)
-            * p.gravity;
+        k.jointWeight
+            = (s.joint.mass - p.waterDensity * s.joint.volume) * p.gravity;
         c.line.sections.push_back(k);
     }
     return c;
@@ -80,8 +80,7 @@ Errors startAgainstCatenary(int N, bool seabed, const Vector3& fairlead)
     const MooringLineParameters p = chainAndRope(N, seabed);
     const BodyKinematics A = body(fairlead), B = body(Vector3::Zero());
     MooringLine dynamic(p);
-    const auto d
-        = dynamic.evaluate(dynamic.initialState(A, B, 0.0), A, B, 0);
+    const auto d = dynamic.evaluate(dynamic.initialState(A, B, 0.0), A, B, 0);
     const auto c = Catenary(quasiStatic(p)).evaluate(A, B, nullptr, 0);
     std::cout << (seabed ? "seabed" : "no seabed") << ", N = " << N
               << ": fairlead tension " << d.fairleadTension << " N, catenary "
