@@ -24,8 +24,8 @@ Catenary::Catenary(const CatenaryParameters& parameters)
     requirePositive(lawName, "unstretchedLength", parameters.line.length, "m");
     requirePositive(lawName, "EA", parameters.line.EA, "N");
     if (!std::isfinite(parameters.line.weight)) {
-        throw ParameterError(lawName, "weight", parameters.line.weight, "N/m",
-                             "finite");
+        throw ParameterError(Refusal::notFinite, lawName, "weight",
+                             parameters.line.weight, "N/m", "finite");
     }
     requireNonNegative(lawName, "seabedFriction",
                        parameters.line.seabedFriction, "1");
@@ -38,11 +38,11 @@ Catenary::Catenary(const CatenaryParameters& parameters)
                         s.length, "m");
         requirePositive(lawName, (section + "EA").c_str(), s.EA, "N");
         if (!std::isfinite(s.weight)) {
-            throw ParameterError(lawName, section + "weight", s.weight, "N/m",
-                                 "finite");
+            throw ParameterError(Refusal::notFinite, lawName,
+                                 section + "weight", s.weight, "N/m", "finite");
         }
         if (!std::isfinite(s.jointWeight)) {
-            throw ParameterError(lawName,
+            throw ParameterError(Refusal::notFinite, lawName,
                                  "joint" + std::to_string(k + 1) + ".weight",
                                  s.jointWeight, "N", "finite");
         }

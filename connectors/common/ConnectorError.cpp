@@ -56,15 +56,6 @@ ParameterError::ParameterError(Refusal code, const std::string& law,
 {
 }
 
-ParameterError::ParameterError(const std::string& law, const std::string& name,
-                               double value, const std::string& unit,
-                               const std::string& allowed)
-    : ParameterError(std::isfinite(value) ? Refusal::outOfRange
-                                          : Refusal::notFinite,
-                     law, name, value, unit, allowed)
-{
-}
-
 ParameterError::ParameterError(Refusal code, std::string name,
                                const std::string& message)
     : ConnectorError(message), code_(code), parameter_(std::move(name))

@@ -47,11 +47,6 @@ public:
     ParameterError(Refusal code, const std::string& law,
                    const std::string& name, double value,
                    const std::string& unit, const std::string& allowed);
-    //- The same message, code notFinite for a non-finite value and
-    //  outOfRange otherwise
-    ParameterError(const std::string& law, const std::string& name,
-                   double value, const std::string& unit,
-                   const std::string& allowed);
     //- A message of another form; it names the parameter as
     //  "parameter <name>" all the same
     ParameterError(Refusal code, std::string name, const std::string& message);
