@@ -7,54 +7,21 @@ differences.
 
 Run in the project's environment: tests/run-with-openfoam python3 bench/restraintCost/run.py
 """
-import os
 import subprocess
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, linear_spring, rigid_body, rigid_body_model, spring_fmu
 
 
-def fmu_restraint(name, isolation, fmu="linearSpring"):
-    return f"""        {name}
-        {{
-            type fmuConnector;
-            body hull;
-            fmu "{fmu_path(fmu)}";
-            isolation {isolation};
-            parameters
-            {{
-                stiffness 50;
-                damping 0.5;
-                restLength 0.5;
-                A.p {vec((0.1, 0, 0.05))};
-                B.p {vec((0.3, 0.2, 1.2))};
-            }}
-        }}"""
-
-
-MODEL = f"""
-    solver {{ type symplectic; }}
-    bodies
-    {{
-{rigid_body("hull", 2, 0.1, (0, 0, 0), "floating")}
-    }}
-    restraints
-    {{
-        builtin
-        {{
-            type linearSpring;
-            body hull;
-            anchor (0.3 0.2 1.2);
-            refAttachmentPt (0.1 0 0.05);
-            stiffness 50;
-            damping 0.5;
-            restLength 0.5;
-        }}
-{fmu_restraint("fmu", "none")}
-{fmu_restraint("fmuProcess", "process")}
-{fmu_restraint("fmu3", "none", "fmi3/linearSpring")}
-{fmu_restraint("fmu3Process", "process", "fmi3/linearSpring")}
-    }}
-"""
+# The spring of tests/bridge/test_spring_world.py on one floating body
+SPRING = ((0.3, 0.2, 1.2), (0.1, 0, 0.05), 50, 0.5, 0.5)
+MODEL = rigid_body_model(
+    rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+    linear_spring("builtin", "hull", *SPRING)
+    + spring_fmu("fmu", "hull", *SPRING, isolation="none")
+    + spring_fmu("fmuProcess", "hull", *SPRING, isolation="process")
+    + spring_fmu("fmu3", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="none")
+    + spring_fmu("fmu3Process", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="process"),
+    g=None)
 
 
 def main():
