@@ -28,7 +28,6 @@
 . "$(dirname "$0")/connectorTestFunctions"
 
 endTime=0.3
-bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
 
 requireBridge linearSpring "the spring FMU (build it: cmake --build build)"
 
@@ -36,12 +35,7 @@ makeWorkDir
 
 sixDoF=$workDir/coupledFloatingObjectsSixDoF
 rigidBody=$workDir/coupledFloatingObjects
-runTutorial coupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
-    -end-time $endTime -no-plot
-runTutorial coupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
-    -end-time $endTime
-
-checkRuns $endTime "$bodies" "$sixDoF" "$rigidBody"
+runCubePair $endTime coupledFloatingObjects coupledFloatingObjectsSixDoF
 
 checkConnectorRows "$sixDoF" spring balanced
 

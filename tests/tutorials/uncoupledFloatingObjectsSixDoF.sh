@@ -23,13 +23,7 @@ makeWorkDir
 
 sixDoF=$workDir/uncoupledFloatingObjectsSixDoF
 rigidBody=$workDir/uncoupledFloatingObjects
-runTutorial uncoupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
-    -end-time $endTime -no-plot
-runTutorial uncoupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
-    -end-time $endTime
-
-checkRuns $endTime "floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43" \
-    "$sixDoF" "$rigidBody"
+runCubePair $endTime uncoupledFloatingObjects uncoupledFloatingObjectsSixDoF
 
 for body in floatingObject1 floatingObject2
 do
