@@ -81,6 +81,13 @@ def until_unstable(grid, rows_at, keep_going):
     return results
 
 
+def add_map(out, table, name, results, **more):
+    """A solver's map into out (its results, more, its first failure
+    messages) and its runs into table, the CSV rows."""
+    out[name] = {"results": results, **more, "messages": first_messages(results)}
+    table += csv_rows(name, results)
+
+
 def written(out, rows, name, header, draw, figures):
     """out, after stability-<name>.csv and its figure (draw) when figures."""
     if figures:
@@ -100,9 +107,7 @@ def spring_maps(solvers=st.SOLVERS, grid=SPRING_GRID, figures=True, bisect=True)
             if any(row in rows for _, rows in results):
                 limits[row] = (measured_limit(results, row, st.is_stable_spring(solver, mass_ratio))
                                if bisect else (None, None))
-        out[solver[0]] = {"results": results, "limits": limits, "theory": theory_limits(solver[0], "spring"),
-                          "messages": first_messages(results)}
-        table += csv_rows(solver[0], results)
+        add_map(out, table, solver[0], results, limits=limits, theory=theory_limits(solver[0], "spring"))
     return written(out, table, "spring", ("solver", "k dt^2/mu", "row", "outcome", "message"), draw_spring,
                    figures)
 
@@ -124,9 +129,7 @@ def damper_maps(solvers=st.SOLVERS, grid=DAMPER_GRID, figures=True, bisect=True)
                    for r in grid]
         lim = (measured_limit(results, "m2/m1 = 1", st.is_stable_damper(solver))
                if bisect else (None, None))
-        out[solver[0]] = {"results": results, "limit": lim, "theory": theory_limits(solver[0], "damper"),
-                          "messages": first_messages(results)}
-        table += csv_rows(solver[0], results)
+        add_map(out, table, solver[0], results, limit=lim, theory=theory_limits(solver[0], "damper"))
     return written(out, table, "damper", ("solver", "c dt/mu", "row", "outcome", "message"), draw_damper,
                    figures)
 
@@ -151,8 +154,7 @@ def hinge_maps(grid=HINGE_GRID, figures=True, bisect=True, inertia_ratios=INERTI
         row = f"J = {1 / 3:.2g}"
         lim = (measured_limit(results, row, lambda r: hinge.rod_stability(solver, n_iter, r, 1 / 3)[0] == "stable")
                if bisect and row in results[0][1] else (None, None))
-        out[name] = {"results": results, "limit": lim, "messages": first_messages(results)}
-        table += csv_rows(name, results)
+        add_map(out, table, name, results, limit=lim)
     return written(out, table, "hinge", ("solver", "k dt^2/m_eff", "row", "outcome", "message"), draw_hinge,
                    figures)
 
@@ -173,8 +175,9 @@ def catenary_maps(grid=SPRING_GRID, figures=True, bisect=True):
         lim = (measured_limit(results, "tension leg",
                               lambda r: cat.tension_leg_stability(solver, n_iter, r)[0] == "stable")
                if bisect else (None, None))
-        out[name] = {"results": results, "limit": lim, "messages": first_messages(results)}
-        table += [(n, r, o, m) for n, r, _, o, m in csv_rows(name, results)]
+        add_map(out, table, name, results, limit=lim)
+    # (one row a solver: no row column)
+    table = [(n, r, o, m) for n, r, _, o, m in table]
     return written(out, table, "catenary", ("solver", "EA dt^2/(L m)", "outcome", "message"), draw_catenary,
                    figures)
 
