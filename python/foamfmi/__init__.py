@@ -13,6 +13,9 @@ the benchmarks and the tests.
   foamdict        OpenFOAM dictionaries parsed into nested dictionaries
                   (#include, $macros): a restraint's entries
   scene           what tutorials/bin/renderScene draws, read from a case
+  scenedraw       its drawing through ParaView's VTK (pvbatch): water,
+                  tank, bodies, lines, connectors, labels
+  sceneview       its camera and picture
   connectorscene  its springs, dampers and hinges: kinds, attachment
                   points placed by the bodies' motion, their shapes
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
