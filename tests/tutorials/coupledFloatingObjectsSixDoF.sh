@@ -24,6 +24,7 @@
 #    wrong frame changes them by far more;
 #  - the plots are written.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 . "$(dirname "$0")/connectorTestFunctions"
 
@@ -33,9 +34,7 @@ requireBridge linearSpring "the spring FMU (build it: cmake --build build)"
 
 makeWorkDir
 
-sixDoF=$workDir/coupledFloatingObjectsSixDoF
-rigidBody=$workDir/coupledFloatingObjects
-runCubePair $endTime coupledFloatingObjects coupledFloatingObjectsSixDoF
+runCubePair $endTime rigidBody=coupledFloatingObjects sixDoF=coupledFloatingObjectsSixDoF
 
 checkConnectorRows "$sixDoF" spring balanced
 

@@ -23,6 +23,7 @@
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so and
 # build/fmus/linearDamper.fmu. Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 . "$(dirname "$0")/connectorTestFunctions"
 
@@ -36,10 +37,7 @@ requireBridge linearDamper "the damper FMU (build it: ./Allwmake)"
 
 makeWorkDir
 
-damped=$workDir/damperFloatingObjects
-uncoupled=$workDir/uncoupledFloatingObjects
-
-runCubePair $endTime uncoupledFloatingObjects damperFloatingObjects
+runCubePair $endTime uncoupled=uncoupledFloatingObjects damped=damperFloatingObjects
 
 
 # --- The damper's output -----------------------------------------------------

@@ -16,14 +16,13 @@
 # transpose error in either body frame, or forces on the wrong body, breaks
 # the agreement at once.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 
 endTime=0.3
 makeWorkDir
 
-sixDoF=$workDir/uncoupledFloatingObjectsSixDoF
-rigidBody=$workDir/uncoupledFloatingObjects
-runCubePair $endTime uncoupledFloatingObjects uncoupledFloatingObjectsSixDoF
+runCubePair $endTime rigidBody=uncoupledFloatingObjects sixDoF=uncoupledFloatingObjectsSixDoF
 
 for body in floatingObject1 floatingObject2
 do
