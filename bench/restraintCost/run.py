@@ -8,24 +8,30 @@ differences.
 Run in the project's environment: tests/run-with-openfoam python3 bench/restraintCost/run.py
 """
 import subprocess
+import sys
 
+from foamfmi import cli
 from foamfmi.bridgecase import Case, linear_spring, rigid_body, rigid_body_model, spring_fmu
-
 
 # The spring of tests/bridge/test_spring_world.py on one floating body
 SPRING = ((0.3, 0.2, 1.2), (0.1, 0, 0.05), 50, 0.5, 0.5)
-MODEL = rigid_body_model(
-    rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
-    linear_spring("builtin", "hull", *SPRING)
-    + spring_fmu("fmu", "hull", *SPRING, isolation="none")
-    + spring_fmu("fmuProcess", "hull", *SPRING, isolation="process")
-    + spring_fmu("fmu3", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="none")
-    + spring_fmu("fmu3Process", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="process"),
-    g=None)
 
 
-def main():
-    case = Case("restraintCost", MODEL, 1, 0.001)
+def model():
+    """The built-in spring and the FMU's four ways on one body."""
+    return rigid_body_model(
+        rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+        linear_spring("builtin", "hull", *SPRING)
+        + spring_fmu("fmu", "hull", *SPRING, isolation="none")
+        + spring_fmu("fmuProcess", "hull", *SPRING, isolation="process")
+        + spring_fmu("fmu3", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="none")
+        + spring_fmu("fmu3Process", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="process"),
+        g=None)
+
+
+def main(argv):
+    cli.parser("run.py", __doc__).parse_args(argv)
+    case = Case("restraintCost", model(), 1, 0.001)
     out = subprocess.run(
         ["restraintCost", "-case", case.dir, "-evaluations", "20000", "-rounds", "5"],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, check=True,
@@ -76,4 +82,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])
