@@ -265,6 +265,7 @@ MooringLineModel::MooringLineModel()
     for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
+    declareShapeSections();
 }
 
 connectors::MooringLineParameters
@@ -347,6 +348,8 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     o.V = m.V;
     o.shape = m.shape;
     o.tension = m.shapeTension;
+    o.sectionLengths
+        = mooringLineFmu::SectionVariables::lengths(law_.get().parameters());
     fmuExport::ConnectorOutputs all = outputs(o);
     const std::vector<double> sections
         = mooringLineFmu::SectionVariables::values(m);
