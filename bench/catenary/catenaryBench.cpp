@@ -21,6 +21,7 @@
 
 #include "catenary/Catenary.hpp"
 #include "mooringLine/MooringLine.hpp"
+#include "MooringLineReferences.hpp"
 
 namespace {
 
@@ -119,20 +120,7 @@ BodyKinematics fairlead(double t)
 
 MooringLineParameters chain(int N, double tolerance)
 {
-    MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5;
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = N;
-    p.relativeTolerance = tolerance;
-    p.absoluteTolerance = tolerance;
-    return p;
+    return references::withTolerance(references::chain100(N), tolerance);
 }
 
 constexpr double duration = 15.0, step = 0.05;
