@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <random>
+#include <string>
 
 #include "common/ConnectorError.hpp"
 #include "common/Kinematics.hpp"
@@ -28,12 +30,7 @@ inline BodyKinematics body(const Vector3& r,
                            const Vector3& v = Vector3::Zero(),
                            const Vector3& omega = Vector3::Zero())
 {
-    BodyKinematics k;
-    k.p_WKo_W = r;
-    k.R_WK = R;
-    k.v_WKo_W = v;
-    k.w_WK_W = omega;
-    return k;
+    return {r, R, v, omega}; // p_WKo_W, R_WK, v_WKo_W, w_WK_W
 }
 
 //- A body with random position, orientation and velocities (fixed seed)
@@ -91,6 +88,18 @@ void expectThrowWithMessage(Call&& call, const std::string& message)
     } catch (const Exception& e) {
         EXPECT_EQ(std::string(e.what()), message);
     }
+}
+
+//- law.evaluate(A at the origin, B at (1, 0, 0) with component `i` of its
+//  member `field` NaN) throws InputError with `message`
+template <class Law>
+void expectNanInputRefused(const Law& law, Vector3 BodyKinematics::*field,
+                           int i, const std::string& message)
+{
+    BodyKinematics B = body(Vector3(1, 0, 0));
+    (B.*field)[i] = std::numeric_limits<double>::quiet_NaN();
+    expectThrowWithMessage<connectors::InputError>(
+        [&] { law.evaluate(body(Vector3::Zero()), B); }, message);
 }
 
 //- call() throws ParameterError with `message`, `code` and `parameter`

@@ -184,13 +184,7 @@ struct Reference {
 CatenaryLine uniformLine(double length, double EA, double weight, bool seabed,
                          double friction)
 {
-    CatenaryLine l;
-    l.length = length;
-    l.EA = EA;
-    l.weight = weight;
-    l.seabedContact = seabed;
-    l.seabedFriction = friction;
-    return l;
+    return {length, EA, weight, friction, seabed, {}}; // the members' order
 }
 
 //- Chain (section 1, from the anchor), rope (section 2), a point between
