@@ -55,13 +55,7 @@ static int doStep(FixtureValues* v, double time, double h, char* message,
     return 0;
 }
 
-const FixtureModel* fixtureModel(void)
-{
-    static const FixtureModel model = {.nReal = nReal,
-                                       .firstRealOutput = loadsFirst,
-                                       .nRealOutputs = nReal - loadsFirst,
-                                       .setStartValues = setStartValues,
-                                       .initialize = initialize,
-                                       .doStep = doStep};
-    return &model;
-}
+FIXTURE_MODEL(.nReal = nReal, .firstRealOutput = loadsFirst,
+              .nRealOutputs = nReal - loadsFirst,
+              .setStartValues = setStartValues, .initialize = initialize,
+              .doStep = doStep)
