@@ -42,12 +42,8 @@ template <class Body> double bestSeconds(Body&& body, int runs = 2)
 
 void quasiStatic()
 {
-    CatenaryLine line;
-    line.length = 100.0;
-    line.EA = 5e7;
-    line.weight = 700.0;
-    line.seabedFriction = 0.5;
-    line.seabedContact = true;
+    // length [m], EA [N], weight [N/m], seabed friction, seabed contact
+    const CatenaryLine line {100.0, 5e7, 700.0, 0.5, true, {}};
     std::vector<std::pair<double, double>> path;
     for (double x = 62.0; x < 92.0; x += 0.02) {
         path.emplace_back(x, 40.0 + 5.0 * std::sin(x));
