@@ -30,11 +30,7 @@ static void echo(FixtureValues* v)
 /* Identity orientations, unit masses until set */
 static void setStartValues(FixtureValues* v)
 {
-    memset(v->real, 0, sizeof v->real);
-    for (int i = 0; i < 3; ++i) {
-        v->real[AR + 4 * i] = 1;
-        v->real[BR + 4 * i] = 1;
-    }
+    fixtureUnrotated(v, AR, BR);
     v->real[massFirst] = 1;
     v->real[Bm] = 1;
     echo(v);
