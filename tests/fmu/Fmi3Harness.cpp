@@ -51,10 +51,8 @@ LoadedFmu3::LoadedFmu3(const std::string& modelName)
             variables.back().start.push_back(e.start);
         }
     }
-    const fmuImport::Library& library = loadLibrary();
-    static_cast<fmuImport::Fmi3Api&>(api) = library.api3();
-#define FMU_TEST_RESOLVE(function)                                             \
-    resolve(library, "fmi3" #function, api.function, missing);
+    static_cast<fmuImport::Fmi3Api&>(api) = loadLibrary().api3();
+#define FMU_TEST_RESOLVE(function) resolve("fmi3" #function, api.function);
     FMU_TEST_FMI3_OTHER_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
 }

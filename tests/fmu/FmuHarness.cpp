@@ -34,10 +34,8 @@ LoadedFmu::LoadedFmu(const std::string& modelName)
     for (const fmuImport::Variable& v : modelDescription().variables) {
         vr[v.name] = v.valueReference;
     }
-    const fmuImport::Library& library = loadLibrary();
-    static_cast<fmuImport::Fmi2Api&>(api) = library.api();
-#define FMU_TEST_RESOLVE(function)                                             \
-    resolve(library, "fmi2" #function, api.function, missing);
+    static_cast<fmuImport::Fmi2Api&>(api) = loadLibrary().api();
+#define FMU_TEST_RESOLVE(function) resolve("fmi2" #function, api.function);
     FMU_TEST_FMI2_MODEL_EXCHANGE_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
 }

@@ -29,4 +29,9 @@ const fmuImport::Library& UnpackedFmu::loadLibrary()
     return fmu_->library();
 }
 
+void* UnpackedFmu::symbol(const char* name) const
+{
+    return fmu_->library().symbol(name);
+}
+
 } // namespace fmuTest

@@ -18,26 +18,13 @@
 
 namespace fmuTest {
 
-//- f set to the function `library` exports as `name`; `name` appended to
-//  `missing` where it exports none
-template <class Function>
-void resolve(const fmuImport::Library& library, const char* name, Function*& f,
-             std::vector<std::string>& missing)
-{
-    f = reinterpret_cast<Function*>(library.symbol(name));
-    if (f == nullptr) {
-        missing.push_back(name);
-    }
-}
-
+//- Not copyable (pugi::xml_document is not)
 class UnpackedFmu {
 public:
     //- The FMU at `path`, unpacked, its modelDescription.xml parsed (throws
     //  naming the file where it cannot); the model's name is `name`
     UnpackedFmu(const std::string& name, const std::string& path);
     ~UnpackedFmu();
-    UnpackedFmu(const UnpackedFmu&) = delete;
-    UnpackedFmu& operator=(const UnpackedFmu&) = delete;
 
     //- Functions the harness resolves besides the importer's API that the
     //  binary does not export (one of the importer's missing fails the load)
@@ -54,7 +41,19 @@ protected:
     //- The binary, loaded
     const fmuImport::Library& loadLibrary();
 
+    //- f set to the function the loaded binary exports as `name`; `name`
+    //  appended to `missing` where it exports none
+    template <class Function> void resolve(const char* name, Function*& f)
+    {
+        f = reinterpret_cast<Function*>(symbol(name));
+        if (f == nullptr) {
+            missing.push_back(name);
+        }
+    }
+
 private:
+    void* symbol(const char* name) const;
+
     std::shared_ptr<fmuImport::Fmu::Impl> fmu_;
 };
 
