@@ -123,13 +123,15 @@ TEST_P(FmusimFault, EndsAtTheFaultWithTheRowsBefore)
     if (c.signal != 0) {
         EXPECT_EQ(r.signal, c.signal) << "exit code " << r.exitCode << "\n"
                                       << r.err;
-        if (!message.empty())
+        if (!message.empty()) {
             EXPECT_TRUE(contains(r.err, message)) << r.err;
+        }
     } else {
         EXPECT_TRUE(failed(r, c.exitCode, message));
     }
-    if (c.timesOut)
+    if (c.timesOut) {
         EXPECT_LT(r.seconds, 10);
+    }
     expectRowsUpTo(run.csv, c.h, c.lastRow);
 }
 
