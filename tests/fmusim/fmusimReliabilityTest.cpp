@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <csignal>
+#include <ostream>
 #include <utility>
 #include <vector>
 
@@ -108,6 +109,12 @@ const FaultRun faultRuns[] = {
      "fmusim: the FMU exited (status 0) in fmi2DoStep at t = 0.25 in FMU '",
      "', instance 'bungee'\n", false, 0.0625, 4},
 };
+
+// A case by its name in GoogleTest's messages
+void PrintTo(const FaultRun& c, std::ostream* os)
+{
+    *os << c.name;
+}
 
 class FmusimFault : public ::testing::TestWithParam<FaultRun> { };
 
