@@ -21,6 +21,7 @@
 
 #include "catenary/Catenary.hpp"
 #include "mooringLine/MooringLine.hpp"
+#include "MooringLineReferences.hpp"
 
 namespace {
 
@@ -41,12 +42,8 @@ template <class Body> double bestSeconds(Body&& body, int runs = 2)
 
 void quasiStatic()
 {
-    CatenaryLine line;
-    line.length = 100.0;
-    line.EA = 5e7;
-    line.weight = 700.0;
-    line.seabedFriction = 0.5;
-    line.seabedContact = true;
+    // length [m], EA [N], weight [N/m], seabed friction, seabed contact
+    const CatenaryLine line {100.0, 5e7, 700.0, 0.5, true, {}};
     std::vector<std::pair<double, double>> path;
     for (double x = 62.0; x < 92.0; x += 0.02) {
         path.emplace_back(x, 40.0 + 5.0 * std::sin(x));
@@ -119,20 +116,7 @@ BodyKinematics fairlead(double t)
 
 MooringLineParameters chain(int N, double tolerance)
 {
-    MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5;
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = N;
-    p.relativeTolerance = tolerance;
-    p.absoluteTolerance = tolerance;
-    return p;
+    return references::withTolerance(references::chain100(N), tolerance);
 }
 
 constexpr double duration = 15.0, step = 0.05;

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <limits>
 #include <random>
+#include <string>
 
 #include "common/ConnectorError.hpp"
 #include "common/Kinematics.hpp"
@@ -28,12 +31,7 @@ inline BodyKinematics body(const Vector3& r,
                            const Vector3& v = Vector3::Zero(),
                            const Vector3& omega = Vector3::Zero())
 {
-    BodyKinematics k;
-    k.p_WKo_W = r;
-    k.R_WK = R;
-    k.v_WKo_W = v;
-    k.w_WK_W = omega;
-    return k;
+    return {r, R, v, omega}; // p_WKo_W, R_WK, v_WKo_W, w_WK_W
 }
 
 //- A body with random position, orientation and velocities (fixed seed)
@@ -81,6 +79,37 @@ inline void expectAllFinite(const ConnectorResult& r)
                 && std::isfinite(r.dissipatedPower));
 }
 
+//- Solves miss(x, y) = 0, two equations (a 2-vector), from (x, y) by
+//  Newton's method with a difference Jacobian of steps (dx, dy) =
+//  steps(x, y), each step halved (down to 1e-6 of it) until |miss|
+//  decreases with x > 0. True when |miss| < tolerance within `iterations`.
+template <class Miss, class Steps>
+bool dampedNewton(const Miss& miss, const Steps& steps, double tolerance,
+                  int iterations, double& x, double& y)
+{
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        const Eigen::Vector2d r = miss(x, y);
+        if (r.norm() < tolerance) {
+            return true;
+        }
+        const Eigen::Vector2d d = steps(x, y);
+        Eigen::Matrix2d J;
+        J.col(0) = (miss(x + d[0], y) - r) / d[0];
+        J.col(1) = (miss(x, y + d[1]) - r) / d[1];
+        const Eigen::Vector2d step = -J.fullPivLu().solve(r);
+        double a = 1.0;
+        while (
+            a > 1e-6
+            && !(x + a * step[0] > 0.0
+                 && miss(x + a * step[0], y + a * step[1]).norm() < r.norm())) {
+            a *= 0.5;
+        }
+        x += a * step[0];
+        y += a * step[1];
+    }
+    return false;
+}
+
 //- Runs `call`, expects it to throw `Exception` with exactly `message`
 template <class Exception, class Call>
 void expectThrowWithMessage(Call&& call, const std::string& message)
@@ -91,6 +120,28 @@ void expectThrowWithMessage(Call&& call, const std::string& message)
     } catch (const Exception& e) {
         EXPECT_EQ(std::string(e.what()), message);
     }
+}
+
+//- law.evaluate(A at the origin, B at (1, 0, 0) with component `i` of its
+//  member `field` NaN) throws InputError with `message`
+template <class Law>
+void expectNanInputRefused(const Law& law, Vector3 BodyKinematics::*field,
+                           int i, const std::string& message)
+{
+    BodyKinematics B = body(Vector3(1, 0, 0));
+    (B.*field)[i] = std::numeric_limits<double>::quiet_NaN();
+    expectThrowWithMessage<connectors::InputError>(
+        [&] { law.evaluate(body(Vector3::Zero()), B); }, message);
+}
+
+//- A `Law` made of `parameters` changed by `change` throws `Exception` with
+//  exactly `message`
+template <class Law, class Exception, class Parameters, class Change>
+void expectChangeRefused(Parameters parameters, Change&& change,
+                         const std::string& message)
+{
+    change(parameters);
+    expectThrowWithMessage<Exception>([&] { Law law(parameters); }, message);
 }
 
 //- call() throws ParameterError with `message`, `code` and `parameter`

@@ -1,13 +1,16 @@
-// The two reference lines of issue 15, for the dynamic line's tests and
-// bench/mooringLine: a lab chain (1.2 m in 0.5 m of water) and the OC4
-// semi-submersible's line (835.5 m in 200 m), with the fairlead and
-// anchor positions [m] of the measurements; and a snap (a line pulled to
-// 0.9997 of its length) with its energy balance.
+// The lines of the dynamic line's tests, its FMU's and the benches: line
+// types as rows of a line-type table; the 100 m chain; the two reference
+// lines of bench/mooringLine, a lab chain (1.2 m in 0.5 m of water) and
+// the OC4 semi-submersible's line (835.5 m in 200 m), with the fairlead
+// and anchor positions [m] of the measurements; and a snap (a line pulled
+// to 0.9997 of its length) with its energy balance.
 #ifndef TESTS_CONNECTORS_MOORINGLINEREFERENCES_HPP
 #define TESTS_CONNECTORS_MOORINGLINEREFERENCES_HPP
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "mooringLine/LineForces.hpp"
@@ -15,6 +18,71 @@
 
 namespace connectors {
 namespace references {
+
+//- The columns of a line type, a row of MoorDyn's line-type table:
+//  diameter d [m], mass per length w [kg/m], axial stiffness EA [N], axial
+//  damping [N.s], normal and tangential drag Cn, Ct and added mass Can,
+//  Cat [-]
+inline constexpr double MooringLineParameters::*lineTypeColumns[]
+    = {&MooringLineParameters::diameter,
+       &MooringLineParameters::massPerLength,
+       &MooringLineParameters::EA,
+       &MooringLineParameters::axialDamping,
+       &MooringLineParameters::normalDrag,
+       &MooringLineParameters::tangentialDrag,
+       &MooringLineParameters::normalAddedMass,
+       &MooringLineParameters::tangentialAddedMass};
+using LineType = std::array<double, std::size(lineTypeColumns)>;
+
+//- Lab chain (1.2 m in 0.5 m of water)
+inline constexpr LineType labChain {3.6e-3, 0.0796, 3.416e5, 2.473,
+                                    1.33,   0.2,    1.0,     0.5};
+//- OC4 semi-submersible's line
+inline constexpr LineType oc4Chain {0.0766, 113.35, 7.536e8, 3.052e6,
+                                    2.0,    0.4,    0.8,     0.25};
+//- A chain of 80 kg/m with Morison drag; its axial damping is about
+//  critical for the axial mode of a 2.5 m segment
+inline constexpr LineType chain80 {0.1, 80.0, 5e7, 2e5, 1.2, 0.05, 1.0, 0.0};
+
+//- A line of `type` and `length` [m] in `segments` segments, with or
+//  without seabed contact
+inline MooringLineParameters lineOf(const LineType& type, double length,
+                                    bool seabedContact, int segments)
+{
+    MooringLineParameters p;
+    for (std::size_t i = 0; i < type.size(); ++i) {
+        p.*lineTypeColumns[i] = type[i];
+    }
+    p.length = length;
+    p.seabedContact = seabedContact;
+    p.segments = segments;
+    return p;
+}
+
+//- `p` with the seabed's penalty stiffness [Pa/m] and damping [Pa.s/m]
+inline MooringLineParameters onSeabed(MooringLineParameters p, double stiffness,
+                                      double damping)
+{
+    p.seabedStiffness = stiffness;
+    p.seabedDamping = damping;
+    return p;
+}
+
+//- `p` with the integrator's relative and absolute tolerances
+inline MooringLineParameters withTolerance(MooringLineParameters p,
+                                           double tolerance)
+{
+    p.relativeTolerance = tolerance;
+    p.absoluteTolerance = tolerance;
+    return p;
+}
+
+//- The 100 m chain of chain80 on the seabed, moored 80 m from its anchor
+//  in 40 m of water in the dynamic line's tests, the FMU's and the bench
+inline MooringLineParameters chain100(int segments)
+{
+    return lineOf(chain80, 100.0, true, segments);
+}
 
 struct ReferenceLine {
     const char* name;
@@ -25,47 +93,17 @@ struct ReferenceLine {
 //- Lab chain: 1.2 m in 0.5 m of water
 inline ReferenceLine lab(int segments)
 {
-    ReferenceLine r {
-        "lab chain", {}, Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05)};
-    MooringLineParameters& p = r.p;
-    p.length = 1.2;
-    p.massPerLength = 0.0796;
-    p.EA = 3.416e5;
-    p.diameter = 3.6e-3;
-    p.normalDrag = 1.33;
-    p.normalAddedMass = 1.0;
-    p.tangentialDrag = 0.2;
-    p.tangentialAddedMass = 0.5;
-    p.axialDamping = 2.473;
-    p.seabedContact = true;
-    p.seabedStiffness = 3e5;
-    p.seabedDamping = 3e3;
-    p.segments = segments;
-    return r;
+    return {"lab chain",
+            onSeabed(lineOf(labChain, 1.2, true, segments), 3e5, 3e3),
+            Vector3(-1.0, 0.0, -0.5), Vector3(0.0, 0.0, -0.05)};
 }
 
 //- OC4 semi-submersible line: 835.5 m in 200 m of water
 inline ReferenceLine oc4(int segments)
 {
-    ReferenceLine r {"OC4 line",
-                     {},
-                     Vector3(-837.6, 0.0, -200.0),
-                     Vector3(-40.868, 0.0, -14.0)};
-    MooringLineParameters& p = r.p;
-    p.length = 835.5;
-    p.massPerLength = 113.35;
-    p.EA = 7.536e8;
-    p.diameter = 0.0766;
-    p.normalDrag = 2.0;
-    p.normalAddedMass = 0.8;
-    p.tangentialDrag = 0.4;
-    p.tangentialAddedMass = 0.25;
-    p.axialDamping = 3.052e6;
-    p.seabedContact = true;
-    p.seabedStiffness = 3e6;
-    p.seabedDamping = 3e5;
-    p.segments = segments;
-    return r;
+    return {"OC4 line",
+            onSeabed(lineOf(oc4Chain, 835.5, true, segments), 3e6, 3e5),
+            Vector3(-837.6, 0.0, -200.0), Vector3(-40.868, 0.0, -14.0)};
 }
 
 //- Snap: the fairlead of `line` pulled in surge over 0.5 s (smooth start

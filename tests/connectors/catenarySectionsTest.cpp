@@ -156,27 +156,12 @@ struct Reference {
             }
             return Eigen::Vector2d(t - Eigen::Vector2d(X, Z));
         };
-        for (int iteration = 0; iteration < 60; ++iteration) {
-            const Eigen::Vector2d r = miss(H, p);
-            if (r.norm() < 1e-11 * std::hypot(X, Z)) {
-                return;
-            }
-            const double dH = 1e-6 * H, dp = 1e-6 * (std::abs(p) + 1.0);
-            Eigen::Matrix2d Jac;
-            Jac.col(0) = (miss(H + dH, p) - r) / dH;
-            Jac.col(1) = (miss(H, p + dp) - r) / dp;
-            const Eigen::Vector2d step = -Jac.fullPivLu().solve(r);
-            double a = 1.0;
-            while (a > 1e-6
-                   && !(H + a * step[0] > 0.0
-                        && miss(H + a * step[0], p + a * step[1]).norm()
-                            < r.norm())) {
-                a *= 0.5;
-            }
-            H += a * step[0];
-            p += a * step[1];
+        const auto steps = [](double h, double q) {
+            return Eigen::Vector2d(1e-6 * h, 1e-6 * (std::abs(q) + 1.0));
+        };
+        if (!dampedNewton(miss, steps, 1e-11 * std::hypot(X, Z), 60, H, p)) {
+            FAIL() << "the reference did not converge";
         }
-        FAIL() << "the reference did not converge";
     }
 };
 
@@ -184,13 +169,7 @@ struct Reference {
 CatenaryLine uniformLine(double length, double EA, double weight, bool seabed,
                          double friction)
 {
-    CatenaryLine l;
-    l.length = length;
-    l.EA = EA;
-    l.weight = weight;
-    l.seabedContact = seabed;
-    l.seabedFriction = friction;
-    return l;
+    return {length, EA, weight, friction, seabed, {}}; // the members' order
 }
 
 //- Chain (section 1, from the anchor), rope (section 2), a point between

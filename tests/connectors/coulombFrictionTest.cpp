@@ -17,7 +17,6 @@ using namespace lawTest;
 using connectors::CoulombFriction;
 using connectors::CoulombFrictionParameters;
 using connectors::CoulombFrictionResult;
-using connectors::InputError;
 using connectors::ParameterError;
 
 CoulombFrictionParameters
@@ -25,13 +24,7 @@ frictionParameters(double Fc, double vs, const Vector3& axis = Vector3::Zero(),
                    const Vector3& pA = Vector3::Zero(),
                    const Vector3& pB = Vector3::Zero())
 {
-    CoulombFrictionParameters p;
-    p.p_AoP_A = pA;
-    p.p_BoQ_B = pB;
-    p.axis_B = axis;
-    p.frictionForce = Fc;
-    p.regularisationVelocity = vs;
-    return p;
+    return {pA, pB, axis, Fc, vs}; // in the order of the members
 }
 
 TEST(CoulombFriction, AnalyticSlidingAlongAGuide)
@@ -356,12 +349,9 @@ TEST(CoulombFrictionErrors, Messages)
         },
         "coulombFriction: parameter A.p[3] = inf m is out of range (allowed: "
         "finite)");
-    const CoulombFriction law(frictionParameters(0.3, 1e-3));
-    BodyKinematics B = body(Vector3(1, 0, 0));
-    B.w_WK_W[0] = std::numeric_limits<double>::quiet_NaN();
-    expectThrowWithMessage<InputError>(
-        [&] { law.evaluate(body(Vector3::Zero()), B); },
-        "coulombFriction: input B.omega[1] = nan is not finite");
+    expectNanInputRefused(
+        CoulombFriction(frictionParameters(0.3, 1e-3)), &BodyKinematics::w_WK_W,
+        0, "coulombFriction: input B.omega[1] = nan is not finite");
 }
 
 } // namespace

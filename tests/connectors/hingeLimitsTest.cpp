@@ -134,55 +134,47 @@ TEST(HingeLimits, ReferenceDirections)
 TEST(HingeLimits, BadParametersAreNamed)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const auto with = [](auto change) {
+    // The default parameters changed by `change`: refused as expectRefusal
+    const auto refused = [](auto change, const std::string& message,
+                            Refusal code, const std::string& parameter) {
         HingeParameters p;
         change(p);
-        return p;
+        expectRefusal([&] { Hinge h(p); }, message, code, parameter);
     };
-    expectRefusal(
-        [&] { Hinge(with([](HingeParameters& p) { p.stiffness = -1.0; })); },
+    refused(
+        [](HingeParameters& p) { p.stiffness = -1.0; },
         "hinge: parameter stiffness = -1 N/m is out of range (allowed: finite "
         "and >= 0)",
         Refusal::negative, "stiffness");
-    expectRefusal(
-        [&] {
-            Hinge(with([](HingeParameters& p) { p.rotationalDamping = -0.5; }));
-        },
+    refused(
+        [](HingeParameters& p) { p.rotationalDamping = -0.5; },
         "hinge: parameter rotationalDamping = -0.5 N.m.s/rad is out of range "
         "(allowed: finite and >= 0)",
         Refusal::negative, "rotationalDamping");
-    expectRefusal(
-        [&] { Hinge(with([&](HingeParameters& p) { p.ptoDamping = nan; })); },
-        "hinge: parameter ptoDamping = nan N.m.s/rad is out of range "
-        "(allowed: finite and >= 0)",
-        Refusal::notFinite, "ptoDamping");
-    expectRefusal(
-        [&] {
-            Hinge(with([](HingeParameters& p) {
-                p.ptoRestAngle = std::numeric_limits<double>::infinity();
-            }));
+    refused([&](HingeParameters& p) { p.ptoDamping = nan; },
+            "hinge: parameter ptoDamping = nan N.m.s/rad is out of range "
+            "(allowed: finite and >= 0)",
+            Refusal::notFinite, "ptoDamping");
+    refused(
+        [](HingeParameters& p) {
+            p.ptoRestAngle = std::numeric_limits<double>::infinity();
         },
         "hinge: parameter ptoRestAngle = inf rad is out of range (allowed: "
         "finite)",
         Refusal::notFinite, "ptoRestAngle");
-    expectRefusal(
-        [&] { Hinge(with([&](HingeParameters& p) { p.axis_B[1] = nan; })); },
+    refused(
+        [&](HingeParameters& p) { p.axis_B[1] = nan; },
         "hinge: parameter B.axis[2] = nan is out of range (allowed: finite)",
         Refusal::notFinite, "B.axis[2]");
-    expectRefusal(
-        [&] {
-            Hinge(with([](HingeParameters& p) { p.axis_A = Vector3::Zero(); }));
-        },
-        "hinge: parameter A.axis = (0, 0, 0) has no direction (allowed: a "
-        "finite "
-        "vector of length >= 1e-12, normalised by the law)",
-        Refusal::noDirection, "A.axis");
-    expectRefusal(
-        [&] {
-            Hinge(with([](HingeParameters& p) {
-                p.axis_B = Vector3(1, 0, 0);
-                p.ref_B = Vector3(-2, 0, 0);
-            }));
+    refused([](HingeParameters& p) { p.axis_A = Vector3::Zero(); },
+            "hinge: parameter A.axis = (0, 0, 0) has no direction (allowed: a "
+            "finite "
+            "vector of length >= 1e-12, normalised by the law)",
+            Refusal::noDirection, "A.axis");
+    refused(
+        [](HingeParameters& p) {
+            p.axis_B = Vector3(1, 0, 0);
+            p.ref_B = Vector3(-2, 0, 0);
         },
         "hinge: parameter B.ref = (-2, 0, 0) is parallel to B.axis (allowed: a "
         "direction off the axis, or (0, 0, 0) to derive one)",

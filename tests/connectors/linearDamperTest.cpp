@@ -11,7 +11,6 @@
 namespace {
 
 using namespace lawTest;
-using connectors::InputError;
 using connectors::LinearDamper;
 using connectors::LinearDamperParameters;
 using connectors::ParameterError;
@@ -20,11 +19,7 @@ LinearDamperParameters damperParameters(double c,
                                         const Vector3& pA = Vector3::Zero(),
                                         const Vector3& pB = Vector3::Zero())
 {
-    LinearDamperParameters p;
-    p.p_AoP_A = pA;
-    p.p_BoQ_B = pB;
-    p.damping = c;
-    return p;
+    return {pA, pB, c}; // in the order of the members
 }
 
 TEST(LinearDamper, AnalyticRotatedBodies)
@@ -117,12 +112,9 @@ TEST(LinearDamperErrors, Messages)
         },
         "linearDamper: parameter A.p[3] = inf m is out of range (allowed: "
         "finite)");
-    const LinearDamper damper(damperParameters(1.0));
-    BodyKinematics B = body(Vector3(1, 0, 0));
-    B.v_WKo_W[1] = std::numeric_limits<double>::quiet_NaN();
-    expectThrowWithMessage<InputError>(
-        [&] { damper.evaluate(body(Vector3::Zero()), B); },
-        "linearDamper: input B.v[2] = nan is not finite");
+    expectNanInputRefused(LinearDamper(damperParameters(1.0)),
+                          &BodyKinematics::v_WKo_W, 1,
+                          "linearDamper: input B.v[2] = nan is not finite");
 }
 
 } // namespace

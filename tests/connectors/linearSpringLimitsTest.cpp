@@ -30,50 +30,44 @@ LinearSpringParameters valid()
     return p;
 }
 
+//- valid() changed by `change` is refused with `message`
+template <class Change>
+void expectRefused(Change&& change, const std::string& message)
+{
+    expectChangeRefused<LinearSpring, ParameterError>(valid(), change, message);
+}
+
 TEST(LinearSpringErrors, NegativeStiffness)
 {
-    LinearSpringParameters p = valid();
-    p.stiffness = -1.0;
-    expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); },
-        "linearSpring: parameter stiffness = -1 N/m is out of range "
-        "(allowed: finite and >= 0)");
+    expectRefused([](LinearSpringParameters& p) { p.stiffness = -1.0; },
+                  "linearSpring: parameter stiffness = -1 N/m is out of range "
+                  "(allowed: finite and >= 0)");
 }
 
 TEST(LinearSpringErrors, NegativeRestLength)
 {
-    LinearSpringParameters p = valid();
-    p.restLength = -0.25;
-    expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); },
+    expectRefused(
+        [](LinearSpringParameters& p) { p.restLength = -0.25; },
         "linearSpring: parameter restLength = -0.25 m is out of range "
         "(allowed: finite and >= 0)");
 }
 
 TEST(LinearSpringErrors, NegativeDamping)
 {
-    LinearSpringParameters p = valid();
-    p.damping = -3.5;
-    expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); },
+    expectRefused(
+        [](LinearSpringParameters& p) { p.damping = -3.5; },
         "linearSpring: parameter damping = -3.5 N.s/m is out of range "
         "(allowed: finite and >= 0)");
 }
 
 TEST(LinearSpringErrors, NonFiniteParameters)
 {
-    LinearSpringParameters p = valid();
-    p.stiffness = inf;
-    expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); },
-        "linearSpring: parameter stiffness = inf N/m is out of range "
-        "(allowed: finite and >= 0)");
-    p = valid();
-    p.p_BoQ_B[1] = nan;
-    expectThrowWithMessage<ParameterError>(
-        [&] { LinearSpring s(p); },
-        "linearSpring: parameter B.p[2] = nan m is "
-        "out of range (allowed: finite)");
+    expectRefused([](LinearSpringParameters& p) { p.stiffness = inf; },
+                  "linearSpring: parameter stiffness = inf N/m is out of range "
+                  "(allowed: finite and >= 0)");
+    expectRefused([](LinearSpringParameters& p) { p.p_BoQ_B[1] = nan; },
+                  "linearSpring: parameter B.p[2] = nan m is "
+                  "out of range (allowed: finite)");
 }
 
 TEST(LinearSpringErrors, NonFiniteInputs)

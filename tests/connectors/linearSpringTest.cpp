@@ -16,13 +16,7 @@ LinearSpringParameters springParameters(double k, double L0, double c,
                                         const Vector3& pA = Vector3::Zero(),
                                         const Vector3& pB = Vector3::Zero())
 {
-    LinearSpringParameters p;
-    p.p_AoP_A = pA;
-    p.p_BoQ_B = pB;
-    p.stiffness = k;
-    p.restLength = L0;
-    p.damping = c;
-    return p;
+    return {pA, pB, k, L0, c}; // in the order of the members
 }
 
 TEST(LinearSpring, ZeroForceAtRestLength)

@@ -76,27 +76,12 @@ struct Catenary {
         const auto miss = [&](double h, double v) {
             return Eigen::Vector2d(ends(h, v).back() - Eigen::Vector2d(X, Z));
         };
-        for (int iteration = 0; iteration < 100; ++iteration) {
-            const Eigen::Vector2d r = miss(H, VQ);
-            if (r.norm() < 1e-12 * std::hypot(X, Z)) {
-                return;
-            }
-            const double dH = 1e-7 * H, dV = 1e-7 * (std::abs(VQ) + H);
-            Eigen::Matrix2d J;
-            J.col(0) = (miss(H + dH, VQ) - r) / dH;
-            J.col(1) = (miss(H, VQ + dV) - r) / dV;
-            const Eigen::Vector2d step = -J.fullPivLu().solve(r);
-            double a = 1.0;
-            while (a > 1e-6
-                   && !(H + a * step[0] > 0.0
-                        && miss(H + a * step[0], VQ + a * step[1]).norm()
-                            < r.norm())) {
-                a *= 0.5;
-            }
-            H += a * step[0];
-            VQ += a * step[1];
+        const auto steps = [](double h, double v) {
+            return Eigen::Vector2d(1e-7 * h, 1e-7 * (std::abs(v) + h));
+        };
+        if (!dampedNewton(miss, steps, 1e-12 * std::hypot(X, Z), 100, H, VQ)) {
+            FAIL() << "the analytic catenary did not converge";
         }
-        FAIL() << "the analytic catenary did not converge";
     }
 };
 
@@ -371,35 +356,36 @@ TEST(MooringLineSections, SwingingFreelyItKeepsItsEnergy)
 
 TEST(MooringLineSections, UnusableSectionsAndPointsAreNamed)
 {
-    MooringLineParameters p = chainAndRope(20, 0.0, 0.0);
-    p.sections[0].joint.mass = -5.0;
-    expectThrowWithMessage<connectors::ParameterError>(
-        [&] { MooringLine line(p); },
+    using connectors::ConnectorError;
+    using connectors::ParameterError;
+    const MooringLineParameters valid = chainAndRope(20, 0.0, 0.0);
+    expectChangeRefused<MooringLine, ParameterError>(
+        valid,
+        [](MooringLineParameters& p) { p.sections[0].joint.mass = -5.0; },
         "mooringLine: parameter joint1.mass = -5 kg is out of range (allowed: "
         "finite and >= 0)");
-    p = chainAndRope(20, 0.0, 0.0);
-    p.sections[0].joint.volume = -0.1;
-    expectThrowWithMessage<connectors::ParameterError>(
-        [&] { MooringLine line(p); },
+    expectChangeRefused<MooringLine, ParameterError>(
+        valid,
+        [](MooringLineParameters& p) { p.sections[0].joint.volume = -0.1; },
         "mooringLine: parameter joint1.volume = -0.1 m3 is out of range "
         "(allowed: finite and >= 0)");
-    p = chainAndRope(20, 0.0, 0.0);
-    p.sections[0].massPerLength = 0.0;
-    expectThrowWithMessage<connectors::ParameterError>(
-        [&] { MooringLine line(p); },
+    expectChangeRefused<MooringLine, ParameterError>(
+        valid,
+        [](MooringLineParameters& p) { p.sections[0].massPerLength = 0.0; },
         "mooringLine: parameter section2.massPerLength = 0 kg/m is out of "
         "range (allowed: finite and > 0)");
-    p = chainAndRope(20, 0.0, 0.0);
-    p.segments = 600;
-    p.sections[0].segments = 500;
-    expectThrowWithMessage<connectors::ConnectorError>(
-        [&] { MooringLine line(p); },
+    expectChangeRefused<MooringLine, ConnectorError>(
+        valid,
+        [](MooringLineParameters& p) {
+            p.segments = 600;
+            p.sections[0].segments = 500;
+        },
         "mooringLine: parameter section2.segments = 500 is out of range "
         "(allowed: an integer from 1 to 400: the sections' segments add up "
         "to at most 1000)");
     // A buoy of 40 m3 lifts the joint above the water (waterLevel 10 m):
     // without the free surface it would keep its buoyancy in the air
-    p = chainAndRope(20, 500.0, 40.0);
+    MooringLineParameters p = chainAndRope(20, 500.0, 40.0);
     p.waterLevel = 10.0;
     MooringLine line(p);
     try {

@@ -9,35 +9,21 @@
 #include <iostream>
 
 #include "LawTestSupport.hpp"
+#include "MooringLineReferences.hpp"
 #include "catenary/Catenary.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace {
 
 using namespace lawTest;
-using connectors::MooringLine;
-using connectors::MooringLineParameters;
-using connectors::MooringLineState;
+using namespace connectors;
 
 constexpr double pi = 3.14159265358979323846;
 
 //- A chain of 100 m in 40 m of water with Morison drag and axial damping
 MooringLineParameters chain(int segments)
 {
-    MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5; // ~ critical for the axial mode of a 2.5 m segment
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = segments;
-    p.relativeTolerance = 1e-7;
-    p.absoluteTolerance = 1e-7;
-    return p;
+    return references::withTolerance(references::chain100(segments), 1e-7);
 }
 
 const BodyKinematics fairlead = body(Vector3(80.0, 0.0, 40.0));

@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "LawTestSupport.hpp"
+#include "MooringLineReferences.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -30,18 +31,11 @@ constexpr double pi = 3.14159265358979323846;
 //- A 100 m line of 50 kg/m, d = 0.1 m, between two bodies (no seabed)
 MooringLineParameters line(int segments)
 {
-    MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 1e8;
-    p.axialDamping = 1e6;
-    p.massPerLength = 50.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.tangentialAddedMass = 0.5;
-    p.segments = segments;
-    return p;
+    namespace references = connectors::references;
+    // d [m], w [kg/m], EA [N], axial damping [N.s], Cn, Ct, Can, Cat
+    constexpr references::LineType rope {0.1, 50.0, 1e8, 1e6,
+                                         1.2, 0.05, 1.0, 0.5};
+    return references::lineOf(rope, 100.0, false, segments);
 }
 
 double largestSpeed(const MooringLineState& s)

@@ -79,14 +79,17 @@ inline BodyKinematics genericB()
 //  the FMU declares). The lines' unstretchedLength exceeds the 2.57 m
 //  between the generic attachment points (mooringLine refuses to start a
 //  line stretched beyond 30 %)
+//- The attachment points of genericParameters: A.p and B.p [m]
+inline const Vector3 genericAp(0.1, -0.2, 0.3), genericBp(-0.4, 0.05, 0.2);
+
 inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
 {
     std::map<std::string, double> all = {{"stiffness", 250.0},
                                          {"restLength", 0.7},
                                          {"damping", 15.0},
                                          {"unstretchedLength", 3.0}};
-    addVector(all, "A.p", Vector3(0.1, -0.2, 0.3));
-    addVector(all, "B.p", Vector3(-0.4, 0.05, 0.2));
+    addVector(all, "A.p", genericAp);
+    addVector(all, "B.p", genericBp);
     std::map<std::string, double> declared;
     for (const auto& [name, value] : all) {
         if (fmu.vr.count(name)) {
@@ -94,6 +97,16 @@ inline std::map<std::string, double> genericParameters(const LoadedFmu& fmu)
         }
     }
     return declared;
+}
+
+//- Parameters of a two-point law with the attachment points of
+//  genericParameters
+template <class Parameters> Parameters genericallyAttached()
+{
+    Parameters p;
+    p.p_AoP_A = genericAp;
+    p.p_BoQ_B = genericBp;
+    return p;
 }
 
 //- The 17 interface outputs of a law result, in connectorOutputs() order
@@ -127,6 +140,20 @@ inline void expectOutputs(Instance& in,
                           const connectors::ConnectorResult& expected)
 {
     expectOutputs(in, connectorOutputs(), flatten(expected));
+}
+
+//- `in` stepped from 0 to 0.01 with the inputs (genericA, genericB), then
+//  to 0.02 with the bodies swapped, and after each step
+//  `expectOutputsFor(A, B)` with the inputs of that step
+template <class Expect>
+void stepBothWays(const LoadedFmu& fmu, Instance& in, Expect&& expectOutputsFor)
+{
+    ASSERT_EQ(in.set(inputs(genericA(), genericB())), fmi2OK);
+    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.01, fmi2True), fmi2OK);
+    expectOutputsFor(genericA(), genericB());
+    ASSERT_EQ(in.set(inputs(genericB(), genericA())), fmi2OK);
+    ASSERT_EQ(fmu.api.DoStep(in.c, 0.01, 0.02, fmi2True), fmi2OK);
+    expectOutputsFor(genericB(), genericA());
 }
 
 } // namespace fmuTest

@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "FmuHarness.hpp"
-#include "FmuImpl.hpp"
 #include "Unzip.hpp"
 
 namespace fmuTest {
@@ -25,13 +24,8 @@ std::string fmu3Path(const std::string& name)
 }
 
 LoadedFmu3::LoadedFmu3(const std::string& modelName)
-    : name(modelName),
-      fmu_(std::make_shared<fmuImport::Fmu::Impl>(fmu3Path(modelName)))
+    : UnpackedFmu(modelName, fmu3Path(modelName))
 {
-    const std::string xml = (fmu_->root / "modelDescription.xml").string();
-    if (!description.load_file(xml.c_str())) {
-        throw std::runtime_error("cannot parse " + xml);
-    }
     const std::string t = "terminalsAndIcons/terminalsAndIcons.xml";
     fmuImport::FmuArchive archive(fmu3Path(name),
                                   fmuImport::UnpackLimits::fromEnvironment());
@@ -39,8 +33,8 @@ LoadedFmu3::LoadedFmu3(const std::string& modelName)
     if (!terminals.load_buffer(text.data(), text.size())) {
         throw std::runtime_error("cannot parse " + t + " of " + fmu3Path(name));
     }
-    token = fmu_->description.guid;
-    for (const fmuImport::Variable& e : fmu_->description.variables) {
+    token = modelDescription().guid;
+    for (const fmuImport::Variable& e : modelDescription().variables) {
         if (e.element == 0) {
             Variable3 v;
             v.name = e.arrayName.empty() ? e.name : e.arrayName;
@@ -57,16 +51,11 @@ LoadedFmu3::LoadedFmu3(const std::string& modelName)
             variables.back().start.push_back(e.start);
         }
     }
-    fmu_->loadLibrary();
-    const fmuImport::Library& library = fmu_->library();
-    static_cast<fmuImport::Fmi3Api&>(api) = library.api3();
-#define FMU_TEST_RESOLVE(function)                                             \
-    resolve(library, "fmi3" #function, api.function, missing);
+    static_cast<fmuImport::Fmi3Api&>(api) = loadLibrary().api3();
+#define FMU_TEST_RESOLVE(function) resolve("fmi3" #function, api.function);
     FMU_TEST_FMI3_OTHER_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
 }
-
-LoadedFmu3::~LoadedFmu3() = default;
 
 const Variable3& LoadedFmu3::variable(const std::string& variableName) const
 {

@@ -13,9 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "Library.hpp"
+#include "UnpackedFmu.hpp"
 #include "fmi3FunctionTypes.h"
-#include "fmuImport/fmuImport.hpp"
 
 namespace fmuTest {
 
@@ -51,29 +50,21 @@ struct Variable3 {
     std::vector<double> start;
 };
 
-class LoadedFmu3 {
+//- <FOAMFMI_FMU_DIR>/fmi3/<name>.fmu unpacked (UnpackedFmu) and its binary
+//  loaded; `missing`: the functions of FMU_TEST_FMI3_OTHER_FUNCTIONS it does
+//  not export
+class LoadedFmu3 : public UnpackedFmu {
 public:
     explicit LoadedFmu3(const std::string& name);
-    ~LoadedFmu3();
-    LoadedFmu3(const LoadedFmu3&) = delete;
-    LoadedFmu3& operator=(const LoadedFmu3&) = delete;
 
     Fmi3Api api;
-    //- Functions of FMU_TEST_FMI3_OTHER_FUNCTIONS the binary does not
-    //  export (one of fmuImport::Fmi3Api missing fails the load)
-    std::vector<std::string> missing;
-    std::string name;
     std::string token;
-    //- modelDescription.xml and terminalsAndIcons.xml as written in the FMU
-    pugi::xml_document description;
+    //- terminalsAndIcons.xml as written in the FMU
     pugi::xml_document terminals;
     //- In the order of modelDescription.xml
     std::vector<Variable3> variables;
 
     const Variable3& variable(const std::string& name) const;
-
-private:
-    std::shared_ptr<fmuImport::Fmu::Impl> fmu_;
 };
 
 struct LogRecord3 {

@@ -4,8 +4,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "FmuImpl.hpp"
-
 namespace fmuTest {
 
 namespace {
@@ -30,32 +28,16 @@ std::string fmuPath(const std::string& name)
 }
 
 LoadedFmu::LoadedFmu(const std::string& modelName)
-    : name(modelName),
-      fmu_(std::make_shared<fmuImport::Fmu::Impl>(fmuPath(modelName)))
+    : UnpackedFmu(modelName, fmuPath(modelName))
 {
-    directory = fmu_->root;
-    const std::string xml = (directory / "modelDescription.xml").string();
-    if (!description.load_file(xml.c_str())) {
-        throw std::runtime_error("cannot parse " + xml);
-    }
     guid = modelDescription().guid;
     for (const fmuImport::Variable& v : modelDescription().variables) {
         vr[v.name] = v.valueReference;
     }
-    fmu_->loadLibrary();
-    const fmuImport::Library& library = fmu_->library();
-    static_cast<fmuImport::Fmi2Api&>(api) = library.api();
-#define FMU_TEST_RESOLVE(function)                                             \
-    resolve(library, "fmi2" #function, api.function, missing);
+    static_cast<fmuImport::Fmi2Api&>(api) = loadLibrary().api();
+#define FMU_TEST_RESOLVE(function) resolve("fmi2" #function, api.function);
     FMU_TEST_FMI2_MODEL_EXCHANGE_FUNCTIONS(FMU_TEST_RESOLVE)
 #undef FMU_TEST_RESOLVE
-}
-
-LoadedFmu::~LoadedFmu() = default;
-
-const fmuImport::ModelDescription& LoadedFmu::modelDescription() const
-{
-    return fmu_->description;
 }
 
 fmi2ValueReference LoadedFmu::ref(const std::string& variable) const
@@ -169,6 +151,21 @@ const std::vector<std::string>& connectorOutputs()
         "B.M[2]",          "B.M[3]",         "length", "lengthRate", "tension",
         "potentialEnergy", "dissipatedPower"};
     return names;
+}
+
+std::string onBinary(const std::string& tool, const LoadedFmu& fmu)
+{
+    const std::string command = tool + " '"
+        + (fmu.directory / "binaries/linux64" / (fmu.name + ".so")).string()
+        + "'";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"),
+                                               pclose);
+    std::string text;
+    char buffer[512];
+    while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {
+        text += buffer;
+    }
+    return text;
 }
 
 } // namespace fmuTest

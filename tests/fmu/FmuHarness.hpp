@@ -15,9 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "Library.hpp"
+#include "UnpackedFmu.hpp"
 #include "fmi2Functions.h"
-#include "fmuImport/fmuImport.hpp"
 
 namespace fmuTest {
 
@@ -44,49 +43,21 @@ struct Fmi2Api : fmuImport::Fmi2Api {
 #undef FMU_TEST_DECLARE
 };
 
-//- f set to the function `library` exports as `name`; `name` appended to
-//  `missing` where it exports none
-template <class Function>
-void resolve(const fmuImport::Library& library, const char* name, Function*& f,
-             std::vector<std::string>& missing)
-{
-    f = reinterpret_cast<Function*>(library.symbol(name));
-    if (f == nullptr) {
-        missing.push_back(name);
-    }
-}
-
 //- Path of <FOAMFMI_FMU_DIR>/<name>.fmu
 std::string fmuPath(const std::string& name);
 
-//- <FOAMFMI_FMU_DIR>/<name>.fmu unpacked into a directory of its own and
-//  its binary loaded (the importer's Fmu::Impl, not shared with another
-//  LoadedFmu of the same file: every LoadedFmu loads the binary anew)
-class LoadedFmu {
+//- <FOAMFMI_FMU_DIR>/<name>.fmu unpacked (UnpackedFmu) and its binary
+//  loaded; `missing`: the model-exchange fmi2 functions it does not export
+class LoadedFmu : public UnpackedFmu {
 public:
     explicit LoadedFmu(const std::string& name);
-    ~LoadedFmu();
-    LoadedFmu(const LoadedFmu&) = delete;
-    LoadedFmu& operator=(const LoadedFmu&) = delete;
 
     Fmi2Api api;
-    //- Model-exchange fmi2 functions the binary does not export (a
-    //  common or co-simulation one missing fails the load)
-    std::vector<std::string> missing;
-    std::string name;
     std::string guid;
-    //- modelDescription.xml as written in the FMU
-    pugi::xml_document description;
     //- ScalarVariable name -> value reference
     std::map<std::string, fmi2ValueReference> vr;
-    std::filesystem::path directory;
 
-    //- modelDescription.xml as the importer reads it
-    const fmuImport::ModelDescription& modelDescription() const;
     fmi2ValueReference ref(const std::string& variable) const;
-
-private:
-    std::shared_ptr<fmuImport::Fmu::Impl> fmu_;
 };
 
 //- Logger messages of one instance
@@ -127,6 +98,10 @@ private:
     const LoadedFmu& fmu_;
     fmi2CallbackFunctions callbacks_;
 };
+
+//- Output of `tool '<binary>'` on the binary of an unpacked FMU
+//  (binaries/linux64/<name>.so)
+std::string onBinary(const std::string& tool, const LoadedFmu& fmu);
 
 //- Names of the 17 outputs of the connector interface, in order
 const std::vector<std::string>& connectorOutputs();

@@ -174,22 +174,6 @@ TEST(CatenaryFmu, ErrorsAreNamed)
     }
 }
 
-//- Output of a command run on the binary of an unpacked FMU
-std::string onBinary(const std::string& tool, const LoadedFmu& fmu)
-{
-    const std::string command = tool + " '"
-        + (fmu.directory / "binaries/linux64" / (fmu.name + ".so")).string()
-        + "'";
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"),
-                                               pclose);
-    std::string text;
-    char buffer[512];
-    while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) {
-        text += buffer;
-    }
-    return text;
-}
-
 TEST(CatenaryFmu, SpringAndCatenaryCarryNoSundials)
 {
     // Springs, dampers and the quasi-static catenary carry no SUNDIALS:

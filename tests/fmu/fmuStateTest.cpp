@@ -11,8 +11,6 @@ namespace {
 
 using namespace fmuTest;
 
-class FmuStates : public ConnectorFmu { };
-
 //- Initialised instance with generic parameters and inputs, stepped once
 void prepare(const LoadedFmu& fmu, Instance& in)
 {
@@ -29,6 +27,21 @@ std::vector<double> outputs(Instance& in)
     return v;
 }
 
+class FmuStates : public ConnectorFmu {
+protected:
+    //- `in` prepared (prepare), its outputs then in `before` and its FMU
+    //  state then in `saved`
+    void prepareAndSave(Instance& in)
+    {
+        prepare(*fmu, in);
+        before = outputs(in);
+        ASSERT_EQ(fmu->api.GetFMUstate(in.c, &saved), fmi2OK);
+    }
+
+    std::vector<double> before;
+    fmi2FMUstate saved = nullptr;
+};
+
 std::vector<fmi2Byte> serialize(const LoadedFmu& fmu, Instance& in,
                                 fmi2FMUstate s)
 {
@@ -42,11 +55,8 @@ std::vector<fmi2Byte> serialize(const LoadedFmu& fmu, Instance& in,
 TEST_P(FmuStates, GetSetStateRoundTrip)
 {
     Instance in(*fmu);
-    prepare(*fmu, in);
+    ASSERT_NO_FATAL_FAILURE(prepareAndSave(in));
     const Fmi2Api& f = fmu->api;
-    const std::vector<double> before = outputs(in);
-    fmi2FMUstate saved = nullptr;
-    ASSERT_EQ(f.GetFMUstate(in.c, &saved), fmi2OK);
 
     ASSERT_EQ(in.set(inputs(genericB(), genericA())), fmi2OK);
     ASSERT_EQ(f.DoStep(in.c, 0.5, 0.25, fmi2False), fmi2OK);
@@ -75,11 +85,8 @@ TEST_P(FmuStates, GetSetStateRoundTrip)
 TEST_P(FmuStates, SerializeRoundTripIntoAnotherInstance)
 {
     Instance in(*fmu);
-    prepare(*fmu, in);
+    ASSERT_NO_FATAL_FAILURE(prepareAndSave(in));
     const Fmi2Api& f = fmu->api;
-    const std::vector<double> before = outputs(in);
-    fmi2FMUstate saved = nullptr;
-    ASSERT_EQ(f.GetFMUstate(in.c, &saved), fmi2OK);
     const std::vector<fmi2Byte> bytes = serialize(*fmu, in, saved);
 
     Instance other(*fmu); // fresh, in state instantiated

@@ -15,9 +15,7 @@ using namespace fmuTest;
 
 connectors::LinearSpringParameters springParameters()
 {
-    connectors::LinearSpringParameters p;
-    p.p_AoP_A = Vector3(0.1, -0.2, 0.3);
-    p.p_BoQ_B = Vector3(-0.4, 0.05, 0.2);
+    auto p = genericallyAttached<connectors::LinearSpringParameters>();
     p.stiffness = 250.0;
     p.restLength = 0.7;
     p.damping = 15.0;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "ConnectorInputs.hpp"
+#include "MooringLineReferences.hpp"
 #include "mooringLine/MooringLine.hpp"
 
 namespace mooringLineFmuTest {
@@ -31,18 +32,8 @@ inline const std::map<std::string, double> chainParameters
 
 inline connectors::MooringLineParameters lawParameters()
 {
-    connectors::MooringLineParameters p;
+    connectors::MooringLineParameters p = connectors::references::chain100(10);
     p.p_AoP_A = Vector3(0, 0, -2.0);
-    p.length = 100.0;
-    p.EA = 5e7;
-    p.axialDamping = 2e5;
-    p.massPerLength = 80.0;
-    p.diameter = 0.1;
-    p.normalDrag = 1.2;
-    p.tangentialDrag = 0.05;
-    p.normalAddedMass = 1.0;
-    p.seabedContact = true;
-    p.segments = 10;
     return p;
 }
 

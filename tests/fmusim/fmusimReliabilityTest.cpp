@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <csignal>
+#include <ostream>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -26,105 +28,125 @@ void expectRowsUpTo(const std::string& csv, double h, int last)
     }
 }
 
-// Steps of 1/4 s, exact in binary: A.F[1] is NaN from the step at 0.5 on,
-// so from the row for 0.75.
-TEST(FmusimReliability, RunStopsAtANonFiniteOutput)
+// fmusim run, check and twobody of testSpring with `option`: each command
+// and its result
+std::vector<std::pair<std::string, Result>>
+eachCommand(const std::string& option)
 {
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "run " + fixture("faultySpring")
-        + " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --output-file "
-        + out);
-    EXPECT_TRUE(failed(r, 5,
-                       "FMU '" + fixture("faultySpring")
-                           + "', instance 'faultySpring': output 'A.F[1]' is "
-                             "nan at t = 0.75, expected a finite number"));
-    expectRowsUpTo(out, 0.25, 2);
+    std::vector<std::pair<std::string, Result>> results;
+    for (const std::string command : {"run", "check", "twobody"})
+        results.emplace_back(
+            command,
+            fmusim(command + " " + fixture("testSpring") + " " + option));
+    return results;
 }
 
-TEST(FmusimReliability, TwoBodyStopsAtANonFiniteOutput)
-{
+// A run of a faulty FMU that ends at the fault, with every row before it
+// on disk: options, then how it ends (exit code, or the signal that
+// killed fmusim), the message on standard error (around the FMU's path),
+// and the rows: communication points k h, k = 0..lastRow.
+struct FaultRun {
+    const char* name;
+    const char* command; // run or twobody
+    const char* fmu; // a fixture
+    const char* options; // before --output-file
+    int exitCode; // for the runs fmusim ends itself
+    int signal; // for the runs the fault kills fmusim in; else 0
+    const char* messageBefore; // the message: before the FMU's path...
+    const char* messageAfter; // ... and after it ("": no message checked)
+    bool timesOut; // --timeout ends it within seconds
+    double h;
+    int lastRow;
+};
+
+const FaultRun faultRuns[] = {
+    // Steps of 1/4 s, exact in binary: A.F[1] is NaN from the step at 0.5
+    // on, so from the row for 0.75.
+    {"RunStopsAtANonFiniteOutput", "run", "faultySpring",
+     "--set nanTime=0.3 --step-size 0.25 --stop-time 2", 5, 0, "FMU '",
+     "', instance 'faultySpring': output 'A.F[1]' is nan at t = 0.75, "
+     "expected a finite number",
+     false, 0.25, 2},
     // Both bodies fixed: the NaN load moves nothing, only the check stops it.
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "twobody " + fixture("faultySpring")
-        + " --set nanTime=0.3 --step-size 0.25 --stop-time 2 --B.position 1,0,0 --A.motion fixed --B.motion fixed"
-          " --output-file "
-        + out);
-    EXPECT_TRUE(failed(
-        r, 5,
-        "FMU '" + fixture("faultySpring")
-            + "', instance 'twobody': output 'A.F[1]' is nan at t = 0.75, expected a finite number"));
-    expectRowsUpTo(out, 0.25, 2);
+    {"TwoBodyStopsAtANonFiniteOutput", "twobody", "faultySpring",
+     "--set nanTime=0.3 --step-size 0.25 --stop-time 2 --B.position 1,0,0 "
+     "--A.motion fixed --B.motion fixed",
+     5, 0, "FMU '",
+     "', instance 'twobody': output 'A.F[1]' is nan at t = 0.75, expected a "
+     "finite number",
+     false, 0.25, 2},
+    // A segmentation fault in fmi2DoStep at t = 0.75 with steps of 1/1024 s:
+    // fmusim dies of it, says where, and the 769 rows before are on disk (30
+    // kB, more than an output buffer holds, and not a multiple of it).
+    {"RowsSurviveACrashInTheFmu", "run", "faultySpring",
+     "--set crashTime=0.75 --step-size 0.0009765625", 0, SIGSEGV,
+     "fmusim: the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep at "
+     "t = 0.75 in FMU '",
+     "', instance 'faultySpring'", false, 0.0009765625, 768},
+    // Two bodies joined by the spring, B released 0.1 m from its rest
+    // position: rows of moving bodies, longer ones.
+    {"RowsSurviveACrashInTwoBody", "twobody", "faultySpring",
+     "--set crashTime=0.75 --B.position 1.1,0,0 --step-size 0.00390625 "
+     "--stop-time 1",
+     0, SIGSEGV, "", "", false, 0.00390625, 192},
+    // fmi2DoStep at t = 0.75 never returns: --timeout 1 ends the run within
+    // a few seconds, with exit code 6, a message naming the call, and the
+    // rows before it on disk.
+    {"RunTimesOutInAnEndlessStep", "run", "faultySpring",
+     "--set hangTime=0.75 --step-size 0.00390625 --timeout 1", 6, 0,
+     "fmusim: time-out: fmi2DoStep at t = 0.75 in FMU '",
+     "', instance 'faultySpring' did not return within 1 s (--timeout)", true,
+     0.00390625, 192},
+    {"TwoBodyTimesOutInAnEndlessStep", "twobody", "faultySpring",
+     "--set hangTime=0.3 --B.position 1,0,0 --step-size 0.25 --stop-time 2 "
+     "--timeout 0.5",
+     6, 0, "fmi2DoStep at t = 0.5 in FMU '",
+     "', instance 'twobody' did not return within 0.5 s", true, 0.25, 2},
+    // In fmusim's own process an FMU's exit(0) would end fmusim with status
+    // 0, a success: the importer's exit hook names the call and makes it 7.
+    {"ExitInTheFmuIsNamedAndNotASuccess", "run", "faultyBungee-exit",
+     "--step-size 0.0625", 7, 0,
+     "fmusim: the FMU exited (status 0) in fmi2DoStep at t = 0.25 in FMU '",
+     "', instance 'bungee'\n", false, 0.0625, 4},
+};
+
+// A case by its name in GoogleTest's messages
+void PrintTo(const FaultRun& c, std::ostream* os)
+{
+    *os << c.name;
 }
 
-// A segmentation fault in fmi2DoStep at t = 0.75 with steps of 1/1024 s:
-// fmusim dies of it, says where, and the 769 rows before are on disk (30 kB,
-// more than an output buffer holds, and not a multiple of it).
-TEST(FmusimReliability, RowsSurviveACrashInTheFmu)
+class FmusimFault : public ::testing::TestWithParam<FaultRun> { };
+
+TEST_P(FmusimFault, EndsAtTheFaultWithTheRowsBefore)
 {
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "run " + fixture("faultySpring")
-        + " --set crashTime=0.75 --step-size 0.0009765625 --output-file "
-        + out);
-    EXPECT_EQ(r.signal, SIGSEGV) << "exit code " << r.exitCode << "\n" << r.err;
-    EXPECT_TRUE(contains(
-        r.err,
-        "fmusim: the FMU crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t = 0.75 in FMU '"
-            + fixture("faultySpring") + "', instance 'faultySpring'"))
-        << r.err;
-    expectRowsUpTo(out, 0.0009765625, 768);
+    const FaultRun& c = GetParam();
+    const CsvRun run
+        = fmusimCsv(c.command, c.fmu, c.options, c.timesOut ? 60 : 600);
+    const harness::Result& r = run.result;
+    const std::string message = *c.messageAfter == '\0'
+        ? ""
+        : c.messageBefore + fixture(c.fmu) + c.messageAfter;
+    if (c.signal != 0) {
+        EXPECT_EQ(r.signal, c.signal) << "exit code " << r.exitCode << "\n"
+                                      << r.err;
+        if (!message.empty()) {
+            EXPECT_TRUE(contains(r.err, message)) << r.err;
+        }
+    } else {
+        EXPECT_TRUE(failed(r, c.exitCode, message));
+    }
+    if (c.timesOut) {
+        EXPECT_LT(r.seconds, 10);
+    }
+    expectRowsUpTo(run.csv, c.h, c.lastRow);
 }
 
-// Two bodies joined by the spring, B released 0.1 m from its rest
-// position: rows of moving bodies, longer ones.
-TEST(FmusimReliability, RowsSurviveACrashInTwoBody)
-{
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "twobody " + fixture("faultySpring")
-        + " --set crashTime=0.75 --B.position 1.1,0,0 --step-size 0.00390625 --stop-time 1 --output-file "
-        + out);
-    EXPECT_EQ(r.signal, SIGSEGV) << "exit code " << r.exitCode << "\n" << r.err;
-    expectRowsUpTo(out, 0.00390625, 192);
-}
-
-// fmi2DoStep at t = 0.75 never returns: --timeout 1 ends the run within a
-// few seconds, with exit code 6, a message naming the call, and the rows
-// before it on disk.
-TEST(FmusimReliability, RunTimesOutInAnEndlessStep)
-{
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "run " + fixture("faultySpring")
-            + " --set hangTime=0.75 --step-size 0.00390625 --timeout 1 --output-file "
-            + out,
-        60);
-    EXPECT_TRUE(failed(
-        r, 6,
-        "fmusim: time-out: fmi2DoStep at t = 0.75 in FMU '"
-            + fixture("faultySpring")
-            + "', instance 'faultySpring' did not return within 1 s (--timeout)"));
-    EXPECT_LT(r.seconds, 10);
-    expectRowsUpTo(out, 0.00390625, 192);
-}
-
-TEST(FmusimReliability, TwoBodyTimesOutInAnEndlessStep)
-{
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "twobody " + fixture("faultySpring")
-            + " --set hangTime=0.3 --B.position 1,0,0 --step-size 0.25 --stop-time 2 --timeout 0.5 --output-file "
-            + out,
-        60);
-    EXPECT_TRUE(
-        failed(r, 6,
-               "fmi2DoStep at t = 0.5 in FMU '" + fixture("faultySpring")
-                   + "', instance 'twobody' did not return within 0.5 s"));
-    EXPECT_LT(r.seconds, 10);
-    expectRowsUpTo(out, 0.25, 2);
-}
+INSTANTIATE_TEST_SUITE_P(FmusimReliability, FmusimFault,
+                         ::testing::ValuesIn(faultRuns),
+                         [](const ::testing::TestParamInfo<FaultRun>& info) {
+                             return std::string(info.param.name);
+                         });
 
 TEST(FmusimReliability, CheckTimesOutInAnEndlessStep)
 {
@@ -143,20 +165,14 @@ TEST(FmusimReliability, CheckTimesOutInAnEndlessStep)
 
 TEST(FmusimReliability, TimeOutIsANonNegativeNumber)
 {
-    for (const char* command : {"run", "check", "twobody"}) {
-        const harness::Result negative
-            = fmusim(std::string(command) + " " + fixture("testSpring")
-                     + " --timeout -1");
+    for (const auto& [command, negative] : eachCommand("--timeout -1")) {
         EXPECT_EQ(negative.exitCode, 2) << command;
         EXPECT_TRUE(contains(
             negative.err, "timeout must be a non-negative number of seconds"))
             << negative.err;
-        EXPECT_EQ(fmusim(std::string(command) + " " + fixture("testSpring")
-                         + " --timeout soon")
-                      .exitCode,
-                  2)
-            << command;
     }
+    for (const auto& [command, r] : eachCommand("--timeout soon"))
+        EXPECT_EQ(r.exitCode, 2) << command;
     // 0, the default: no time-out.
     EXPECT_EQ(fmusim("run " + fixture("faultySpring")
                      + " --timeout 0 --stop-time 0.1")
@@ -225,22 +241,6 @@ TEST(FmusimReliability, TwoBodyFaultInAProcessOfItsOwnIsReported)
                            + "', instance 'twobody'"));
 }
 
-// In fmusim's own process an FMU's exit(0) would end fmusim with status 0,
-// a success: the importer's exit hook names the call and makes it 7.
-TEST(FmusimReliability, ExitInTheFmuIsNamedAndNotASuccess)
-{
-    const std::string out = scratch("out.csv");
-    const harness::Result r
-        = fmusim("run " + fixture("faultyBungee-exit")
-                 + " --step-size 0.0625 --output-file " + out);
-    EXPECT_TRUE(failed(r, 7,
-                       "fmusim: the FMU exited (status 0) in "
-                       "fmi2DoStep at t = 0.25 in FMU '"
-                           + fixture("faultyBungee-exit")
-                           + "', instance 'bungee'\n"));
-    expectRowsUpTo(out, 0.0625, 4);
-}
-
 // In fmusim's own process a crash takes fmusim with it, by the same
 // signal, after the message naming the call.
 TEST(FmusimReliability, CrashesInTheProcessAreNamed)
@@ -281,10 +281,7 @@ TEST(FmusimReliability, CheckInProcessesOfTheirOwnGoesOnAfterATimeOut)
 
 TEST(FmusimReliability, IsolationIsNoneOrProcess)
 {
-    for (const char* command : {"run", "check", "twobody"}) {
-        const harness::Result r
-            = fmusim(std::string(command) + " " + fixture("testSpring")
-                     + " --isolation thread");
+    for (const auto& [command, r] : eachCommand("--isolation thread")) {
         EXPECT_EQ(r.exitCode, 2) << command;
         EXPECT_TRUE(contains(r.err, "isolation") && contains(r.err, "'thread'")
                     && contains(r.err, "none") && contains(r.err, "process"))

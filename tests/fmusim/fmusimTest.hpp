@@ -16,6 +16,23 @@ inline bool contains(const std::string& text, const std::string& part)
     return text.find(part) != std::string::npos;
 }
 
+// fmusim `command` of the fixture `fmu` with `options`, its CSV written to
+// a fresh scratch file: the result and the file
+struct CsvRun {
+    Result result;
+    std::string csv;
+};
+
+inline CsvRun fmusimCsv(const std::string& command, const std::string& fmu,
+                        const std::string& options, double limitSeconds = 600)
+{
+    const std::string out = scratch("out.csv");
+    return {fmusim(command + " " + fixture(fmu) + " " + options
+                       + " --output-file " + out,
+                   limitSeconds),
+            out};
+}
+
 // The run ended with exitCode and wrote message to standard error; else a
 // failure showing what it wrote there.
 inline ::testing::AssertionResult failed(const Result& r, int exitCode,

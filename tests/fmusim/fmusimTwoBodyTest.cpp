@@ -83,44 +83,64 @@ Oscillation oscillate(const std::string& fmu, const std::string& scheme,
 
 const char* const springParameters = "--set stiffness=100 --set restLength=1";
 
-TEST(FmusimTwoBody, ExplicitSpringOscillatesAtTheAnalyticFrequency)
+// The test spring's oscillation by `scheme`: its frequency error and energy
+// drift below the bounds given, its momentum kept
+void expectSpringOscillation(const char* scheme, double frequencyError,
+                             double energyDrift)
 {
     const Oscillation o
-        = oscillate(fixture("testSpring"), "explicit", springParameters);
-    // Symplectic Euler: frequency error (omega h)^2/24 = 5.6e-6 at h = 1 ms.
-    EXPECT_LT(o.frequencyError, 2e-5);
+        = oscillate(fixture("testSpring"), scheme, springParameters);
+    EXPECT_LT(o.frequencyError, frequencyError);
     // Equal and opposite forces change the momenta by exactly opposite
     // amounts; only the rounding of v + h F/m remains (~1e-16 per step).
     EXPECT_LT(o.momentumDrift, 1e-12);
+    EXPECT_LT(o.energyDrift, energyDrift);
+}
+
+TEST(FmusimTwoBody, ExplicitSpringOscillatesAtTheAnalyticFrequency)
+{
+    // Symplectic Euler: frequency error (omega h)^2/24 = 5.6e-6 at h = 1 ms.
     // A symplectic scheme keeps the energy error bounded, of order
     // omega h / 2 = 5.8e-3 here.
-    EXPECT_LT(o.energyDrift, 1e-2);
+    expectSpringOscillation("explicit", 2e-5, 1e-2);
 }
 
 TEST(FmusimTwoBody, ImplicitSpringOscillatesAtTheAnalyticFrequency)
 {
-    const Oscillation o
-        = oscillate(fixture("testSpring"), "implicit", springParameters);
     // Trapezoidal rule: frequency error (omega h)^2/12 = 1.1e-5 at h = 1 ms.
-    EXPECT_LT(o.frequencyError, 3e-5);
-    EXPECT_LT(o.momentumDrift, 1e-12);
     // The trapezoidal rule conserves the energy of a linear oscillator; what
     // is left comes from the coupling tolerance (1e-10 of the loads) and
     // round-off (measured: 6e-14).
-    EXPECT_LT(o.energyDrift, 1e-10);
+    expectSpringOscillation("implicit", 3e-5, 1e-10);
+}
+
+// The CSV of `fmusim twobody testSpring <options>`, which must succeed
+void twobodyTable(const std::string& options, harness::Table& t)
+{
+    const CsvRun run = fmusimCsv("twobody", "testSpring", options);
+    ASSERT_EQ(run.result.exitCode, 0) << run.result.err;
+    t = harness::readTable(run.csv);
+}
+
+// Each value of the column `name` of t within `tolerance` of f(time)
+template <class F>
+void expectColumn(const harness::Table& t, const std::string& name, F&& f,
+                  double tolerance)
+{
+    const std::vector<double> time = t.values("time"), v = t.values(name);
+    for (std::size_t i = 0; i < time.size(); ++i)
+        EXPECT_NEAR(v[i], f(time[i]), tolerance) << name << " t = " << time[i];
 }
 
 TEST(FmusimTwoBody, BodyFixedToTheWorld)
 {
     // B fixed: A alone oscillates at sqrt(k/mA) = 10 rad/s.
-    const std::string out = scratch("out.csv");
-    const harness::Result r
-        = fmusim("twobody " + fixture("testSpring") + " " + springParameters
-                 + " --B.motion fixed --B.position 1,0,0 --A.position=-0.2,0,0"
-                   " --stop-time 4 --output-file "
-                 + out);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const harness::Table t = harness::readTable(out);
+    harness::Table t;
+    ASSERT_NO_FATAL_FAILURE(twobodyTable(
+        std::string(springParameters)
+            + " --B.motion fixed --B.position 1,0,0 --A.position=-0.2,0,0"
+              " --stop-time 4",
+        t));
     // The rest position of A is x = 0; symplectic Euler: (omega h)^2/24 = 4e-6.
     EXPECT_NEAR(measuredFrequency(t.values("time"), t.values("A.x")), 10.0,
                 10.0 * 2e-5);
@@ -130,22 +150,18 @@ TEST(FmusimTwoBody, BodyFixedToTheWorld)
 
 TEST(FmusimTwoBody, SinusoidalMotionFollowsItsFormula)
 {
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "twobody " + fixture("testSpring")
-        + " --B.motion sinusoidal --B.position 1,0,0 --B.amplitude 0,0.1,0"
-          " --B.frequency 0.5 --B.phase 0.3 --stop-time 1 --step-size 0.01"
-          " --output-file "
-        + out);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const harness::Table t = harness::readTable(out);
-    const std::vector<double> time = t.values("time"), y = t.values("B.y"),
-                              vy = t.values("B.vy");
-    for (std::size_t i = 0; i < time.size(); ++i) {
-        // The formula itself, evaluated the same way: round-off only.
-        EXPECT_NEAR(y[i], 0.1 * std::sin(M_PI * time[i] + 0.3), 1e-15);
-        EXPECT_NEAR(vy[i], 0.1 * M_PI * std::cos(M_PI * time[i] + 0.3), 1e-15);
-    }
+    harness::Table t;
+    ASSERT_NO_FATAL_FAILURE(twobodyTable(
+        "--B.motion sinusoidal --B.position 1,0,0 --B.amplitude 0,0.1,0"
+        " --B.frequency 0.5 --B.phase 0.3 --stop-time 1 --step-size 0.01",
+        t));
+    // The formula itself, evaluated the same way: round-off only.
+    expectColumn(
+        t, "B.y", [](double s) { return 0.1 * std::sin(M_PI * s + 0.3); },
+        1e-15);
+    expectColumn(
+        t, "B.vy",
+        [](double s) { return 0.1 * M_PI * std::cos(M_PI * s + 0.3); }, 1e-15);
 }
 
 TEST(FmusimTwoBody, SpinAboutAPrincipalAxis)
@@ -179,20 +195,16 @@ TEST(FmusimTwoBody, FreeFallUnderGravity)
 {
     // stiffness 0: both bodies fall freely. The trapezoidal rule is exact for
     // constant acceleration: z = -g t^2/2, vz = -g t.
-    const std::string out = scratch("out.csv");
-    const harness::Result r = fmusim(
-        "twobody " + fixture("testSpring")
-        + " --set stiffness=0 --B.position 1,0,0 --gravity 0,0,-9.81 --scheme implicit --stop-time 2"
-          " --step-size 0.01 --output-file "
-        + out);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const harness::Table t = harness::readTable(out);
-    const std::vector<double> time = t.values("time"), z = t.values("B.z"),
-                              vz = t.values("A.vz");
-    for (std::size_t i = 0; i < time.size(); ++i) {
-        EXPECT_NEAR(z[i], -0.5 * 9.81 * time[i] * time[i], 1e-12) << time[i];
-        EXPECT_NEAR(vz[i], -9.81 * time[i], 1e-12) << time[i];
-    }
+    harness::Table t;
+    ASSERT_NO_FATAL_FAILURE(
+        twobodyTable("--set stiffness=0 --B.position 1,0,0 --gravity "
+                     "0,0,-9.81 --scheme implicit --stop-time 2 --step-size "
+                     "0.01",
+                     t));
+    expectColumn(
+        t, "B.z", [](double s) { return -0.5 * 9.81 * s * s; }, 1e-12);
+    expectColumn(
+        t, "A.vz", [](double s) { return -9.81 * s; }, 1e-12);
 }
 
 TEST(FmusimTwoBodyErrors, BadConfigurations)

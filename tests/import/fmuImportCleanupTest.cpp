@@ -115,34 +115,35 @@ TEST(UnpackCleanup, IllegalInstructionRemovesTheUnpackDirectory)
     expectSignalled(runHelper("ill"), SIGILL);
 }
 
+// runHelper(mode) ended by `signal`, the unpack directory removed, and the
+// host's own handler ran
+void expectHostHandlerRan(const char* mode, int signal)
+{
+    const Outcome o = runHelper(mode);
+    expectSignalled(o, signal);
+    EXPECT_EQ(o.marker, "handler ran\n");
+}
+
 // The host handles SIGSEGV on an alternate stack (fmusim does, to report a
 // stack overflow in an FMU): the importer's handler must run there too.
 TEST(UnpackCleanup, StackOverflowWithTheHostsAlternateStack)
 {
-    const Outcome o = runHelper("stack-overflow");
-    expectSignalled(o, SIGSEGV);
-    EXPECT_EQ(o.marker, "handler ran\n");
+    expectHostHandlerRan("stack-overflow", SIGSEGV);
 }
 
 TEST(UnpackCleanup, HostHandlerInstalledBeforeStillRuns)
 {
-    const Outcome o = runHelper("term-before");
-    expectSignalled(o, SIGTERM);
-    EXPECT_EQ(o.marker, "handler ran\n");
+    expectHostHandlerRan("term-before", SIGTERM);
 }
 
 TEST(UnpackCleanup, HostHandlerInstalledAfterStillRuns)
 {
-    const Outcome o = runHelper("term-after");
-    expectSignalled(o, SIGTERM);
-    EXPECT_EQ(o.marker, "handler ran\n");
+    expectHostHandlerRan("term-after", SIGTERM);
 }
 
 TEST(UnpackCleanup, HostSegvHandlerInstalledAfterStillRuns)
 {
-    const Outcome o = runHelper("segv-after");
-    expectSignalled(o, SIGSEGV);
-    EXPECT_EQ(o.marker, "handler ran\n");
+    expectHostHandlerRan("segv-after", SIGSEGV);
 }
 
 TEST(UnpackCleanup, HostHandlerThatGoesOnKeepsTheFilesUntilTheEnd)

@@ -117,15 +117,10 @@ TEST(ChildProcess, ErrorOfTheBinaryComesWithTheFirstInstance)
 {
     const fmuImport::Fmu fmu(fmuPath("missingSymbol"),
                              {fmuImport::Isolation::process, 0, ""});
-    try {
-        fmuImport::Instance instance(fmu, "lag1");
-        ADD_FAILURE() << "instantiated an FMU with a missing function";
-    } catch (const fmuImport::Error& e) {
-        EXPECT_NE(
-            std::string(e.what()).find("does not export fmi2GetStringStatus"),
-            std::string::npos)
-            << e.what();
-    }
+    fixtures::expectErrorSaying(
+        [&] { fmuImport::Instance instance(fmu, "lag1"); },
+        "does not export fmi2GetStringStatus",
+        "instantiated an FMU with a missing function");
     EXPECT_TRUE(noChildLeft());
 }
 

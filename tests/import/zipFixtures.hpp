@@ -1,15 +1,35 @@
 // Helpers for importer tests: FMU fixture paths, archives with hostile
-// entries (built with libzip, since cmake -E tar cannot write them) and a
-// private TMPDIR to see what the importer leaves behind.
+// entries (built with libzip, since cmake -E tar cannot write them), a
+// private TMPDIR to see what the importer leaves behind, and the check of
+// an importer error's message.
 #ifndef TESTS_IMPORT_ZIPFIXTURES_HPP
 #define TESTS_IMPORT_ZIPFIXTURES_HPP
+
+#include <gtest/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "fmuImport/fmuImport.hpp"
+
 namespace fixtures {
+
+// call() throws fmuImport::Error saying `part` in its message; else a
+// failure saying `otherwise`
+template <class Call>
+void expectErrorSaying(Call&& call, const std::string& part,
+                       const std::string& otherwise)
+{
+    try {
+        call();
+        ADD_FAILURE() << otherwise;
+    } catch (const fmuImport::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+            << e.what();
+    }
+}
 
 // <build>/tests/fixture-fmus/<name>.fmu
 std::string fmuPath(const std::string& name);

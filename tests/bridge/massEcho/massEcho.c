@@ -30,11 +30,7 @@ static void echo(FixtureValues* v)
 /* Identity orientations, unit masses until set */
 static void setStartValues(FixtureValues* v)
 {
-    memset(v->real, 0, sizeof v->real);
-    for (int i = 0; i < 3; ++i) {
-        v->real[AR + 4 * i] = 1;
-        v->real[BR + 4 * i] = 1;
-    }
+    fixtureUnrotated(v, AR, BR);
     v->real[massFirst] = 1;
     v->real[Bm] = 1;
     echo(v);
@@ -55,13 +51,7 @@ static int doStep(FixtureValues* v, double time, double h, char* message,
     return 0;
 }
 
-const FixtureModel* fixtureModel(void)
-{
-    static const FixtureModel model = {.nReal = nReal,
-                                       .firstRealOutput = loadsFirst,
-                                       .nRealOutputs = nReal - loadsFirst,
-                                       .setStartValues = setStartValues,
-                                       .initialize = initialize,
-                                       .doStep = doStep};
-    return &model;
-}
+FIXTURE_MODEL(.nReal = nReal, .firstRealOutput = loadsFirst,
+              .nRealOutputs = nReal - loadsFirst,
+              .setStartValues = setStartValues, .initialize = initialize,
+              .doStep = doStep)
