@@ -154,14 +154,8 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
     ramp_(nullptr),
     curTimeIndex_(-1),
-    addedMass_(true),
-    pName_("p_rgh"),
-    residualName_("rigidBodyCoupling"),
-    maxIter_(10),
-    tolerance_(1e-9),
-    addedMassInterval_(10),
-    corrector_(0),
-    newEstimate_(false)
+    coupling_(typeName, refCast<const fvMesh>(mesh)),
+    start_(model_.state())
 {
     readCoupling();
 
@@ -219,7 +213,11 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
 
     if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
     {
-        readAddedMass(IOdictionary(stateIO(mesh)));
+        coupling_.readState
+        (
+            IOdictionary(stateIO(mesh)),
+            bodyMeshes_.size()
+        );
     }
 
     List<labelHashSet> bodyPatches(bodyMeshes_.size());
@@ -227,17 +225,7 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     {
         bodyPatches[bi] = bodyMeshes_[bi].patchSet_;
     }
-    addedMassEstimate_.reset
-    (
-        new rigidBodyAddedMass
-        (
-            refCast<const fvMesh>(mesh),
-            bodyPatches,
-            pName_,
-            rhoName_,
-            rhoInf_
-        )
-    );
+    coupling_.setPatches(bodyPatches, rhoName_, rhoInf_);
 
     // Calculate scaling factor everywhere for each meshed body
     forAll(bodyMeshes_, bi)
@@ -309,7 +297,7 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
     {
         model_.newTime();
         curTimeIndex_ = this->db().time().timeIndex();
-        corrector_ = 0;
+        coupling_.newTime();
     }
 
     const scalar ramp = ramp_->value(t.value());
@@ -339,52 +327,14 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
     {
         const label nIter(coeffDict().lookupOrDefault("nIter", 1));
 
+        couplingBodies bodies(*this);
+
         for (label i=0; i<nIter; i++)
         {
-            ++corrector_;
-
             // The accelerations the fluid of the last corrector moved with
             model_.forwardDynamicsCorrection(model_.state());
-            if (corrector_ == 1 || origins_.empty())
-            {
-                origins_.setSize(bodyMeshes_.size());
-                forAll(bodyMeshes_, bi)
-                {
-                    origins_[bi] = model_.X0(bodyMeshes_[bi].bodyID_).r();
-                }
-            }
-            const scalarField c0(bodyAccelerations());
-
-            const Field<spatialVector> fx(fluidLoads(ramp));
-
-            scalar newtonResidual = 0;
-            label nNewton = 0;
-
-            if (addedMass_)
-            {
-                if (corrector_ == 1 || M_.m() == 0)
-                {
-                    updateAddedMass();
-                }
-                nNewton = coupledSolve(fx, ramp, c0, newtonResidual);
-            }
-            else
-            {
-                model_.solve
-                (
-                    t.value(),
-                    t.deltaTValue(),
-                    scalarField(model_.nDoF(), Zero),
-                    fx
-                );
-            }
-
-            reportResidual
-            (
-                couplingResidual(c0, bodyAccelerations()),
-                newtonResidual,
-                nNewton
-            );
+            fx_ = fluidLoads(ramp);
+            coupling_.correct(bodies, ramp);
         }
     }
 
@@ -460,16 +410,8 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
 
     model_.state().write(dict);
 
-    // The added mass in use (global axes) and the last estimate in the
-    // bodies' axes, from which a restart between two estimates goes on
-    if (addedMass_ && M_.m())
-    {
-        dict.add("addedMass", M_);
-    }
-    if (addedMass_ && Mbody_.m())
-    {
-        dict.add("addedMassBody", Mbody_);
-    }
+    coupling_.writeState(dict);
+
     // ASCII, to a temporary file renamed over the state file: a kill
     // leaves the old file or the new one, never half of it
     if (!restartFiles::write(dict))
