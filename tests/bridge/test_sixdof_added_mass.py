@@ -25,12 +25,11 @@ entries are accepted and the same bad entries stop it.
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 from foamfmi.bridgecase import foam_file
-from test_added_mass_entries import BLOCK_MESH, CONTROL, SCHEMES
+from test_added_mass_entries import make_case, run
 
 SOLVER = "addedMassSixDoFRigidBodyMotion"
 STATE = os.path.join("uniform", "sixDoFRigidBodyMotionState")
@@ -95,47 +94,6 @@ boundaryField
     walls {{ type fixedValue; value uniform (0 0 0); }}
 }}
 """
-
-
-SOLVER_DISPLACEMENT = """
-dimensions [0 1 0 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    body { type calculated; value uniform (0 0 0); }
-    walls { type fixedValue; value uniform (0 0 0); }
-}
-"""
-
-
-def make_case(work, name, mesh_dict, displacement=SOLVER_DISPLACEMENT, end_time="0.02",
-              libs=""):
-    case = os.path.join(work, name)
-    for folder in ("system", "constant", "0"):
-        os.makedirs(os.path.join(case, folder))
-    control = CONTROL.replace("endTime 0.02;", f"endTime {end_time};") + libs
-    files = {
-        "system/controlDict": ("controlDict", control),
-        "system/blockMeshDict": ("blockMeshDict", BLOCK_MESH),
-        "system/fvSchemes": ("fvSchemes", SCHEMES),
-        "system/fvSolution": ("fvSolution", ""),
-        "constant/dynamicMeshDict": ("dynamicMeshDict", mesh_dict),
-    }
-    for path, (obj, body) in files.items():
-        with open(os.path.join(case, path), "w") as f:
-            f.write(foam_file(obj, body))
-    with open(os.path.join(case, "0", "pointDisplacement"), "w") as f:
-        f.write(foam_file("pointDisplacement", displacement).replace(
-            "class dictionary", "class pointVectorField"))
-    subprocess.run(["blockMesh", "-case", case], stdout=subprocess.DEVNULL,
-                   stderr=subprocess.STDOUT, check=True)
-    return case
-
-
-def run(case):
-    result = subprocess.run(["moveDynamicMesh", "-case", case], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True)
-    return result.returncode, result.stdout
 
 
 def refused(code, log, expected):

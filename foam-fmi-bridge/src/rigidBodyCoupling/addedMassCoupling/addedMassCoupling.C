@@ -9,6 +9,7 @@ Description
 
 #include "addedMassCoupling.H"
 #include "fvMesh.H"
+#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -341,6 +342,47 @@ void Foam::addedMassCoupling::reportResidual
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::dictionary& Foam::addedMassCoupling::checkedRestart
+(
+    const Time& runTime,
+    const dictionary& coeffs,
+    const fileName& stateFile,
+    const wordList& stateEntries,
+    const string& what
+)
+{
+    if (!restartFiles::restarted(runTime, runTime.timeName()))
+    {
+        return coeffs;
+    }
+
+    // The coupling's entries are checked later (read)
+    wordList entries(stateEntries);
+    if
+    (
+        !coeffs.getOrDefault<bool>("test", false)
+     && (
+            !coeffs.isDict("coupling")
+         || coeffs.subDict("coupling").getOrDefault<Switch>("addedMass", true)
+        )
+    )
+    {
+        entries.append("addedMass");
+    }
+
+    restartFiles::require
+    (
+        runTime,
+        runTime.timeName(),
+        stateFile,
+        entries,
+        what
+    );
+
+    return coeffs;
+}
+
+
 void Foam::addedMassCoupling::setPatches
 (
     const List<labelHashSet>& bodyPatches,
@@ -366,6 +408,41 @@ void Foam::addedMassCoupling::writeState(dictionary& state) const
     if (addedMass_ && Mbody_.m())
     {
         state.add("addedMassBody", Mbody_);
+    }
+}
+
+
+void Foam::addedMassCoupling::writeStateFile
+(
+    const word& name,
+    const dictionary& motionState,
+    const string& what
+) const
+{
+    IOdictionary dict
+    (
+        IOobject
+        (
+            name,
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    dict.merge(motionState);
+    writeState(dict);
+
+    // ASCII, to a temporary file renamed over the state file: a kill
+    // leaves the old file or the new one, never half of it
+    if (!restartFiles::write(dict))
+    {
+        FatalErrorInFunction
+            << "cannot write the " << what.c_str() << " to "
+            << dict.objectPath() << " (disk full?)" << exit(FatalError);
     }
 }
 

@@ -32,6 +32,14 @@ Description
 namespace
 {
 
+//- dynamicMeshDict's own entries, when the coefficients are its top level
+//  (no <type>Coeffs: motionSolver::coeffDict), besides other solvers'
+//  <type>Coeffs
+const Foam::wordList meshDictEntries
+({
+    "dynamicFvMesh", "motionSolverLibs", "motionSolver"
+});
+
 //- The coupling's entries
 const Foam::wordList couplingEntries
 ({
@@ -365,6 +373,29 @@ void Foam::addedMassCoupling::read
                 << " OpenFOAM's relaxed coupling)" << exit(FatalIOError);
         }
     }
+}
+
+
+
+void Foam::addedMassCoupling::readSolver
+(
+    const dictionary& solverDict,
+    const dictionary& coeffs,
+    const word& openFoamName,
+    const wordList& openFoamEntries
+)
+{
+    const bool topLevel =
+        !solverDict.found(word(solverType_ + "Coeffs"));
+
+    read
+    (
+        coeffs,
+        openFoamName,
+        openFoamEntries,
+        topLevel ? meshDictEntries : wordList(),
+        topLevel
+    );
 }
 
 

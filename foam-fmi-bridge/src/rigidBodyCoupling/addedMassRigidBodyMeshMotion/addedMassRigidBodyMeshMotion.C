@@ -10,13 +10,11 @@
 #include "addedMassRigidBodyMeshMotion.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
-#include "pointPatchDist.H"
+#include "bodyMorphing.H"
 #include "pointConstraints.H"
 #include "uniformDimensionedFields.H"
 #include "forces.H"
 #include "OneConstant.H"
-#include "mathematicalConstants.H"
-#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -54,49 +52,6 @@ Foam::IOobject stateIO(const Foam::polyMesh& mesh)
 }
 
 
-
-//- The coefficients, once a run restarted from a time written by an earlier
-//  run has found that time's state complete: the bodies' state and, with
-//  the added-mass coupling (not in test mode, which estimates none), the
-//  added mass in use (restartFiles::require)
-const Foam::dictionary& checkedRestart
-(
-    const Foam::polyMesh& mesh,
-    const Foam::dictionary& coeffs
-)
-{
-    const Foam::Time& runTime = mesh.time();
-    if (!Foam::restartFiles::restarted(runTime, runTime.timeName()))
-    {
-        return coeffs;
-    }
-
-    // The coupling's entries are checked later (readCoupling)
-    Foam::wordList entries({"q", "qDot", "qDdot", "t", "deltaT"});
-    if
-    (
-        !coeffs.getOrDefault<bool>("test", false)
-     && (
-            !coeffs.isDict("coupling")
-         || coeffs.subDict("coupling")
-           .getOrDefault<Foam::Switch>("addedMass", true)
-        )
-    )
-    {
-        entries.append("addedMass");
-    }
-
-    Foam::restartFiles::require
-    (
-        runTime,
-        runTime.timeName(),
-        Foam::fileName("uniform")/"rigidBodyMotionState",
-        entries,
-        "the rigid-body state of addedMassRigidBodyMotion"
-    );
-
-    return coeffs;
-}
 
 } // End anonymous namespace
 
@@ -144,7 +99,14 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     model_
     (
         mesh.time(),
-        checkedRestart(mesh, coeffDict()),
+        addedMassCoupling::checkedRestart
+        (
+            mesh.time(),
+            coeffDict(),
+            fileName("uniform")/"rigidBodyMotionState",
+            {"q", "qDot", "qDdot", "t", "deltaT"},
+            "the rigid-body state of addedMassRigidBodyMotion"
+        ),
         stateIO(mesh).typeHeaderOk<IOdictionary>(true)
       ? IOdictionary(stateIO(mesh))
       : coeffDict()
@@ -230,42 +192,14 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     // Calculate scaling factor everywhere for each meshed body
     forAll(bodyMeshes_, bi)
     {
-        const pointMesh& pMesh = pointMesh::New(mesh);
-
-        pointPatchDist pDist(pMesh, bodyMeshes_[bi].patchSet_, points0());
-
-        pointScalarField& scale = bodyMeshes_[bi].weight_;
-
-        // Scaling: 1 up to di then linear down to 0 at do away from patches
-        scale.primitiveFieldRef() =
-            min
-            (
-                max
-                (
-                    (bodyMeshes_[bi].do_ - pDist.primitiveField())
-                   /(bodyMeshes_[bi].do_ - bodyMeshes_[bi].di_),
-                    scalar(0)
-                ),
-                scalar(1)
-            );
-
-        // Convert the scale function to a cosine
-        scale.primitiveFieldRef() =
-            min
-            (
-                max
-                (
-                    0.5
-                  - 0.5
-                   *cos(scale.primitiveField()
-                   *Foam::constant::mathematical::pi),
-                    scalar(0)
-                ),
-                scalar(1)
-            );
-
-        pointConstraints::New(pMesh).constrain(scale);
-        //scale.write();
+        bodyMorphing::weights
+        (
+            bodyMeshes_[bi].weight_,
+            bodyMeshes_[bi].patchSet_,
+            points0(),
+            bodyMeshes_[bi].di_,
+            bodyMeshes_[bi].do_
+        );
     }
 }
 
@@ -394,32 +328,15 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
 ) const
 #endif
 {
-    IOdictionary dict
+    dictionary state;
+    model_.state().write(state);
+    coupling_.writeStateFile
     (
-        IOobject
-        (
-            "rigidBodyMotionState",
-            mesh().time().timeName(),
-            "uniform",
-            mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        "rigidBodyMotionState",
+        state,
+        "rigid-body state"
     );
 
-    model_.state().write(dict);
-
-    coupling_.writeState(dict);
-
-    // ASCII, to a temporary file renamed over the state file: a kill
-    // leaves the old file or the new one, never half of it
-    if (!restartFiles::write(dict))
-    {
-        FatalErrorInFunction
-            << "cannot write the rigid-body state to " << dict.objectPath()
-            << " (disk full?)" << exit(FatalError);
-    }
     return true;
 }
 

@@ -33,14 +33,6 @@ const Foam::wordList openFoamEntries
     "deltaT"
 });
 
-//- dynamicMeshDict's own entries, when the coefficients are its top level
-//  (no addedMassRigidBodyMotionCoeffs: motionSolver::coeffDict), besides
-//  other solvers' <type>Coeffs
-const Foam::wordList meshDictEntries
-({
-    "dynamicFvMesh", "motionSolverLibs", "motionSolver"
-});
-
 } // End anonymous namespace
 
 
@@ -48,17 +40,12 @@ const Foam::wordList meshDictEntries
 
 void Foam::addedMassRigidBodyMeshMotion::readCoupling()
 {
-    // Without addedMassRigidBodyMotionCoeffs the coefficients are
-    // dynamicMeshDict itself
-    const bool topLevel = !dictionary::found(word(typeName + "Coeffs"));
-
-    coupling_.read
+    coupling_.readSolver
     (
+        *this,
         coeffDict(),
         "rigidBodyMotion",
-        openFoamEntries,
-        topLevel ? meshDictEntries : wordList(),
-        topLevel
+        openFoamEntries
     );
 }
 

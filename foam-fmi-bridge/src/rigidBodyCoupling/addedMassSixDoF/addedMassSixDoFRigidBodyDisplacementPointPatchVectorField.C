@@ -15,7 +15,6 @@
 #include "fvMesh.H"
 #include "volFields.H"
 #include "uniformDimensionedFields.H"
-#include "forces.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -259,27 +258,20 @@ Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::updateCoeffs()
         firstIter = true;
     }
 
-    dictionary forcesDict;
-
-    forcesDict.add("type", functionObjects::forces::typeName);
-    forcesDict.add("patches", wordList(1, this->patch().name()));
-    forcesDict.add("rhoInf", rhoInf_);
-    forcesDict.add("rho", rhoName_);
-    forcesDict.add("CofR", motion_.centreOfRotation());
-
-    functionObjects::forces f("forces", db(), forcesDict);
-    #if OPENFOAM >= 2206
-    f.calcForcesMoments();
-    #else
-    f.calcForcesMoment();
-    #endif
-
     if (lookupGravity_ == 1)
     {
         g_ = t.lookupObject<uniformDimensionedVectorField>("g").value();
     }
 
-    body_.setLoads(f.forceEff(), f.momentEff(), g_, firstIter);
+    body_.setFluidLoads
+    (
+        db(),
+        List<wordRe>(1, wordRe(this->patch().name())),
+        rhoName_,
+        rhoInf_,
+        g_,
+        firstIter
+    );
     coupling_->correct(body_, 1);
     if (coupling_->addedMass())
     {

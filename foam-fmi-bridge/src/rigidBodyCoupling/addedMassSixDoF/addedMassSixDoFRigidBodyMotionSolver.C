@@ -11,12 +11,9 @@
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "fvMesh.H"
-#include "pointPatchDist.H"
+#include "bodyMorphing.H"
 #include "pointConstraints.H"
 #include "uniformDimensionedFields.H"
-#include "forces.H"
-#include "mathematicalConstants.H"
-#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -55,12 +52,6 @@ const Foam::wordList openFoamEntries
     "angularMomentum", "torque"
 });
 
-//- dynamicMeshDict's own entries, when the coefficients are its top level
-const Foam::wordList meshDictEntries
-({
-    "dynamicFvMesh", "motionSolverLibs", "motionSolver"
-});
-
 //- The state file of a time, uniform/sixDoFRigidBodyMotionState
 Foam::IOobject stateIO(const Foam::polyMesh& mesh)
 {
@@ -77,50 +68,12 @@ Foam::IOobject stateIO(const Foam::polyMesh& mesh)
 }
 
 
-//- The coefficients, once a restarted run has found its start time's state
-//  complete: the body's state and, with the added-mass coupling (not in
-//  test mode), the added mass in use (restartFiles::require)
-const Foam::dictionary& checkedRestart
-(
-    const Foam::polyMesh& mesh,
-    const Foam::dictionary& coeffs
-)
-{
-    const Foam::Time& runTime = mesh.time();
-    if (!Foam::restartFiles::restarted(runTime, runTime.timeName()))
-    {
-        return coeffs;
-    }
-
-    Foam::wordList entries
-    ({
-        "centreOfRotation", "orientation", "velocity", "acceleration",
-        "angularMomentum", "torque"
-    });
-    if
-    (
-        !coeffs.getOrDefault<bool>("test", false)
-     && (
-            !coeffs.isDict("coupling")
-         || coeffs.subDict("coupling")
-           .getOrDefault<Foam::Switch>("addedMass", true)
-        )
-    )
-    {
-        entries.append("addedMass");
-    }
-
-    Foam::restartFiles::require
-    (
-        runTime,
-        runTime.timeName(),
-        Foam::fileName("uniform")/"sixDoFRigidBodyMotionState",
-        entries,
-        "the six-DoF state of addedMassSixDoFRigidBodyMotion"
-    );
-
-    return coeffs;
-}
+//- The entries of the motion's state file
+const Foam::wordList stateEntries
+({
+    "centreOfRotation", "orientation", "velocity", "acceleration",
+    "angularMomentum", "torque"
+});
 
 } // End anonymous namespace
 
@@ -129,16 +82,12 @@ const Foam::dictionary& checkedRestart
 
 void Foam::addedMassSixDoFRigidBodyMotionSolver::readCoupling()
 {
-    // Without the Coeffs dictionary the coefficients are dynamicMeshDict
-    const bool topLevel = !dictionary::found(word(typeName + "Coeffs"));
-
-    coupling_.read
+    coupling_.readSolver
     (
+        *this,
         coeffDict(),
         "sixDoFRigidBodyMotion",
-        openFoamEntries,
-        topLevel ? meshDictEntries : wordList(),
-        topLevel
+        openFoamEntries
     );
 }
 
@@ -155,7 +104,14 @@ addedMassSixDoFRigidBodyMotionSolver
     displacementMotionSolver(mesh, dict, typeName),
     motion_
     (
-        checkedRestart(mesh, coeffDict()),
+        addedMassCoupling::checkedRestart
+        (
+            mesh.time(),
+            coeffDict(),
+            fileName("uniform")/"sixDoFRigidBodyMotionState",
+            stateEntries,
+            "the six-DoF state of addedMassSixDoFRigidBodyMotion"
+        ),
         stateIO(mesh).typeHeaderOk<IOdictionary>(true)
       ? IOdictionary(stateIO(mesh))
       : coeffDict(),
@@ -205,37 +161,7 @@ addedMassSixDoFRigidBodyMotionSolver
         rhoInf_
     );
 
-    // Scaling: 1 up to di then linear down to 0 at do away from patches,
-    // as a cosine
-    const pointMesh& pMesh = pointMesh::New(mesh);
-    pointPatchDist pDist(pMesh, patchSet_, points0());
-
-    scale_.primitiveFieldRef() =
-        min
-        (
-            max
-            (
-                (do_ - pDist.primitiveField())/(do_ - di_),
-                scalar(0)
-            ),
-            scalar(1)
-        );
-
-    scale_.primitiveFieldRef() =
-        min
-        (
-            max
-            (
-                0.5
-              - 0.5
-               *cos(scale_.primitiveField()
-               *Foam::constant::mathematical::pi),
-                scalar(0)
-            ),
-            scalar(1)
-        );
-
-    pointConstraints::New(pMesh).constrain(scale_);
+    bodyMorphing::weights(scale_, patchSet_, points0(), di_, do_);
 }
 
 
@@ -305,22 +231,15 @@ void Foam::addedMassSixDoFRigidBodyMotionSolver::solve()
     }
     else
     {
-        dictionary forcesDict;
-
-        forcesDict.add("type", functionObjects::forces::typeName);
-        forcesDict.add("patches", patches_);
-        forcesDict.add("rhoInf", rhoInf_);
-        forcesDict.add("rho", rhoName_);
-        forcesDict.add("CofR", motion_.centreOfRotation());
-
-        functionObjects::forces f("forces", db(), forcesDict);
-        #if OPENFOAM >= 2206
-        f.calcForcesMoments();
-        #else
-        f.calcForcesMoment();
-        #endif
-
-        body_.setLoads(f.forceEff(), f.momentEff(), g.value(), firstIter);
+        body_.setFluidLoads
+        (
+            db(),
+            patches_,
+            rhoName_,
+            rhoInf_,
+            g.value(),
+            firstIter
+        );
         coupling_.correct(body_, 1);
         if (coupling_.addedMass())
         {
@@ -367,31 +286,15 @@ bool Foam::addedMassSixDoFRigidBodyMotionSolver::writeObject
 ) const
 #endif
 {
-    IOdictionary dict
+    dictionary state;
+    motion_.state().write(state);
+    coupling_.writeStateFile
     (
-        IOobject
-        (
-            "sixDoFRigidBodyMotionState",
-            mesh().time().timeName(),
-            "uniform",
-            mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        "sixDoFRigidBodyMotionState",
+        state,
+        "six-DoF state"
     );
 
-    motion_.state().write(dict);
-    coupling_.writeState(dict);
-
-    // ASCII, to a temporary file renamed over the state file: a kill
-    // leaves the old file or the new one, never half of it
-    if (!restartFiles::write(dict))
-    {
-        FatalErrorInFunction
-            << "cannot write the six-DoF state to " << dict.objectPath()
-            << " (disk full?)" << exit(FatalError);
-    }
     return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include "sixDoFCouplingBody.H"
 #include "Time.H"
+#include "forces.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -93,6 +94,35 @@ void Foam::sixDoFCouplingBody::setLoads
     moment_ = moment;
     g_ = g;
     firstIter_ = firstIter;
+}
+
+
+void Foam::sixDoFCouplingBody::setFluidLoads
+(
+    const objectRegistry& db,
+    const List<wordRe>& patches,
+    const word& rhoName,
+    const scalar rhoInf,
+    const vector& g,
+    const bool firstIter
+)
+{
+    dictionary forcesDict;
+
+    forcesDict.add("type", functionObjects::forces::typeName);
+    forcesDict.add("patches", patches);
+    forcesDict.add("rhoInf", rhoInf);
+    forcesDict.add("rho", rhoName);
+    forcesDict.add("CofR", motion_.centreOfRotation());
+
+    functionObjects::forces f("forces", db, forcesDict);
+    #if OPENFOAM >= 2206
+    f.calcForcesMoments();
+    #else
+    f.calcForcesMoment();
+    #endif
+
+    setLoads(f.forceEff(), f.momentEff(), g, firstIter);
 }
 
 
