@@ -103,12 +103,16 @@ addedMassRigidBodyMotionCoeffs
 """
 
 
-def make_case(work, name, dynamic_mesh_dict):
+def make_case(work, name, dynamic_mesh_dict, displacement=POINT_DISPLACEMENT,
+              end_time="0.02", libs=""):
+    """The box in work/name, meshed: dynamicMeshDict, 0/pointDisplacement,
+    the end time and the controlDict's libs entry given."""
     case = os.path.join(work, name)
     for folder in ("system", "constant", "0"):
         os.makedirs(os.path.join(case, folder))
+    control = CONTROL.replace("endTime 0.02;", f"endTime {end_time};") + libs
     files = {
-        "system/controlDict": ("controlDict", CONTROL),
+        "system/controlDict": ("controlDict", control),
         "system/blockMeshDict": ("blockMeshDict", BLOCK_MESH),
         "system/fvSchemes": ("fvSchemes", SCHEMES),
         "system/fvSolution": ("fvSolution", ""),
@@ -118,7 +122,7 @@ def make_case(work, name, dynamic_mesh_dict):
         with open(os.path.join(case, path), "w") as f:
             f.write(foam_file(obj, body))
     with open(os.path.join(case, "0", "pointDisplacement"), "w") as f:
-        f.write(foam_file("pointDisplacement", POINT_DISPLACEMENT).replace(
+        f.write(foam_file("pointDisplacement", displacement).replace(
             "class dictionary", "class pointVectorField"))
     subprocess.run(["blockMesh", "-case", case], stdout=subprocess.DEVNULL,
                    stderr=subprocess.STDOUT, check=True)

@@ -10,13 +10,11 @@
 #include "addedMassRigidBodyMeshMotion.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
-#include "pointPatchDist.H"
+#include "bodyMorphing.H"
 #include "pointConstraints.H"
 #include "uniformDimensionedFields.H"
 #include "forces.H"
 #include "OneConstant.H"
-#include "mathematicalConstants.H"
-#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -54,49 +52,6 @@ Foam::IOobject stateIO(const Foam::polyMesh& mesh)
 }
 
 
-
-//- The coefficients, once a run restarted from a time written by an earlier
-//  run has found that time's state complete: the bodies' state and, with
-//  the added-mass coupling (not in test mode, which estimates none), the
-//  added mass in use (restartFiles::require)
-const Foam::dictionary& checkedRestart
-(
-    const Foam::polyMesh& mesh,
-    const Foam::dictionary& coeffs
-)
-{
-    const Foam::Time& runTime = mesh.time();
-    if (!Foam::restartFiles::restarted(runTime, runTime.timeName()))
-    {
-        return coeffs;
-    }
-
-    // The coupling's entries are checked later (readCoupling)
-    Foam::wordList entries({"q", "qDot", "qDdot", "t", "deltaT"});
-    if
-    (
-        !coeffs.getOrDefault<bool>("test", false)
-     && (
-            !coeffs.isDict("coupling")
-         || coeffs.subDict("coupling")
-           .getOrDefault<Foam::Switch>("addedMass", true)
-        )
-    )
-    {
-        entries.append("addedMass");
-    }
-
-    Foam::restartFiles::require
-    (
-        runTime,
-        runTime.timeName(),
-        Foam::fileName("uniform")/"rigidBodyMotionState",
-        entries,
-        "the rigid-body state of addedMassRigidBodyMotion"
-    );
-
-    return coeffs;
-}
 
 } // End anonymous namespace
 
@@ -144,7 +99,14 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     model_
     (
         mesh.time(),
-        checkedRestart(mesh, coeffDict()),
+        addedMassCoupling::checkedRestart
+        (
+            mesh.time(),
+            coeffDict(),
+            fileName("uniform")/"rigidBodyMotionState",
+            {"q", "qDot", "qDdot", "t", "deltaT"},
+            "the rigid-body state of addedMassRigidBodyMotion"
+        ),
         stateIO(mesh).typeHeaderOk<IOdictionary>(true)
       ? IOdictionary(stateIO(mesh))
       : coeffDict()
@@ -154,14 +116,8 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
     ramp_(nullptr),
     curTimeIndex_(-1),
-    addedMass_(true),
-    pName_("p_rgh"),
-    residualName_("rigidBodyCoupling"),
-    maxIter_(10),
-    tolerance_(1e-9),
-    addedMassInterval_(10),
-    corrector_(0),
-    newEstimate_(false)
+    coupling_(typeName, refCast<const fvMesh>(mesh)),
+    start_(model_.state())
 {
     readCoupling();
 
@@ -219,7 +175,11 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
 
     if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
     {
-        readAddedMass(IOdictionary(stateIO(mesh)));
+        coupling_.readState
+        (
+            IOdictionary(stateIO(mesh)),
+            bodyMeshes_.size()
+        );
     }
 
     List<labelHashSet> bodyPatches(bodyMeshes_.size());
@@ -227,57 +187,19 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     {
         bodyPatches[bi] = bodyMeshes_[bi].patchSet_;
     }
-    addedMassEstimate_.reset
-    (
-        new rigidBodyAddedMass
-        (
-            refCast<const fvMesh>(mesh),
-            bodyPatches,
-            pName_,
-            rhoName_,
-            rhoInf_
-        )
-    );
+    coupling_.setPatches(bodyPatches, rhoName_, rhoInf_);
 
     // Calculate scaling factor everywhere for each meshed body
     forAll(bodyMeshes_, bi)
     {
-        const pointMesh& pMesh = pointMesh::New(mesh);
-
-        pointPatchDist pDist(pMesh, bodyMeshes_[bi].patchSet_, points0());
-
-        pointScalarField& scale = bodyMeshes_[bi].weight_;
-
-        // Scaling: 1 up to di then linear down to 0 at do away from patches
-        scale.primitiveFieldRef() =
-            min
-            (
-                max
-                (
-                    (bodyMeshes_[bi].do_ - pDist.primitiveField())
-                   /(bodyMeshes_[bi].do_ - bodyMeshes_[bi].di_),
-                    scalar(0)
-                ),
-                scalar(1)
-            );
-
-        // Convert the scale function to a cosine
-        scale.primitiveFieldRef() =
-            min
-            (
-                max
-                (
-                    0.5
-                  - 0.5
-                   *cos(scale.primitiveField()
-                   *Foam::constant::mathematical::pi),
-                    scalar(0)
-                ),
-                scalar(1)
-            );
-
-        pointConstraints::New(pMesh).constrain(scale);
-        //scale.write();
+        bodyMorphing::weights
+        (
+            bodyMeshes_[bi].weight_,
+            bodyMeshes_[bi].patchSet_,
+            points0(),
+            bodyMeshes_[bi].di_,
+            bodyMeshes_[bi].do_
+        );
     }
 }
 
@@ -309,7 +231,7 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
     {
         model_.newTime();
         curTimeIndex_ = this->db().time().timeIndex();
-        corrector_ = 0;
+        coupling_.newTime();
     }
 
     const scalar ramp = ramp_->value(t.value());
@@ -339,52 +261,14 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
     {
         const label nIter(coeffDict().lookupOrDefault("nIter", 1));
 
+        couplingBodies bodies(*this);
+
         for (label i=0; i<nIter; i++)
         {
-            ++corrector_;
-
             // The accelerations the fluid of the last corrector moved with
             model_.forwardDynamicsCorrection(model_.state());
-            if (corrector_ == 1 || origins_.empty())
-            {
-                origins_.setSize(bodyMeshes_.size());
-                forAll(bodyMeshes_, bi)
-                {
-                    origins_[bi] = model_.X0(bodyMeshes_[bi].bodyID_).r();
-                }
-            }
-            const scalarField c0(bodyAccelerations());
-
-            const Field<spatialVector> fx(fluidLoads(ramp));
-
-            scalar newtonResidual = 0;
-            label nNewton = 0;
-
-            if (addedMass_)
-            {
-                if (corrector_ == 1 || M_.m() == 0)
-                {
-                    updateAddedMass();
-                }
-                nNewton = coupledSolve(fx, ramp, c0, newtonResidual);
-            }
-            else
-            {
-                model_.solve
-                (
-                    t.value(),
-                    t.deltaTValue(),
-                    scalarField(model_.nDoF(), Zero),
-                    fx
-                );
-            }
-
-            reportResidual
-            (
-                couplingResidual(c0, bodyAccelerations()),
-                newtonResidual,
-                nNewton
-            );
+            fx_ = fluidLoads(ramp);
+            coupling_.correct(bodies, ramp);
         }
     }
 
@@ -444,40 +328,15 @@ bool Foam::addedMassRigidBodyMeshMotion::writeObject
 ) const
 #endif
 {
-    IOdictionary dict
+    dictionary state;
+    model_.state().write(state);
+    coupling_.writeStateFile
     (
-        IOobject
-        (
-            "rigidBodyMotionState",
-            mesh().time().timeName(),
-            "uniform",
-            mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        "rigidBodyMotionState",
+        state,
+        "rigid-body state"
     );
 
-    model_.state().write(dict);
-
-    // The added mass in use (global axes) and the last estimate in the
-    // bodies' axes, from which a restart between two estimates goes on
-    if (addedMass_ && M_.m())
-    {
-        dict.add("addedMass", M_);
-    }
-    if (addedMass_ && Mbody_.m())
-    {
-        dict.add("addedMassBody", Mbody_);
-    }
-    // ASCII, to a temporary file renamed over the state file: a kill
-    // leaves the old file or the new one, never half of it
-    if (!restartFiles::write(dict))
-    {
-        FatalErrorInFunction
-            << "cannot write the rigid-body state to " << dict.objectPath()
-            << " (disk full?)" << exit(FatalError);
-    }
     return true;
 }
 

@@ -3,62 +3,42 @@
 // (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
 Description
-    The added-mass coupling of addedMassRigidBodyMeshMotion: loads, body
-    accelerations, the Newton iterations and the residual.
+    The added-mass coupling: the added mass of a time step, the Newton
+    iterations of an outer corrector and the residual.
 \*---------------------------------------------------------------------------*/
 
-#include "addedMassRigidBodyMeshMotion.H"
-#include "forces.H"
+#include "addedMassCoupling.H"
 #include "fvMesh.H"
+#include "restartFiles.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::addedMassCoupling::addedMassCoupling
+(
+    const word& solverType,
+    const fvMesh& mesh,
+    const word& defaultResidual
+)
+:
+    solverType_(solverType),
+    defaultResidual_(defaultResidual),
+    mesh_(mesh),
+    addedMass_(true),
+    pName_("p_rgh"),
+    residualName_(defaultResidual),
+    maxIter_(10),
+    tolerance_(1e-9),
+    addedMassInterval_(10),
+    corrector_(0),
+    newEstimate_(false)
+{}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::Field<Foam::spatialVector>
-Foam::addedMassRigidBodyMeshMotion::fluidLoads(const scalar ramp) const
+void Foam::addedMassCoupling::updateAddedMass(const bodies& b)
 {
-    Field<spatialVector> fx(model_.nBodies(), Zero);
-
-    forAll(bodyMeshes_, bi)
-    {
-        const label bodyID = bodyMeshes_[bi].bodyID_;
-
-        dictionary forcesDict;
-        forcesDict.add("type", functionObjects::forces::typeName);
-        forcesDict.add("patches", bodyMeshes_[bi].patches_);
-        forcesDict.add("rhoInf", rhoInf_);
-        forcesDict.add("rho", rhoName_);
-        forcesDict.add("CofR", vector::zero);
-
-        functionObjects::forces f("forces", db(), forcesDict);
-        #if OPENFOAM >= 2206
-        f.calcForcesMoments();
-        #else
-        f.calcForcesMoment();
-        #endif
-
-        fx[bodyID] = ramp*spatialVector(f.momentEff(), f.forceEff());
-    }
-
-    return fx;
-}
-
-
-Foam::tensorField Foam::addedMassRigidBodyMeshMotion::bodyAxes() const
-{
-    tensorField E(bodyMeshes_.size());
-
-    forAll(bodyMeshes_, bi)
-    {
-        E[bi] = model_.X0(bodyMeshes_[bi].bodyID_).E();
-    }
-
-    return E;
-}
-
-
-void Foam::addedMassRigidBodyMeshMotion::updateAddedMass()
-{
-    const tensorField E(bodyAxes());
+    const tensorField E(b.axes());
 
     // From a state file without the body-axes matrix: the matrix in use,
     // in the axes of the state's orientation, which is this step's start
@@ -70,10 +50,10 @@ void Foam::addedMassRigidBodyMeshMotion::updateAddedMass()
     if
     (
         Mbody_.m() == 0
-     || mesh().time().timeIndex() % addedMassInterval_ == 0
+     || mesh_.time().timeIndex() % addedMassInterval_ == 0
     )
     {
-        M_ = addedMassEstimate_->matrix(origins_);
+        M_ = estimate_->matrix(origins_);
         Mbody_ = rigidBodyAddedMass::rotate(M_, E);
         newEstimate_ = true;
     }
@@ -85,9 +65,10 @@ void Foam::addedMassRigidBodyMeshMotion::updateAddedMass()
 }
 
 
-void Foam::addedMassRigidBodyMeshMotion::readAddedMass
+void Foam::addedMassCoupling::readState
 (
-    const dictionary& state
+    const dictionary& state,
+    const label nBodies
 )
 {
     const word key
@@ -103,13 +84,13 @@ void Foam::addedMassRigidBodyMeshMotion::readAddedMass
         return;
     }
 
-    if (M.m() != 6*bodyMeshes_.size())
+    if (M.m() != 6*nBodies)
     {
         FatalIOErrorInFunction(state)
-            << "addedMassRigidBodyMotion: the state's added-mass matrix '"
+            << solverType_ << ": the state's added-mass matrix '"
             << key << "' has " << M.m() << " rows, "
-            << 6*bodyMeshes_.size() << " expected (6 for each of the "
-            << bodyMeshes_.size() << " bodies with patches): the state was"
+            << 6*nBodies << " expected (6 for each of the "
+            << nBodies << " bodies with patches): the state was"
             << " written for other bodies" << exit(FatalIOError);
     }
 
@@ -124,81 +105,23 @@ void Foam::addedMassRigidBodyMeshMotion::readAddedMass
 }
 
 
-Foam::scalarField
-Foam::addedMassRigidBodyMeshMotion::bodyAccelerations() const
-{
-    scalarField c(6*bodyMeshes_.size());
-
-    forAll(bodyMeshes_, bi)
-    {
-        const label bodyID = bodyMeshes_[bi].bodyID_;
-        const spatialTransform X0(model_.X0(bodyID));
-
-        // Angular acceleration and acceleration of the body's origin, in
-        // global axes (OpenFOAM's a() carries -g: the base accelerates up)
-        const spatialVector a
-        (
-            spatialTransform(X0.E().T(), Zero) & model_.a(bodyID)
-        );
-        const vector linear(a.l() + (a.w() ^ (origins_[bi] - X0.r())));
-
-        for (direction r = 0; r < 3; ++r)
-        {
-            c[6*bi + r] = a.w()[r];
-            c[6*bi + 3 + r] = linear[r];
-        }
-    }
-
-    return c;
-}
-
-
-Foam::scalarField Foam::addedMassRigidBodyMeshMotion::solveWith
+Foam::label Foam::addedMassCoupling::coupledSolve
 (
-    const RBD::rigidBodyModelState& start,
-    const Field<spatialVector>& fx,
-    const scalarField& fAdd
-)
-{
-    Field<spatialVector> f(fx);
-
-    forAll(bodyMeshes_, bi)
-    {
-        const vector moment(fAdd[6*bi], fAdd[6*bi + 1], fAdd[6*bi + 2]);
-        const vector force(fAdd[6*bi + 3], fAdd[6*bi + 4], fAdd[6*bi + 5]);
-
-        // OpenFOAM's loads are about the global origin
-        f[bodyMeshes_[bi].bodyID_] +=
-            spatialVector(moment + (origins_[bi] ^ force), force);
-    }
-
-    // The restraints read the bodies' kinematics from the model's cache of
-    // the last solve, not from the state: bring both back to the start
-    const Time& t = mesh().time();
-    model_.state() = start;
-    model_.forwardDynamicsCorrection(start);
-    model_.solve
-    (
-        t.value(),
-        t.deltaTValue(),
-        scalarField(model_.nDoF(), Zero),
-        f
-    );
-
-    return bodyAccelerations();
-}
-
-
-Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
-(
-    const Field<spatialVector>& fx,
+    bodies& b,
     const scalar ramp,
     const scalarField& c0,
     scalar& newtonResidual
 )
 {
     const label n = c0.size();
-    const RBD::rigidBodyModelState start(model_.state());
+    b.saveState();
+
+    // Accelerations from the saved state with the fluid loads plus f
+    auto solveWith = [&](const scalarField& f)
+    {
+        b.solveWith(origins_, f);
+        return b.accelerations(origins_);
+    };
 
     // The load answering a change of acceleration from c0: -ramp M (c - c0)
     auto addedLoad = [&](const scalarField& c)
@@ -214,22 +137,21 @@ Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
         return f;
     };
 
-    const scalarField cFree(solveWith(start, fx, scalarField(n, Zero)));
+    const scalarField cFree(solveWith(scalarField(n, Zero)));
 
     // D = dC/df, the solver's acceleration response to a load, column by
     // column; a load step of 1e-4 of the body's weight (or of its weight
     // times its radius of gyration for a moment), with its added mass
-    const scalar gMag = max(mag(model_.g()), scalar(1));
+    const scalar gMag = max(mag(b.g()), scalar(1));
     scalarSquareMatrix D(n, Zero);
-    forAll(bodyMeshes_, bi)
+    for (label bi = 0; bi < b.size(); ++bi)
     {
-        const label bodyID = bodyMeshes_[bi].bodyID_;
         const scalar mEff =
-            model_.I(bodyID).m()
+            b.mass(bi)
           + max(M_(6*bi + 3, 6*bi + 3), max(M_(6*bi + 4, 6*bi + 4),
                 M_(6*bi + 5, 6*bi + 5)));
         const scalar IEff =
-            tr(model_.I(bodyID).Ic())/3
+            b.inertiaTrace(bi)/3
           + max(M_(6*bi, 6*bi), max(M_(6*bi + 1, 6*bi + 1),
                 M_(6*bi + 2, 6*bi + 2)));
         const scalar gyration = sqrt(IEff/max(mEff, VSMALL));
@@ -242,7 +164,7 @@ Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
 
             scalarField f(n, Zero);
             f[j] = step;
-            const scalarField c(solveWith(start, fx, f));
+            const scalarField c(solveWith(f));
             for (label i = 0; i < n; ++i)
             {
                 D(i, j) = (c[i] - cFree[i])/step;
@@ -281,7 +203,7 @@ Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
         LUBacksubstitute(J, pivots, delta);
         c += delta;
 
-        R = c - solveWith(start, fx, addedLoad(c));
+        R = c - solveWith(addedLoad(c));
 
         newtonResidual = max(mag(R))/scale;
         if (newtonResidual < tolerance_)
@@ -294,8 +216,9 @@ Foam::label Foam::addedMassRigidBodyMeshMotion::coupledSolve
 }
 
 
-Foam::scalar Foam::addedMassRigidBodyMeshMotion::couplingResidual
+Foam::scalar Foam::addedMassCoupling::couplingResidual
 (
+    const bodies& b,
     const scalarField& c0,
     const scalarField& c
 ) const
@@ -303,11 +226,13 @@ Foam::scalar Foam::addedMassRigidBodyMeshMotion::couplingResidual
     scalar change2 = 0;
     scalar size2 = 0;
 
-    forAll(bodyMeshes_, bi)
+    const vector offset(b.accelerationOffset());
+    const scalar gMag = mag(b.g());
+
+    for (label bi = 0; bi < b.size(); ++bi)
     {
-        const label bodyID = bodyMeshes_[bi].bodyID_;
-        const scalar m = max(model_.I(bodyID).m(), VSMALL);
-        const scalar gyration = sqrt(tr(model_.I(bodyID).Ic())/(3*m));
+        const scalar m = max(b.mass(bi), VSMALL);
+        const scalar gyration = sqrt(b.inertiaTrace(bi)/(3*m));
 
         for (direction r = 0; r < 3; ++r)
         {
@@ -315,24 +240,25 @@ Foam::scalar Foam::addedMassRigidBodyMeshMotion::couplingResidual
             const label l = 6*bi + 3 + r;
             change2 +=
                 sqr(gyration*(c[w] - c0[w])) + sqr(c[l] - c0[l]);
-            // the true acceleration: OpenFOAM's carries -g
+            // the true acceleration
             size2 +=
-                sqr(gyration*c[w]) + sqr(c[l] + model_.g()[r]);
+                sqr(gyration*c[w]) + sqr(c[l] - offset[r]);
         }
     }
 
-    return sqrt(change2)/(sqrt(size2) + 0.01*mag(model_.g()) + VSMALL);
+    return sqrt(change2)/(sqrt(size2) + 0.01*gMag + VSMALL);
 }
 
 
-void Foam::addedMassRigidBodyMeshMotion::reportResidual
+void Foam::addedMassCoupling::reportResidual
 (
+    const bodies& b,
     const scalar r,
     const scalar newtonResidual,
     const label nIter
 )
 {
-    const fvMesh& fvm = refCast<const fvMesh>(mesh());
+    const fvMesh& fvm = mesh_;
 
     if (!residualField_.valid())
     {
@@ -384,9 +310,9 @@ void Foam::addedMassRigidBodyMeshMotion::reportResidual
         );
     }
 
-    if (model_.report())
+    if (b.report())
     {
-        Info<< typeName << ": outer corrector " << corrector_
+        Info<< solverType_ << ": outer corrector " << corrector_
             << ", coupling residual " << r;
         if (addedMass_)
         {
@@ -396,9 +322,9 @@ void Foam::addedMassRigidBodyMeshMotion::reportResidual
             {
                 newEstimate_ = false;
                 // The added masses of this step, body by body
-                forAll(bodyMeshes_, bi)
+                for (label bi = 0; bi < b.size(); ++bi)
                 {
-                    Info<< nl << "    added mass of " << bodyMeshes_[bi].name_
+                    Info<< nl << "    added mass of " << b.name(bi)
                         << ": rotation (" << M_(6*bi, 6*bi) << ' '
                         << M_(6*bi + 1, 6*bi + 1) << ' '
                         << M_(6*bi + 2, 6*bi + 2) << ") kg m^2,"
@@ -410,6 +336,163 @@ void Foam::addedMassRigidBodyMeshMotion::reportResidual
         }
         Info<< endl;
     }
+}
+
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::dictionary& Foam::addedMassCoupling::checkedRestart
+(
+    const Time& runTime,
+    const dictionary& coeffs,
+    const fileName& stateFile,
+    const wordList& stateEntries,
+    const string& what
+)
+{
+    if (!restartFiles::restarted(runTime, runTime.timeName()))
+    {
+        return coeffs;
+    }
+
+    // The coupling's entries are checked later (read)
+    wordList entries(stateEntries);
+    if
+    (
+        !coeffs.getOrDefault<bool>("test", false)
+     && (
+            !coeffs.isDict("coupling")
+         || coeffs.subDict("coupling").getOrDefault<Switch>("addedMass", true)
+        )
+    )
+    {
+        entries.append("addedMass");
+    }
+
+    restartFiles::require
+    (
+        runTime,
+        runTime.timeName(),
+        stateFile,
+        entries,
+        what
+    );
+
+    return coeffs;
+}
+
+
+void Foam::addedMassCoupling::setPatches
+(
+    const List<labelHashSet>& bodyPatches,
+    const word& rhoName,
+    const scalar rhoInf
+)
+{
+    estimate_.reset
+    (
+        new rigidBodyAddedMass(mesh_, bodyPatches, pName_, rhoName, rhoInf)
+    );
+}
+
+
+void Foam::addedMassCoupling::writeState(dictionary& state) const
+{
+    // The added mass in use (global axes) and the last estimate in the
+    // bodies' axes, from which a restart between two estimates goes on
+    if (addedMass_ && M_.m())
+    {
+        state.add("addedMass", M_);
+    }
+    if (addedMass_ && Mbody_.m())
+    {
+        state.add("addedMassBody", Mbody_);
+    }
+}
+
+
+void Foam::addedMassCoupling::writeStateFile
+(
+    const word& name,
+    const dictionary& motionState,
+    const string& what
+) const
+{
+    IOdictionary dict
+    (
+        IOobject
+        (
+            name,
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    dict.merge(motionState);
+    writeState(dict);
+
+    // ASCII, to a temporary file renamed over the state file: a kill
+    // leaves the old file or the new one, never half of it
+    if (!restartFiles::write(dict))
+    {
+        FatalErrorInFunction
+            << "cannot write the " << what.c_str() << " to "
+            << dict.objectPath() << " (disk full?)" << exit(FatalError);
+    }
+}
+
+
+void Foam::addedMassCoupling::writeState(Ostream& os) const
+{
+    dictionary state;
+    writeState(state);
+    for (const entry& e : state)
+    {
+        e.write(os);
+    }
+}
+
+
+void Foam::addedMassCoupling::correct(bodies& b, const scalar ramp)
+{
+    ++corrector_;
+
+    // The accelerations the fluid of the last corrector moved with, at the
+    // origins of the step's start
+    if (corrector_ == 1 || origins_.empty())
+    {
+        origins_ = b.origins();
+    }
+    const scalarField c0(b.accelerations(origins_));
+
+    scalar newtonResidual = 0;
+    label nNewton = 0;
+
+    if (addedMass_)
+    {
+        if (corrector_ == 1 || M_.m() == 0)
+        {
+            updateAddedMass(b);
+        }
+        nNewton = coupledSolve(b, ramp, c0, newtonResidual);
+    }
+    else
+    {
+        b.solveFluidLoads();
+    }
+
+    reportResidual
+    (
+        b,
+        couplingResidual(b, c0, b.accelerations(origins_)),
+        newtonResidual,
+        nNewton
+    );
 }
 
 

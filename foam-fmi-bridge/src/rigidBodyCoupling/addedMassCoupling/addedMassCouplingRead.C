@@ -3,14 +3,15 @@
 // (see LICENSE at the project's top).
 /*---------------------------------------------------------------------------*\
 Description
-    The dictionary of addedMassRigidBodyMeshMotion, read strictly. A
+    The coupling dictionary of addedMassCoupling and the coefficients
+    around it, read strictly. A
     misspelt keyword would silently keep a default (a 'tolerence' the
     Newton iterations never see), so:
 
       - the coupling sub-dictionary holds its own entries, each of its
         type: any other entry, or one of another type, is a FatalIOError
         that lists the valid entries or says what is expected;
-      - the coefficients hold OpenFOAM's rigidBodyMotion entries, the
+      - the coefficients hold the motion's OpenFOAM entries, the
         coupling (a dictionary) and the user's own entries for $-expansion
         (the tutorials keep a restraint's parameters there): an entry that
         is a coupling entry out of its place, or that differs from one of
@@ -20,7 +21,7 @@ Description
         the valid ones.
 \*---------------------------------------------------------------------------*/
 
-#include "addedMassRigidBodyMeshMotion.H"
+#include "addedMassCoupling.H"
 #include "Switch.H"
 
 #include <cctype>
@@ -31,25 +32,9 @@ Description
 namespace
 {
 
-//- OpenFOAM v1912's rigidBodyMotion entries at the coefficients' level:
-//  read by rigidBodyMeshMotion (test, nIter, rho, ramp, bodies; rampCoeffs
-//  for the Function1's older form; rhoInf, which v1912 reads from the top
-//  level of dynamicMeshDict and this solver from the coefficients first),
-//  rigidBodyModel (bodies,
-//  restraints), rigidBodyMotion (solver, g, accelerationRelaxation,
-//  accelerationDamping, report) and rigidBodyModelState (q, qDot, qDdot,
-//  t, deltaT: the initial state when no state file is read)
-const Foam::wordList openFoamEntries
-({
-    "bodies", "restraints", "solver", "g", "report",
-    "accelerationRelaxation", "accelerationDamping", "test", "nIter",
-    "rho", "rhoInf", "ramp", "rampCoeffs", "q", "qDot", "qDdot", "t",
-    "deltaT"
-});
-
 //- dynamicMeshDict's own entries, when the coefficients are its top level
-//  (no addedMassRigidBodyMotionCoeffs: motionSolver::coeffDict), besides
-//  other solvers' <type>Coeffs
+//  (no <type>Coeffs: motionSolver::coeffDict), besides other solvers'
+//  <type>Coeffs
 const Foam::wordList meshDictEntries
 ({
     "dynamicFvMesh", "motionSolverLibs", "motionSolver"
@@ -133,6 +118,7 @@ bool isCoeffs(const Foam::word& key)
 //  expects when it is a dictionary or not one token
 const Foam::token& oneToken
 (
+    const Foam::word& solverType,
     const Foam::dictionary& dict,
     const Foam::word& key,
     const char* expected
@@ -144,7 +130,7 @@ const Foam::token& oneToken
     if (!e->isStream() || e->stream().size() != 1)
     {
         FatalIOErrorInFunction(dict)
-            << "addedMassRigidBodyMotion: coupling entry '" << key
+            << solverType << ": coupling entry '" << key
             << "' expects " << expected << ", got "
             << (e->isStream() ? "several tokens" : "a dictionary")
             << exit(FatalIOError);
@@ -156,6 +142,7 @@ const Foam::token& oneToken
 //- FatalIOError: the entry holds a token of the wrong kind
 void wrongType
 (
+    const Foam::word& solverType,
     const Foam::dictionary& dict,
     const Foam::word& key,
     const char* expected,
@@ -163,7 +150,7 @@ void wrongType
 )
 {
     FatalIOErrorInFunction(dict)
-        << "addedMassRigidBodyMotion: coupling entry '" << key
+        << solverType << ": coupling entry '" << key
         << "' expects " << expected << ", got '" << tok << "'"
         << Foam::exit(Foam::FatalIOError);
 }
@@ -175,6 +162,7 @@ void wrongType
 template<class Type, class Accepts, class Value>
 Type couplingEntry
 (
+    const Foam::word& solverType,
     const Foam::dictionary& dict,
     const Foam::word& key,
     const Type& deflt,
@@ -187,10 +175,10 @@ Type couplingEntry
     {
         return deflt;
     }
-    const Foam::token& tok = oneToken(dict, key, expected);
+    const Foam::token& tok = oneToken(solverType, dict, key, expected);
     if (!accepts(tok))
     {
-        wrongType(dict, key, expected, tok);
+        wrongType(solverType, dict, key, expected, tok);
     }
     return value(tok);
 }
@@ -221,25 +209,23 @@ bool isSwitch(const Foam::token& tok)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
+void Foam::addedMassCoupling::checkEntries
+(
+    const dictionary& coeffs,
+    const word& openFoamName,
+    const wordList& openFoamEntries,
+    const wordList& otherEntries,
+    const bool otherCoeffs
+) const
 {
-    const dictionary& coeffs = coeffDict();
-
-    // Without addedMassRigidBodyMotionCoeffs the coefficients are
-    // dynamicMeshDict itself
-    const bool topLevel = !dictionary::found(word(typeName + "Coeffs"));
-
     wordList known(openFoamEntries);
     known.append("coupling");
-    if (topLevel)
-    {
-        known.append(meshDictEntries);
-    }
+    known.append(otherEntries);
 
     for (const entry& e : coeffs)
     {
         const word& key = e.keyword();
-        if (known.found(key) || (topLevel && isCoeffs(key)))
+        if (known.found(key) || (otherCoeffs && isCoeffs(key)))
         {
             continue;
         }
@@ -254,7 +240,7 @@ void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
         }
 
         FatalIOErrorInFunction(coeffs)
-            << "addedMassRigidBodyMotion: unknown entry '" << key << "'";
+            << solverType_ << ": unknown entry '" << key << "'";
         if (couplingEntries.found(key))
         {
             FatalIOError
@@ -272,7 +258,7 @@ void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
                 << "', in the coupling sub-dictionary?)";
         }
         FatalIOError
-            << ". The entries are OpenFOAM's rigidBodyMotion's ("
+            << ". The entries are OpenFOAM's " << openFoamName << "'s ("
             << listed(openFoamEntries).c_str() << ") and coupling, a"
             << " dictionary of " << listed(couplingEntries).c_str()
             << exit(FatalIOError);
@@ -281,7 +267,7 @@ void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
     if (coeffs.found("coupling", keyType::LITERAL) && !coeffs.isDict("coupling"))
     {
         FatalIOErrorInFunction(coeffs)
-            << "addedMassRigidBodyMotion: entry 'coupling' must be a"
+            << solverType_ << ": entry 'coupling' must be a"
             << " dictionary of " << listed(couplingEntries).c_str()
             << ", e.g. coupling { addedMass on; addedMassInterval 10; }"
             << exit(FatalIOError);
@@ -292,7 +278,7 @@ void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
         if (!couplingEntries.found(e.keyword()))
         {
             FatalIOErrorInFunction(coeffs.subDict("coupling"))
-                << "addedMassRigidBodyMotion: unknown coupling entry '"
+                << solverType_ << ": unknown coupling entry '"
                 << e.keyword() << "'; the entries of coupling are "
                 << listed(couplingEntries).c_str() << exit(FatalIOError);
         }
@@ -300,11 +286,21 @@ void Foam::addedMassRigidBodyMeshMotion::checkEntries() const
 }
 
 
-void Foam::addedMassRigidBodyMeshMotion::readCoupling()
+void Foam::addedMassCoupling::read
+(
+    const dictionary& coeffs,
+    const word& openFoamName,
+    const wordList& openFoamEntries,
+    const wordList& otherEntries,
+    const bool otherCoeffs
+)
 {
-    checkEntries();
+    checkEntries
+    (
+        coeffs, openFoamName, openFoamEntries, otherEntries, otherCoeffs
+    );
 
-    const dictionary& dict = coeffDict().subOrEmptyDict("coupling");
+    const dictionary& dict = coeffs.subOrEmptyDict("coupling");
 
     const auto isWord = [](const token& t) { return t.isWord(); };
     const auto isLabel = [](const token& t) { return t.isLabel(); };
@@ -315,29 +311,32 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
 
     addedMass_ = couplingEntry<bool>
     (
-        dict, "addedMass", true, "a switch (on/off, true/false, yes/no)",
-        isSwitch, [](const token& t) { return bool(switchOf(t)); }
+        solverType_, dict, "addedMass", true,
+        "a switch (on/off, true/false, yes/no)", isSwitch,
+        [](const token& t) { return bool(switchOf(t)); }
     );
     pName_ = couplingEntry<word>
     (
-        dict, "pressure", "p_rgh", "the pressure field's name",
+        solverType_, dict, "pressure", "p_rgh", "the pressure field's name",
         isWord, wordOf
     );
     residualName_ = couplingEntry<word>
     (
-        dict, "residual", "rigidBodyCoupling", "a field name", isWord, wordOf
+        solverType_, dict, "residual", defaultResidual_, "a field name",
+        isWord, wordOf
     );
     maxIter_ = couplingEntry<label>
     (
-        dict, "maxIter", 10, "an integer", isLabel, labelOf
+        solverType_, dict, "maxIter", 10, "an integer", isLabel, labelOf
     );
     addedMassInterval_ = couplingEntry<label>
     (
-        dict, "addedMassInterval", 10, "an integer", isLabel, labelOf
+        solverType_, dict, "addedMassInterval", 10, "an integer", isLabel,
+        labelOf
     );
     tolerance_ = couplingEntry<scalar>
     (
-        dict, "tolerance", 1e-9, "a number", isNumber, numberOf
+        solverType_, dict, "tolerance", 1e-9, "a number", isNumber, numberOf
     );
 
     if (maxIter_ < 1)
@@ -360,13 +359,13 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
             << " the Newton iterations must be in (0, 1)"
             << exit(FatalIOError);
     }
-    if (addedMass_ && coeffDict().found("accelerationRelaxation"))
+    if (addedMass_ && coeffs.found("accelerationRelaxation"))
     {
         const scalar aRelax =
-            coeffDict().get<scalar>("accelerationRelaxation");
+            coeffs.get<scalar>("accelerationRelaxation");
         if (aRelax != 1)
         {
-            FatalIOErrorInFunction(coeffDict())
+            FatalIOErrorInFunction(coeffs)
                 << "accelerationRelaxation " << aRelax << " with the"
                 << " added-mass coupling: the coupling converges without"
                 << " relaxation, which would only slow it down; remove the"
@@ -374,6 +373,29 @@ void Foam::addedMassRigidBodyMeshMotion::readCoupling()
                 << " OpenFOAM's relaxed coupling)" << exit(FatalIOError);
         }
     }
+}
+
+
+
+void Foam::addedMassCoupling::readSolver
+(
+    const dictionary& solverDict,
+    const dictionary& coeffs,
+    const word& openFoamName,
+    const wordList& openFoamEntries
+)
+{
+    const bool topLevel =
+        !solverDict.found(word(solverType_ + "Coeffs"));
+
+    read
+    (
+        coeffs,
+        openFoamName,
+        openFoamEntries,
+        topLevel ? meshDictEntries : wordList(),
+        topLevel
+    );
 }
 
 

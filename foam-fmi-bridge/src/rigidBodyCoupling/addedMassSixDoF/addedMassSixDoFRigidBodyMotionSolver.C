@@ -1,0 +1,316 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
+/*---------------------------------------------------------------------------*\
+    The construction, mesh morphing and state I/O follow OpenFOAM v1912's
+    sixDoFRigidBodyMotionSolver (src/sixDoFRigidBodyMotion, GPL v3, OpenCFD
+    Ltd. and the OpenFOAM Foundation); solve() adds the added-mass coupling.
+\*---------------------------------------------------------------------------*/
+
+#include "addedMassSixDoFRigidBodyMotionSolver.H"
+#include "addToRunTimeSelectionTable.H"
+#include "polyMesh.H"
+#include "fvMesh.H"
+#include "bodyMorphing.H"
+#include "pointConstraints.H"
+#include "uniformDimensionedFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(addedMassSixDoFRigidBodyMotionSolver, 0);
+
+    addToRunTimeSelectionTable
+    (
+        motionSolver,
+        addedMassSixDoFRigidBodyMotionSolver,
+        dictionary
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- OpenFOAM v1912's sixDoFRigidBodyMotion entries at the coefficients'
+//  level: read by sixDoFRigidBodyMotionSolver (patches, innerDistance,
+//  outerDistance, test, rho, rhoInf, CofGvelocity, g), sixDoFRigidBodyMotion
+//  (mass, centreOfMass, initialCentreOfMass, momentOfInertia, orientation,
+//  initialOrientation, report, solver, restraints, constraints,
+//  accelerationRelaxation, accelerationDamping) and its state (the
+//  initial state when no state file is read)
+const Foam::wordList openFoamEntries
+({
+    "patches", "innerDistance", "outerDistance", "test", "rho", "rhoInf",
+    "CofGvelocity", "g", "mass", "centreOfMass", "initialCentreOfMass",
+    "momentOfInertia", "orientation", "initialOrientation", "report",
+    "solver", "restraints", "constraints", "accelerationRelaxation",
+    "accelerationDamping", "centreOfRotation", "velocity", "acceleration",
+    "angularMomentum", "torque"
+});
+
+//- The state file of a time, uniform/sixDoFRigidBodyMotionState
+Foam::IOobject stateIO(const Foam::polyMesh& mesh)
+{
+    return Foam::IOobject
+    (
+        "sixDoFRigidBodyMotionState",
+        mesh.time().timeName(),
+        "uniform",
+        mesh,
+        Foam::IOobject::READ_IF_PRESENT,
+        Foam::IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+//- The entries of the motion's state file
+const Foam::wordList stateEntries
+({
+    "centreOfRotation", "orientation", "velocity", "acceleration",
+    "angularMomentum", "torque"
+});
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::addedMassSixDoFRigidBodyMotionSolver::readCoupling()
+{
+    coupling_.readSolver
+    (
+        *this,
+        coeffDict(),
+        "sixDoFRigidBodyMotion",
+        openFoamEntries
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::addedMassSixDoFRigidBodyMotionSolver::
+addedMassSixDoFRigidBodyMotionSolver
+(
+    const polyMesh& mesh,
+    const IOdictionary& dict
+)
+:
+    displacementMotionSolver(mesh, dict, typeName),
+    motion_
+    (
+        addedMassCoupling::checkedRestart
+        (
+            mesh.time(),
+            coeffDict(),
+            fileName("uniform")/"sixDoFRigidBodyMotionState",
+            stateEntries,
+            "the six-DoF state of addedMassSixDoFRigidBodyMotion"
+        ),
+        stateIO(mesh).typeHeaderOk<IOdictionary>(true)
+      ? IOdictionary(stateIO(mesh))
+      : coeffDict(),
+        mesh.time()
+    ),
+    patches_(coeffDict().get<wordRes>("patches")),
+    patchSet_(mesh.boundaryMesh().patchSet(patches_)),
+    di_(coeffDict().get<scalar>("innerDistance")),
+    do_(coeffDict().get<scalar>("outerDistance")),
+    test_(coeffDict().lookupOrDefault("test", false)),
+    rhoInf_(1.0),
+    rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
+    scale_
+    (
+        IOobject
+        (
+            "motionScale",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        pointMesh::New(mesh),
+        dimensionedScalar(dimless, Zero)
+    ),
+    curTimeIndex_(-1),
+    CofGvelocity_(coeffDict().lookupOrDefault<word>("CofGvelocity", "none")),
+    body_(motion_, typeName),
+    coupling_(typeName, refCast<const fvMesh>(mesh))
+{
+    readCoupling();
+
+    if (rhoName_ == "rhoInf")
+    {
+        coeffDict().readEntry("rhoInf", rhoInf_);
+    }
+
+    if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
+    {
+        coupling_.readState(IOdictionary(stateIO(mesh)), 1);
+    }
+    coupling_.setPatches
+    (
+        List<labelHashSet>(1, patchSet_),
+        rhoName_,
+        rhoInf_
+    );
+
+    bodyMorphing::weights(scale_, patchSet_, points0(), di_, do_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::pointField>
+Foam::addedMassSixDoFRigidBodyMotionSolver::curPoints() const
+{
+    tmp<pointField> newPoints
+    (
+        points0() + pointDisplacement_.primitiveField()
+    );
+
+    if (!moveAllCells())
+    {
+        tmp<pointField> ttransformedPts(new pointField(mesh().points()));
+        pointField& transformedPts = ttransformedPts.ref();
+
+        UIndirectList<point>(transformedPts, pointIDs()) =
+            pointField(newPoints.ref(), pointIDs());
+
+        return ttransformedPts;
+    }
+
+    return newPoints;
+}
+
+
+void Foam::addedMassSixDoFRigidBodyMotionSolver::solve()
+{
+    const Time& t = mesh().time();
+
+    if (mesh().nPoints() != points0().size())
+    {
+        FatalErrorInFunction
+            << "The number of points in the mesh seems to have changed." << endl
+            << "In constant/polyMesh there are " << points0().size()
+            << " points; in the current mesh there are " << mesh().nPoints()
+            << " points." << exit(FatalError);
+    }
+
+    // Store the motion state at the beginning of the time-step
+    bool firstIter = false;
+    if (curTimeIndex_ != t.timeIndex())
+    {
+        body_.newTime();
+        coupling_.newTime();
+        curTimeIndex_ = t.timeIndex();
+        firstIter = true;
+    }
+
+    dimensionedVector g("g", dimAcceleration, Zero);
+
+    if (t.foundObject<uniformDimensionedVectorField>("g"))
+    {
+        g = t.lookupObject<uniformDimensionedVectorField>("g");
+    }
+    else
+    {
+        coeffDict().readIfPresent("g", g);
+    }
+
+    if (test_)
+    {
+        body_.setLoads(Zero, Zero, g.value(), firstIter);
+        body_.solveFluidLoads();
+    }
+    else
+    {
+        body_.setFluidLoads
+        (
+            db(),
+            patches_,
+            rhoName_,
+            rhoInf_,
+            g.value(),
+            firstIter
+        );
+        coupling_.correct(body_, 1);
+        if (coupling_.addedMass())
+        {
+            body_.reportSolve();
+        }
+
+        if (CofGvelocity_ != "none")
+        {
+            if (t.foundObject<uniformDimensionedVectorField>(CofGvelocity_))
+            {
+                t.lookupObjectRef<uniformDimensionedVectorField>
+                (
+                    CofGvelocity_
+                ) = motion_.v();
+            }
+        }
+    }
+
+    // Update the displacements
+    pointDisplacement_.primitiveFieldRef() =
+        motion_.transform(points0(), scale_) - points0();
+
+    // Displacement has changed. Update boundary conditions
+    pointConstraints::New
+    (
+        pointDisplacement_.mesh()
+    ).constrainDisplacement(pointDisplacement_);
+}
+
+
+#if OPENFOAM >= 2006
+bool Foam::addedMassSixDoFRigidBodyMotionSolver::writeObject
+(
+    IOstreamOption streamOpt,
+    const bool valid
+) const
+#else
+bool Foam::addedMassSixDoFRigidBodyMotionSolver::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+#endif
+{
+    dictionary state;
+    motion_.state().write(state);
+    coupling_.writeStateFile
+    (
+        "sixDoFRigidBodyMotionState",
+        state,
+        "six-DoF state"
+    );
+
+    return true;
+}
+
+
+bool Foam::addedMassSixDoFRigidBodyMotionSolver::read()
+{
+    if (displacementMotionSolver::read())
+    {
+        motion_.read(coeffDict());
+        readCoupling();
+
+        return true;
+    }
+
+    return false;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,241 @@
+// foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
+// Free software under the GNU General Public License version 3 or later
+// (see LICENSE at the project's top).
+
+#include "sixDoFCouplingBody.H"
+#include "Time.H"
+#include "forces.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::sixDoFCouplingBody::omega
+(
+    const sixDoFRigidBodyMotionState& s
+) const
+{
+    // As sixDoFRigidBodyMotion::omega, for any state
+    return s.Q() & (inv(motion_.momentOfInertia()) & s.pi());
+}
+
+
+void Foam::sixDoFCouplingBody::update
+(
+    const vector& force,
+    const vector& moment
+)
+{
+    const Time& t = motion_.time();
+    const vector gravity(motion_.mass()*g_);
+
+    motion_.update
+    (
+        firstIter_,
+        force_ + force + gravity,
+        moment_ + moment + (motion_.momentArm() ^ gravity),
+        t.deltaTValue(),
+        t.deltaT0Value()
+    );
+    solved_ = true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::sixDoFCouplingBody::sixDoFCouplingBody
+(
+    sixDoFRigidBodyMotion& motion,
+    const word& name
+)
+:
+    motion_(motion),
+    name_(name),
+    force_(Zero),
+    moment_(Zero),
+    g_(Zero),
+    firstIter_(false),
+    state0_(motion.state()),
+    start_(motion.state()),
+    solved_(false),
+    alphaPrev_(Zero),
+    aPrev_(Zero),
+    momentAdd_(Zero),
+    forceAdd_(Zero),
+    originAdd_(Zero)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::sixDoFCouplingBody::newTime()
+{
+    if (solved_)
+    {
+        const scalar dt = motion_.time().deltaT0Value();
+        const sixDoFRigidBodyMotionState& s = motion_.state();
+        alphaPrev_ = (omega(s) - omega(state0_))/dt;
+        aPrev_ = (s.v() - state0_.v())/dt;
+    }
+
+    motion_.newTime();
+    state0_ = motion_.state();
+    solved_ = false;
+}
+
+
+void Foam::sixDoFCouplingBody::setLoads
+(
+    const vector& force,
+    const vector& moment,
+    const vector& g,
+    const bool firstIter
+)
+{
+    force_ = force;
+    moment_ = moment;
+    g_ = g;
+    firstIter_ = firstIter;
+}
+
+
+void Foam::sixDoFCouplingBody::setFluidLoads
+(
+    const objectRegistry& db,
+    const List<wordRe>& patches,
+    const word& rhoName,
+    const scalar rhoInf,
+    const vector& g,
+    const bool firstIter
+)
+{
+    dictionary forcesDict;
+
+    forcesDict.add("type", functionObjects::forces::typeName);
+    forcesDict.add("patches", patches);
+    forcesDict.add("rhoInf", rhoInf);
+    forcesDict.add("rho", rhoName);
+    forcesDict.add("CofR", motion_.centreOfRotation());
+
+    functionObjects::forces f("forces", db, forcesDict);
+    #if OPENFOAM >= 2206
+    f.calcForcesMoments();
+    #else
+    f.calcForcesMoment();
+    #endif
+
+    setLoads(f.forceEff(), f.momentEff(), g, firstIter);
+}
+
+
+void Foam::sixDoFCouplingBody::reportSolve()
+{
+    if (!motion_.report())
+    {
+        return;
+    }
+
+    const_cast<sixDoFRigidBodyMotionState&>(motion_.state()) = start_;
+    update
+    (
+        forceAdd_,
+        momentAdd_ + ((originAdd_ - motion_.centreOfRotation()) ^ forceAdd_)
+    );
+}
+
+
+Foam::List<Foam::vector> Foam::sixDoFCouplingBody::origins() const
+{
+    return List<vector>(1, motion_.centreOfRotation());
+}
+
+
+Foam::tensorField Foam::sixDoFCouplingBody::axes() const
+{
+    // Q takes body to global axes
+    return tensorField(1, motion_.orientation().T());
+}
+
+
+Foam::scalar Foam::sixDoFCouplingBody::mass(const label) const
+{
+    return motion_.mass();
+}
+
+
+Foam::scalar Foam::sixDoFCouplingBody::inertiaTrace(const label) const
+{
+    // About the centre of rotation, where the motion turns
+    return tr(motion_.momentOfInertia());
+}
+
+
+void Foam::sixDoFCouplingBody::saveState()
+{
+    start_ = motion_.state();
+
+    // A restraint shared with another body (sixDoFConnector) hands over, in
+    // the first solve of a round, the loads the other body's solve left;
+    // it is made here, so that every coupling solve evaluates the same
+    solveWith(List<vector>(1, motion_.centreOfRotation()), scalarField(6, 0));
+}
+
+
+void Foam::sixDoFCouplingBody::solveWith
+(
+    const List<vector>& origins,
+    const scalarField& fAdd
+)
+{
+    momentAdd_ = vector(fAdd[0], fAdd[1], fAdd[2]);
+    forceAdd_ = vector(fAdd[3], fAdd[4], fAdd[5]);
+    originAdd_ = origins[0];
+
+    // From the corrector's start: the restraints read the motion's state
+    const_cast<sixDoFRigidBodyMotionState&>(motion_.state()) = start_;
+
+    const int level = messageStream::level;
+    messageStream::level = 0;
+    update
+    (
+        forceAdd_,
+        momentAdd_ + ((originAdd_ - motion_.centreOfRotation()) ^ forceAdd_)
+    );
+    messageStream::level = level;
+}
+
+
+void Foam::sixDoFCouplingBody::solveFluidLoads()
+{
+    update(Zero, Zero);
+}
+
+
+Foam::scalarField Foam::sixDoFCouplingBody::accelerations
+(
+    const List<vector>& origins
+) const
+{
+    const sixDoFRigidBodyMotionState& s = motion_.state();
+
+    vector alpha(alphaPrev_);
+    vector a(aPrev_);
+    if (solved_)
+    {
+        const scalar dt = motion_.time().deltaTValue();
+        alpha = (omega(s) - omega(state0_))/dt;
+        a = (s.v() - state0_.v())/dt;
+    }
+
+    // Linear acceleration at the origin, rigidly with the body
+    const vector linear(a + (alpha ^ (origins[0] - s.centreOfRotation())));
+
+    scalarField c(6);
+    for (direction r = 0; r < 3; ++r)
+    {
+        c[r] = alpha[r];
+        c[3 + r] = linear[r];
+    }
+    return c;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,243 @@
+"""The added-mass coupling under sixDoFRigidBodyMotion reads its entries as
+addedMassRigidBodyMotion does, and carries the added mass through a
+restart, without a CFD solver.
+
+addedMassSixDoFRigidBodyMotion (the motion solver, one body), moved by
+moveDynamicMesh in test mode (gravity only, no fluid loads) on the box of
+test_added_mass_entries (2 x 2 x 2 cells, the bottom the body's patch):
+
+  - OpenFOAM's sixDoFRigidBodyMotion entries and the coupling run; an
+    unknown coupling entry, a misspelt keyword, a coupling entry out of its
+    place, a bad value and an accelerationRelaxation with the added mass
+    stop the run when the solver is built, with a FatalIOError naming the
+    entry;
+  - a restart reads the added mass from uniform/sixDoFRigidBodyMotionState
+    and writes it on unchanged (test mode estimates none: the matrix must
+    come from the state, digit for digit); a matrix of another size, and a
+    state without the added mass when the coupling is on, stop the restart
+    naming the entry.
+
+addedMassSixDoFRigidBodyDisplacement (the point-patch condition of
+0/pointDisplacement, mesh moved by displacementLaplacian) is built by
+moveDynamicMesh with no time step (it needs the fluid's loads to move): its
+entries are accepted and the same bad entries stop it.
+"""
+import os
+import re
+import shutil
+import sys
+import tempfile
+
+from foamfmi.bridgecase import foam_file
+from test_added_mass_entries import make_case, run
+
+SOLVER = "addedMassSixDoFRigidBodyMotion"
+STATE = os.path.join("uniform", "sixDoFRigidBodyMotionState")
+VALID_COUPLING = "addedMass, pressure, residual, addedMassInterval, maxIter, tolerance"
+
+BODY = """
+    mass 1;
+    centreOfMass (0.5 0.5 0);
+    momentOfInertia (0.1 0.1 0.1);
+    report off;
+    solver { type Newmark; }
+"""
+
+
+def solver_dict(coeffs_extra="", coupling="coupling { addedMass on; maxIter 10; }", test="yes"):
+    """dynamicMeshDict of the motion solver in test mode."""
+    return f"""
+dynamicFvMesh dynamicMotionSolverFvMesh;
+motionSolverLibs (sixDoFRigidBodyMotion foamFmiRigidBodyCoupling);
+motionSolver {SOLVER};
+{SOLVER}Coeffs
+{{
+    patches (body);
+    innerDistance 0.1;
+    outerDistance 0.6;
+    test {test};
+    rho rhoInf;
+    rhoInf 1000;
+    g (0 0 -9.81);
+    accelerationDamping 1;
+    {BODY}
+    {coupling}
+    {coeffs_extra}
+}}
+"""
+
+
+PATCH_MESH_DICT = """
+dynamicFvMesh dynamicMotionSolverFvMesh;
+motionSolverLibs (fvMotionSolvers);
+motionSolver displacementLaplacian;
+displacementLaplacianCoeffs { diffusivity uniform; }
+"""
+
+
+def patch_displacement(entries="coupling { addedMassInterval 5; }"):
+    """0/pointDisplacement with the body's point-patch condition."""
+    return f"""
+dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{{
+    body
+    {{
+        type addedMassSixDoFRigidBodyDisplacement;
+        rho rhoInf;
+        rhoInf 1000;
+        {BODY}
+        {entries}
+        value uniform (0 0 0);
+    }}
+    walls {{ type fixedValue; value uniform (0 0 0); }}
+}}
+"""
+
+
+def refused(code, log, expected):
+    """(ok, detail): a FatalIOError with every expected phrase."""
+    missing = [e for e in expected if e not in log]
+    ok = code != 0 and "FOAM FATAL IO ERROR" in log and not missing
+    return ok, f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if not ok else "")
+
+
+def ran(code, log):
+    return code == 0, f"exit code {code}" + ("" if code == 0 else "\n" + log[-2500:])
+
+
+def matrix(n, scale):
+    """An n x n matrix in OpenFOAM's form, distinct digits in every place."""
+    rows = [" ".join(f"{scale * (1 + i) + 0.001 * j:.6g}" for j in range(n)) for i in range(n)]
+    return f"{n} {n}(" + " ".join(f"({r})" for r in rows) + ")"
+
+
+def state_entry(text, key):
+    """The numbers of entry key in a state file (a matrix: its size, then its
+    rows), or None."""
+    start = text.find(key + " ")
+    if start < 0:
+        return None
+    body = text[start + len(key):text.index(";", start)]
+    return [float(x) for x in re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", body)]
+
+
+def restart_checks(work):
+    """(name, ok, detail) of restarts from the state of time 0.01."""
+    results = []
+    full = make_case(work, "full", solver_dict())
+    control = os.path.join(full, "system", "controlDict")
+    with open(control) as f:
+        text = f.read()
+    with open(control, "w") as f:
+        f.write(text.replace("writeInterval 100;", "writeInterval 1;"))
+    code, log = run(full)
+    ok, detail = ran(code, log)
+    results.append(("run to restart from", ok and os.path.exists(os.path.join(full, "0.01", STATE)),
+                    detail))
+
+    def restart(name, added, mesh_dict=solver_dict()):
+        case = os.path.join(work, name)
+        shutil.copytree(full, case)
+        shutil.rmtree(os.path.join(case, "0.02"))
+        path = os.path.join(case, "0.01", STATE)
+        with open(path) as f:
+            state = f.read()
+        with open(path, "w") as f:
+            f.write(state.replace("// *", added + "\n// *", 1) if added else state)
+        with open(os.path.join(case, "constant", "dynamicMeshDict"), "w") as f:
+            f.write(foam_file("dynamicMeshDict", mesh_dict))
+        with open(os.path.join(case, "system", "controlDict")) as f:
+            text = f.read()
+        with open(os.path.join(case, "system", "controlDict"), "w") as f:
+            f.write(text.replace("startFrom startTime;", "startFrom latestTime;"))
+        code, log = run(case)
+        return case, code, log
+
+    body_matrix = matrix(6, 10.0)
+    case, code, log = restart("addedMassBody", f"addedMassBody {body_matrix};")
+    ok, detail = ran(code, log)
+    written = os.path.join(case, "0.02", STATE)
+    if ok:
+        with open(written) as f:
+            again = state_entry(f.read(), "addedMassBody")
+        expected = state_entry(f"addedMassBody {body_matrix};", "addedMassBody")
+        # test mode estimates nothing: the state's matrix goes on unchanged,
+        # every digit (written with writePrecision 12, read back exactly)
+        same = again == expected
+        ok = same
+        detail += "" if same else f", 0.02 carries addedMassBody {again}"
+    results.append(("restart goes on with the state's added mass", ok, detail))
+
+    _, code, log = restart("wrongSize", f"addedMassBody {matrix(12, 1.0)};")
+    results.append(("a state's added mass of another size",
+                    *refused(code, log, ["addedMassBody' has 12 rows, 6 expected"])))
+
+    _, code, log = restart("withoutAddedMass", "", solver_dict(test="no"))
+    ok = code != 0 and "lacks its entry 'addedMass'" in log
+    results.append(("coupling on, state without the added mass", ok,
+                    f"exit code {code}" + ("" if ok else "\n" + log[-2500:])))
+    return results
+
+
+def main():
+    work = tempfile.mkdtemp(prefix="sixDoFAddedMass.")
+    libs = 'libs ("libfoamFmiRigidBodyCoupling.so");\n'
+    solver_cases = [
+        ("valid", solver_dict(), None),
+        ("userEntriesForExpansion", solver_dict(coeffs_extra="springParameters { k 10; }"), None),
+        ("couplingTypos", solver_dict(coupling="coupling { maxIters 0; tolerence 7; }"),
+         [f"{SOLVER}: unknown coupling entry 'maxIters'", VALID_COUPLING]),
+        ("misspeltCoupling", solver_dict(coupling="couplng { addedMass on; }"),
+         ["unknown entry 'couplng'", "OpenFOAM's sixDoFRigidBodyMotion's", "innerDistance",
+          VALID_COUPLING]),
+        ("misspeltOpenFoamEntry", solver_dict(coeffs_extra="momentOfInertai (1 1 1);"),
+         ["unknown entry 'momentOfInertai'", "did you mean 'momentOfInertia'"]),
+        ("couplingEntryAtTopLevel", solver_dict(coeffs_extra="addedMassInterval 5;"),
+         ["unknown entry 'addedMassInterval'", "belongs in the coupling sub-dictionary"]),
+        ("maxIterZero", solver_dict(coupling="coupling { maxIter 0; }"),
+         ["maxIter = 0", "at least one Newton iteration"]),
+        ("wordTolerance", solver_dict(coupling="coupling { tolerance small; }"),
+         ["coupling entry 'tolerance' expects a number, got 'small'"]),
+        ("relaxation", solver_dict(coeffs_extra="accelerationRelaxation 0.5;"),
+         ["accelerationRelaxation 0.5 with the added-mass coupling"]),
+    ]
+    patch_cases = [
+        ("patchValid", patch_displacement(), None),
+        ("patchCouplingTypos", patch_displacement("coupling { addedMassInteval 5; }"),
+         ["unknown coupling entry 'addedMassInteval'", VALID_COUPLING]),
+        ("patchMisspelt", patch_displacement("momentOfInertai (1 1 1);"),
+         ["unknown entry 'momentOfInertai'", "did you mean 'momentOfInertia'",
+          "OpenFOAM's sixDoFRigidBodyDisplacement's"]),
+        ("patchRelaxation", patch_displacement("accelerationRelaxation 0.7;"),
+         ["accelerationRelaxation 0.7 with the added-mass coupling"]),
+        ("patchTolerance", patch_displacement("coupling { tolerance 2; }"),
+         ["tolerance = 2", "must be in (0, 1)"]),
+    ]
+    results = []
+    try:
+        for name, text, expected in solver_cases:
+            code, log = run(make_case(work, name, text))
+            results.append((name, *(ran(code, log) if expected is None
+                                    else refused(code, log, expected))))
+        for name, text, expected in patch_cases:
+            # no time step: the condition is built, and moves only with a fluid
+            code, log = run(make_case(work, name, PATCH_MESH_DICT, text, end_time="0",
+                                      libs=libs))
+            results.append((name, *(ran(code, log) if expected is None
+                                    else refused(code, log, expected))))
+        results.extend(restart_checks(work))
+    finally:
+        if os.environ.get("KEEP_CASES") != "1":
+            shutil.rmtree(work, ignore_errors=True)
+    failures = 0
+    for name, ok, detail in results:
+        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
+        failures += 0 if ok else 1
+    print(f"{len(results) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
