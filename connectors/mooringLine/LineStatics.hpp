@@ -130,9 +130,10 @@ struct StartSegment {
     Vector3 pull = Vector3::Zero();
 };
 
-//- The segments of the node positions r0 (0..N) into `segments`
+//- The segments of the node positions r0 (0..N), f0 = nodeForces there
+//  (its segment lengths and unit vectors), into `segments`
 void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
-                   std::vector<StartSegment>& segments);
+                   const NodeForces& f0, std::vector<StartSegment>& segments);
 
 //- Assembles J (TrapezoidMatrix) and factorizes it; the elastic tension
 //  is the discrete gradient from the step's start segments `start` to r

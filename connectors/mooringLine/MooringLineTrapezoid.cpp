@@ -39,16 +39,17 @@ Vector3 massInverseTimes(double mn, double mt, const Vector3& t,
 } // namespace
 
 void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
-                   std::vector<StartSegment>& segments)
+                   const NodeForces& f0, std::vector<StartSegment>& segments)
 {
     segments.resize(std::size_t(layout.N));
     for (const LineLayout::Section& c : layout.sections) {
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
-            StartSegment& s = segments[std::size_t(j)];
-            s.dr = r0[std::size_t(j + 1)] - r0[std::size_t(j)];
-            s.length = s.dr.norm();
+            const std::size_t k = std::size_t(j);
+            StartSegment& s = segments[k];
+            s.dr = r0[k + 1] - r0[k];
+            s.length = f0.stretched[k];
             s.strain = s.length * c.inverseL - 1.0;
-            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain / s.length * s.dr)
+            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain * f0.q[k])
                                     : Vector3::Zero();
         }
     }
@@ -151,7 +152,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         f0 = &w.f0;
     }
     const std::vector<Vector3>& a0 = f0->a;
-    startSegments(layout_, w.r0, w.start);
+    startSegments(layout_, w.r0, *f0, w.start);
     // Predictor: the start acceleration held over the step
     w.r.resize(n + 1);
     w.v.resize(n + 1);
