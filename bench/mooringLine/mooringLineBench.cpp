@@ -254,8 +254,38 @@ void snapTable()
 
 } // namespace
 
+//- Slack-taut forcing (references::slackTaut): the lab chain's fairlead
+//  surging 0.112 m at 1 Hz for 10 s at N, h, by the trapezoidal rule or
+//  CVODE at `tolerance`
+void slackTautRow(int N, double h, double tolerance)
+{
+    references::ReferenceLine line = references::lab(N);
+    if (tolerance > 0.0) {
+        line.p.integrator = MooringLineParameters::Integrator::cvode;
+        line.p.relativeTolerance = line.p.absoluteTolerance = tolerance;
+    }
+    const double start = cpuSeconds();
+    const references::Snap r = references::slackTaut(line, 0.112, 1.0, h, 10.0);
+    std::printf(
+        "slack-taut N = %d h = %g tolerance %g: work %.6g J, energy "
+        "change %.6g J, dissipated %.6g J, unreported %.4g J (%.3g of "
+        "%.6g J through the fairlead); the scheme's work %.6g J, "
+        "unreported %.3g of the throughput; harmonic %.8g N, peak %.5g N, "
+        "CPU %.3g s\n",
+        N, h, tolerance, r.work, r.change, r.dissipated, r.imbalance,
+        r.imbalance / r.throughput, r.throughput, r.stepWork,
+        r.stepImbalance / r.throughput, r.harmonic, r.peak,
+        cpuSeconds() - start);
+    std::fflush(stdout);
+}
+
 int main(int argc, char** argv)
 {
+    if ((argc == 4 || argc == 5) && std::strcmp(argv[1], "slacktaut") == 0) {
+        slackTautRow(std::atoi(argv[2]), std::atof(argv[3]),
+                     argc == 5 ? std::atof(argv[4]) : 0.0);
+        return 0;
+    }
     if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol
         double cpu = 0.0;
         const references::Snap r = snap(std::atoi(argv[2]), std::atof(argv[3]),

@@ -195,9 +195,13 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                     seabedEnergy += node.contact(0.5 * p.seabedStiffness * depth
                                                  * depth);
                 }
+                // what the penalty's energy loses beyond the work the push
+                // does on the node: the damping's c vz^2 while it pushes,
+                // the whole stored energy's rate when a node leaving the
+                // seabed faster than the spring relaxes is not pushed
                 dissipatedPower
-                    += std::min(node.contact(damping * v[i][2] * v[i][2]),
-                                std::abs(push * v[i][2]));
+                    += node.contact(p.seabedStiffness * depth) * v[i][2]
+                    - push * v[i][2];
             }
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mooringLine/AxialGradient.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineLayout.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -135,7 +136,8 @@ void TrapezoidMatrix::solve(std::vector<Vector3>& x) const
 
 void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
-                     double zb, double h, TrapezoidMatrix& J)
+                     double zb, double h, TrapezoidMatrix& J,
+                     const std::vector<StartSegment>& start)
 {
     const int N = layout.N;
     const std::size_t n = std::size_t(N - 1);
@@ -163,9 +165,18 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
             if (!(s > 1e-12 * l)) {
                 continue;
             }
-            const double T = c.EA * std::max(s * c.inverseL - 1.0, 0.0);
-            const double geometric = std::max(T, std::abs(c.w) * l) / s;
-            const double axial = s > l ? c.EA * c.inverseL : geometric;
+            // the discrete gradient G, which replaces the average of the
+            // elastic tensions at the step's ends: its stiffness along the
+            // segment 2 dG/dl, across it G/((l0 + l)/2) (EA/l and T/l
+            // where the segment is taut throughout, as the trapezoidal
+            // rule's); along a slack segment at least the geometric one
+            const StartSegment& s0 = start[std::size_t(j)];
+            const AxialGradient g
+                = axialGradient(c.EA, s0.strain, s * c.inverseL - 1.0);
+            const double geometric = std::max(g.tension, std::abs(c.w) * l)
+                / (0.5 * (s0.length + s));
+            const double axial
+                = std::max(2.0 * g.derivative * c.inverseL, geometric);
             const double alpha
                 = stiffness * (axial - geometric) + damping * c.BA * c.inverseL;
             const double beta = stiffness * geometric;

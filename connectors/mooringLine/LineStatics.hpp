@@ -121,10 +121,28 @@ struct TrapezoidMatrix {
     void solve(std::vector<Vector3>& x) const;
 };
 
-//- Assembles J (TrapezoidMatrix) and factorizes it
+//- A segment at the start of a trapezoidal step: node j to j + 1 [m],
+//  its length [m], strain [-] and elastic pull on node j, EA max(e, 0)
+//  times the unit vector to j + 1 [N]
+struct StartSegment {
+    Vector3 dr = Vector3::Zero();
+    double length = 0.0, strain = 0.0;
+    Vector3 pull = Vector3::Zero();
+};
+
+//- The segments of the node positions r0 (0..N), f0 = nodeForces there
+//  (its segment lengths and unit vectors), into `segments`
+void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
+                   const NodeForces& f0, std::vector<StartSegment>& segments);
+
+//- Assembles J (TrapezoidMatrix) and factorizes it; the elastic tension
+//  is the discrete gradient from the step's start segments `start` to r
+//  (AxialGradient.hpp): its stiffness along a segment dG/dl at r, across
+//  it G over the mean length, 2 G/(l0 + l)
 void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
-                     double zb, double h, TrapezoidMatrix& J);
+                     double zb, double h, TrapezoidMatrix& J,
+                     const std::vector<StartSegment>& start);
 
 //- Damped Newton on the static forces of the free nodes (no velocities),
 //  from r (ends r[0], r[N] held). The forces are minus the gradient of the

@@ -492,6 +492,7 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     ends_.h = h;
     waterMotion(flow, water_);
     std::vector<double> y(state.nodes);
+    stepWork_ = 0.0;
     try {
         if (integrator_) {
             integrator_->restart(state.time, state.nodes.data());

@@ -248,6 +248,16 @@ public:
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
 
+    //- Work done on the line by its two ends over the last `advance` [J]
+    //  in the trapezoidal rule's own terms: the mean forces on the end
+    //  nodes over each step (the end segments' discrete-gradient elastic
+    //  tension and mean damping, the mean of the ends' weight, buoyancy,
+    //  drag and seabed forces) times the ends' displacements, without the
+    //  ends' inertia (endInertia). The loads at the steps' ends, whose
+    //  sampled power misses what happens between them (a snap shorter than
+    //  the step), do not give it. 0 with CVODE.
+    double stepWork() const { return stepWork_; }
+
     const MooringLineParameters& parameters() const { return parameters_; }
 
 private:
@@ -288,6 +298,7 @@ private:
     WaterMotion water_;
     std::unique_ptr<CvodeBdf> integrator_; // with Integrator::cvode
     CvodeBdf::Statistics trapezoidStatistics_;
+    double stepWork_ = 0.0;
     //- Node positions, velocities (ends included) and forces of the last
     //  `evaluate`, whose accelerations trapezoidStep takes as its start's
     //  when it starts from exactly those positions and velocities
@@ -298,8 +309,13 @@ private:
     } lastEvaluated_;
     //- Storage of trapezoidStep, overwritten by every step
     struct Workspace {
-        std::vector<Vector3> r0, v0, r, v, a0, b;
-        NodeForces f;
+        std::vector<Vector3> r0, v0, r, v, b;
+        //- the start's forces (when not those of the last `evaluate`)
+        NodeForces f0, f;
+        //- the start's segments; the discrete gradient's corrections to
+        //  the elastic forces at the start and the end of the step [N]
+        std::vector<StartSegment> start;
+        std::vector<Vector3> d0, d1;
         TrapezoidMatrix J;
     } work_;
 };

@@ -106,43 +106,37 @@ inline ReferenceLine oc4(int segments)
             Vector3(-837.6, 0.0, -200.0), Vector3(-40.868, 0.0, -14.0)};
 }
 
-//- Snap: the fairlead of `line` pulled in surge over 0.5 s (smooth start
-//  and stop) to 0.9997 of the line's length from the anchor, then held,
-//  for `duration` s at coupling step h. Peak fairlead tension and its
-//  time, tension at the end, and the energy balance: the work done on the
-//  line by the fairlead against the change of its potential and kinetic
-//  energy (v' M v / 2, added mass about the node's tangent) plus the
-//  dissipated energy, power integrals by the trapezoidal rule.
+//- Energy balance and tension of `line` with its fairlead moving as
+//  `fairlead(t)` (position and velocity) for `duration` s at coupling step
+//  h, the anchor held: peak fairlead tension and its time, tension at the
+//  end, the work done on the line by the fairlead against the change of
+//  its potential and kinetic energy (v' M v / 2, added mass about the
+//  node's tangent) plus the dissipated energy, power integrals by the
+//  trapezoidal rule; and the first harmonic of the fairlead tension at
+//  `frequency` [Hz] over the whole periods after the first (0: none).
 struct Snap {
     double peak = 0.0, peakTime = 0.0, final = 0.0;
     //- work - energy change - dissipated energy; the energy that flowed
     //  through the fairlead (integral of |power|) [J]
     double imbalance = 0.0, throughput = 0.0;
+    //- work done on the line, its energy change, the dissipated energy [J]
+    double work = 0.0, change = 0.0, dissipated = 0.0;
+    //- The work of the ends in the trapezoidal rule's own terms
+    //  (MooringLine::stepWork), and the imbalance with it, work - energy
+    //  change - dissipated energy [J]
+    double stepWork = 0.0, stepImbalance = 0.0;
+    //- first-harmonic amplitude of the fairlead tension [N]
+    double harmonic = 0.0;
     bool finite = true;
 };
 
-inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
+template <class Fairlead>
+Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
+                   double duration, double frequency = 0.0)
 {
     constexpr double pi = 3.14159265358979323846;
     const MooringLineParameters& p = line.p;
     const int N = p.segments;
-    const Vector3 span = line.fairlead - line.anchor;
-    // surge a such that |span + a x^| = 0.9997 L
-    const double reach = 0.9997 * p.length;
-    const double a
-        = std::sqrt(reach * reach - span[1] * span[1] - span[2] * span[2])
-        - span[0];
-    const double pull = 0.5;
-    const auto fairlead = [&](double t) {
-        const double u = std::min(t / pull, 1.0);
-        BodyKinematics A;
-        A.p_WKo_W = line.fairlead
-            + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
-        A.v_WKo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
-                                     : 0.0,
-                            0.0, 0.0);
-        return A;
-    };
     MooringLine law(p);
     BodyKinematics B;
     B.p_WKo_W = line.anchor;
@@ -175,16 +169,21 @@ inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
     MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
     const double energy0 = energy(s, out);
     double power = 0.0, dissipation = out.loads.dissipatedPower;
-    double work = 0.0, dissipated = 0.0;
     const int steps = int(std::lround(duration / h));
+    const int perPeriod
+        = frequency > 0.0 ? int(std::lround(1.0 / (frequency * h))) : 0;
+    const int periods = perPeriod > 0 ? steps / perPeriod : 0;
+    double re = 0.0, im = 0.0;
     for (int k = 1; k <= steps; ++k) {
         const BodyKinematics A = fairlead(k * h);
         law.advance(s, A, B, h);
         out = law.evaluate(s, A, B, 0);
         const double newPower = -out.loads.A.f_W.dot(A.v_WKo_W);
-        work += 0.5 * h * (power + newPower);
+        result.work += 0.5 * h * (power + newPower);
+        result.stepWork += law.stepWork();
         result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
-        dissipated += 0.5 * h * (dissipation + out.loads.dissipatedPower);
+        result.dissipated
+            += 0.5 * h * (dissipation + out.loads.dissipatedPower);
         power = newPower;
         dissipation = out.loads.dissipatedPower;
         result.finite = result.finite && std::isfinite(out.fairleadTension);
@@ -192,10 +191,71 @@ inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
             result.peak = out.fairleadTension;
             result.peakTime = k * h;
         }
+        if (perPeriod > 0 && k > perPeriod && k <= periods * perPeriod) {
+            const double phase = 2.0 * pi * frequency * k * h;
+            re += out.fairleadTension * std::cos(phase);
+            im -= out.fairleadTension * std::sin(phase);
+        }
     }
     result.final = out.fairleadTension;
-    result.imbalance = work - (energy(s, out) - energy0) - dissipated;
+    result.change = energy(s, out) - energy0;
+    result.imbalance = result.work - result.change - result.dissipated;
+    result.stepImbalance = result.stepWork - result.change - result.dissipated;
+    if (periods > 1) {
+        result.harmonic
+            = 2.0 * std::hypot(re, im) / ((periods - 1) * perPeriod);
+    }
     return result;
+}
+
+//- Snap: the fairlead of `line` pulled in surge over 0.5 s (smooth start
+//  and stop) to 0.9997 of the line's length from the anchor, then held,
+//  for `duration` s at coupling step h (energyBalance)
+inline Snap pullTaut(const ReferenceLine& line, double h, double duration)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const MooringLineParameters& p = line.p;
+    const Vector3 span = line.fairlead - line.anchor;
+    // surge a such that |span + a x^| = 0.9997 L
+    const double reach = 0.9997 * p.length;
+    const double a
+        = std::sqrt(reach * reach - span[1] * span[1] - span[2] * span[2])
+        - span[0];
+    const double pull = 0.5;
+    const auto fairlead = [&](double t) {
+        const double u = std::min(t / pull, 1.0);
+        BodyKinematics A;
+        A.p_WKo_W = line.fairlead
+            + Vector3(a * (u - std::sin(2.0 * pi * u) / (2.0 * pi)), 0.0, 0.0);
+        A.v_WKo_W = Vector3(t < pull ? a / pull * (1.0 - std::cos(2.0 * pi * u))
+                                     : 0.0,
+                            0.0, 0.0);
+        return A;
+    };
+    return energyBalance(line, fairlead, h, duration);
+}
+
+//- Slack-taut: the fairlead of `line` surging with the amplitude `a` [m]
+//  at `frequency` [Hz] about its rest position, ramped in over the first
+//  period, x0 + a r(t) sin(2 pi f t), r = (1 - cos(pi f t))/2, for
+//  `duration` s at coupling step h (energyBalance, the harmonic at f)
+inline Snap slackTaut(const ReferenceLine& line, double a, double frequency,
+                      double h, double duration)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const double w = 2.0 * pi * frequency, T = 1.0 / frequency;
+    const auto fairlead = [&](double t) {
+        const double ramp = t < T ? 0.5 * (1.0 - std::cos(pi * t / T)) : 1.0;
+        const double rate = t < T ? 0.5 * pi / T * std::sin(pi * t / T) : 0.0;
+        BodyKinematics A;
+        A.p_WKo_W
+            = line.fairlead + Vector3(a * ramp * std::sin(w * t), 0.0, 0.0);
+        A.v_WKo_W
+            = Vector3(a * (rate * std::sin(w * t) + ramp * w * std::cos(w * t)),
+                      0.0, 0.0);
+        return A;
+    };
+    return energyBalance(line, fairlead, h, duration, frequency);
 }
 
 } // namespace references
