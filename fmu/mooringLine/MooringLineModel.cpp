@@ -5,13 +5,16 @@
 //
 // Internal state (Model::internalState): time, end positions, velocities
 // (the start of the next step's Hermite path) and accelerations, and the
-// position
-// and velocity of every free node. It is saved, restored and
-// serialized with the FMU state; each step starts the integrator from it,
-// so a step repeated after fmi2SetFMUstate gives the same outputs to the
-// bit.
+// position and velocity of every free node; then the start time of the
+// last step and its flow inputs (the flow's acceleration over the next
+// step is their change). It is saved, restored and serialized with the FMU
+// state; each step starts the integrator from it, so a step repeated after
+// fmi2SetFMUstate gives the same outputs to the bit.
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "LineFmuModel.hpp"
 #include "SectionVariables.hpp"
@@ -40,7 +43,10 @@ A.F = -T_N-1 q_N-1 + E_N,   B.F = T_0 q_0 + E_0   (the ends' half segments)
 at <code>waterLevel</code>, <code>current.seabed</code> at the height of
 B.p, linear between) plus the inputs <code>shape.Ux/Uy/Uz[k]</code>: the
 water velocity at the points of the shape outputs of the previous step,
-held over the step and interpolated along the line.
+held over the step and interpolated along the line. Their change over the
+previous step is the flow's acceleration a, held over the step: with
+<code>flowInertia</code> = 1 (default) it acts on the line as
+(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
 <code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
 <code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
 on the seabed, regularised below <code>frictionVelocity</code>.</p>
@@ -176,6 +182,7 @@ public:
     void setParameters(const double* values) override
     {
         law_.build(parameters(values));
+        flag(values, flowInertia_); // 0 or 1, refused otherwise
     }
 
     void initializeState(const double* values, double time) override;
@@ -196,6 +203,23 @@ private:
 
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
+    //- The flow's acceleration over a step from `time` with the flow
+    //  inputs `U`: their change since the last step's over its length
+    //  (empty: none, with flowInertia = 0, at the first step, or when the
+    //  flow did not change)
+    std::vector<connectors::Vector3>
+    flowAcceleration(const double* values,
+                     const std::vector<connectors::Vector3>& U,
+                     double time) const;
+
+    //- The flow inputs of the last step and its start time (at the start:
+    //  those at fmi2ExitInitializationMode and its time)
+    struct FlowHistory {
+        double time = 0.0;
+        std::vector<connectors::Vector3> flow;
+    };
+    FlowHistory lastFlow_;
+    Block flowInertia_;
 
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
@@ -265,6 +289,13 @@ MooringLineModel::MooringLineModel()
     for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
+    // declared last: the variables above keep their value references
+    flowInertia_ = t.parameter(
+        "flowInertia", Shape::scalar, "1",
+        "1 (default): the flow's acceleration, the change of the inputs "
+        "shape.U over the previous step, acts on the line as (1 + Ca) rho V "
+        "dU/dt, normal and tangential (Froude-Krylov and added mass); 0: not",
+        {1.0});
 }
 
 connectors::MooringLineParameters
@@ -335,6 +366,34 @@ MooringLineModel::flow(const double* values) const
     return points;
 }
 
+std::vector<connectors::Vector3>
+MooringLineModel::flowAcceleration(const double* values,
+                                   const std::vector<connectors::Vector3>& U,
+                                   double time) const
+{
+    const double h = time - lastFlow_.time;
+    if (!flag(values, flowInertia_) || !(h > 0.0)
+        || (U.empty() && lastFlow_.flow.empty())) {
+        return {};
+    }
+    std::vector<connectors::Vector3> a(static_cast<std::size_t>(shapePoints),
+                                       connectors::Vector3::Zero());
+    bool any = false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const connectors::Vector3 now
+            = U.empty() ? connectors::Vector3::Zero() : U[k];
+        const connectors::Vector3 before = lastFlow_.flow.empty()
+            ? connectors::Vector3::Zero()
+            : lastFlow_.flow[k];
+        a[k] = (now - before) / h;
+        any = any || !a[k].isZero(0.0);
+    }
+    if (!any) {
+        a.clear();
+    }
+    return a;
+}
+
 fmuExport::ConnectorOutputs
 MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
 {
@@ -361,8 +420,11 @@ MooringLineModel::evaluate(const double* values,
 {
     const connectors::MooringLine& law = law_.get();
     if (state_) {
+        // as the step from here will see the water
+        const std::vector<connectors::Vector3> U = flow(values);
         return lineOutputs(
-            law.evaluate(*state_, A, B, shapePoints, flow(values)));
+            law.evaluate(*state_, A, B, shapePoints, U,
+                         flowAcceleration(values, U, state_->time)));
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
@@ -374,9 +436,10 @@ void MooringLineModel::initializeState(const double* values, double time)
     state_
         = law_.get().initialState(fmuExport::bodyKinematics(values, A),
                                   fmuExport::bodyKinematics(values, B), time);
+    lastFlow_ = {time, flow(values)};
 }
 
-void MooringLineModel::doStep(double* values, double, double h)
+void MooringLineModel::doStep(double* values, double time, double h)
 {
     if (!state_) {
         throw std::logic_error("mooringLine: fmi2DoStep before the line was "
@@ -388,17 +451,34 @@ void MooringLineModel::doStep(double* values, double, double h)
     const connectors::BodyKinematics bodyB
         = fmuExport::bodyKinematics(values, B);
     const std::vector<connectors::Vector3> water = flow(values);
+    const std::vector<connectors::Vector3> a
+        = flowAcceleration(values, water, time);
     connectors::MooringLineState next = *state_;
-    law.advance(next, bodyA, bodyB, h, water);
+    law.advance(next, bodyA, bodyB, h, water, a);
     writeOutputs(
         values,
-        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water)));
+        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a)));
     state_ = std::move(next);
+    lastFlow_ = {time, water};
 }
 
 std::vector<double> MooringLineModel::internalState() const
 {
-    return state_ ? state_->serialize() : std::vector<double> {};
+    if (!state_) {
+        return {};
+    }
+    // the line's state, then the last step's start time and flow inputs
+    // (3 values a point, all zero for none)
+    std::vector<double> out = state_->serialize();
+    out.push_back(lastFlow_.time);
+    for (int k = 0; k < shapePoints; ++k) {
+        for (int axis = 0; axis < 3; ++axis) {
+            out.push_back(lastFlow_.flow.empty()
+                              ? 0.0
+                              : lastFlow_.flow[std::size_t(k)][axis]);
+        }
+    }
+    return out;
 }
 
 void MooringLineModel::setInternalState(const double*,
@@ -408,8 +488,36 @@ void MooringLineModel::setInternalState(const double*,
         state_.reset();
         return;
     }
-    state_ = connectors::MooringLineState::deserialize(state,
-                                                       law_.get().parameters());
+    const connectors::MooringLineParameters& p = law_.get().parameters();
+    const std::size_t line = 19 + 6 * std::size_t(p.totalSegments() - 1);
+    const std::size_t withFlow = line + 1 + 3 * std::size_t(shapePoints);
+    if (state.size() != withFlow && state.size() != line) {
+        throw std::invalid_argument(
+            "mooringLine: a saved state of " + std::to_string(state.size())
+            + " values does not fit a line of "
+            + std::to_string(p.totalSegments()) + " segments ("
+            + std::to_string(withFlow) + " values, or " + std::to_string(line)
+            + " without the flow's history)");
+    }
+    if (state.size() == line) {
+        // saved without the flow's history: no flow acceleration in the
+        // first step
+        state_ = connectors::MooringLineState::deserialize(state, p);
+        lastFlow_ = {state_->time, {}};
+        return;
+    }
+    state_ = connectors::MooringLineState::deserialize(
+        std::vector<double>(state.begin(),
+                            state.begin() + std::ptrdiff_t(line)),
+        p);
+    lastFlow_ = {state[line], {}};
+    const double* u = state.data() + line + 1;
+    if (std::any_of(u, u + 3 * shapePoints,
+                    [](double x) { return x != 0.0; })) {
+        for (int k = 0; k < shapePoints; ++k) {
+            lastFlow_.flow.emplace_back(u[3 * k], u[3 * k + 1], u[3 * k + 2]);
+        }
+    }
 }
 
 } // namespace
