@@ -10,13 +10,13 @@
 // step is their change). It is saved, restored and serialized with the FMU
 // state; each step starts the integrator from it, so a step repeated after
 // fmi2SetFMUstate gives the same outputs to the bit.
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "LineFmuModel.hpp"
+#include "FlowHistory.hpp"
 #include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -204,21 +204,19 @@ private:
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
     //- The flow's acceleration over a step from `time` with the flow
-    //  inputs `U`: their change since the last step's over its length
-    //  (empty: none, with flowInertia = 0, at the first step, or when the
-    //  flow did not change)
+    //  inputs `U` (FlowHistory; none with flowInertia = 0)
     std::vector<connectors::Vector3>
     flowAcceleration(const double* values,
                      const std::vector<connectors::Vector3>& U,
-                     double time) const;
+                     double time) const
+    {
+        return flag(values, flowInertia_) ? lastFlow_.acceleration(U, time)
+                                          : std::vector<connectors::Vector3> {};
+    }
 
     //- The flow inputs of the last step and its start time (at the start:
     //  those at fmi2ExitInitializationMode and its time)
-    struct FlowHistory {
-        double time = 0.0;
-        std::vector<connectors::Vector3> flow;
-    };
-    FlowHistory lastFlow_;
+    mooringLineFmu::FlowHistory lastFlow_ {shapePoints};
     Block flowInertia_;
 
     ScalarBlocks p_;
@@ -366,34 +364,6 @@ MooringLineModel::flow(const double* values) const
     return points;
 }
 
-std::vector<connectors::Vector3>
-MooringLineModel::flowAcceleration(const double* values,
-                                   const std::vector<connectors::Vector3>& U,
-                                   double time) const
-{
-    const double h = time - lastFlow_.time;
-    if (!flag(values, flowInertia_) || !(h > 0.0)
-        || (U.empty() && lastFlow_.flow.empty())) {
-        return {};
-    }
-    std::vector<connectors::Vector3> a(static_cast<std::size_t>(shapePoints),
-                                       connectors::Vector3::Zero());
-    bool any = false;
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        const connectors::Vector3 now
-            = U.empty() ? connectors::Vector3::Zero() : U[k];
-        const connectors::Vector3 before = lastFlow_.flow.empty()
-            ? connectors::Vector3::Zero()
-            : lastFlow_.flow[k];
-        a[k] = (now - before) / h;
-        any = any || !a[k].isZero(0.0);
-    }
-    if (!any) {
-        a.clear();
-    }
-    return a;
-}
-
 fmuExport::ConnectorOutputs
 MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
 {
@@ -436,7 +406,7 @@ void MooringLineModel::initializeState(const double* values, double time)
     state_
         = law_.get().initialState(fmuExport::bodyKinematics(values, A),
                                   fmuExport::bodyKinematics(values, B), time);
-    lastFlow_ = {time, flow(values)};
+    lastFlow_.record(time, flow(values));
 }
 
 void MooringLineModel::doStep(double* values, double time, double h)
@@ -459,7 +429,7 @@ void MooringLineModel::doStep(double* values, double time, double h)
         values,
         lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a)));
     state_ = std::move(next);
-    lastFlow_ = {time, water};
+    lastFlow_.record(time, water);
 }
 
 std::vector<double> MooringLineModel::internalState() const
@@ -470,14 +440,7 @@ std::vector<double> MooringLineModel::internalState() const
     // the line's state, then the last step's start time and flow inputs
     // (3 values a point, all zero for none)
     std::vector<double> out = state_->serialize();
-    out.push_back(lastFlow_.time);
-    for (int k = 0; k < shapePoints; ++k) {
-        for (int axis = 0; axis < 3; ++axis) {
-            out.push_back(lastFlow_.flow.empty()
-                              ? 0.0
-                              : lastFlow_.flow[std::size_t(k)][axis]);
-        }
-    }
+    lastFlow_.save(out);
     return out;
 }
 
@@ -490,34 +453,21 @@ void MooringLineModel::setInternalState(const double*,
     }
     const connectors::MooringLineParameters& p = law_.get().parameters();
     const std::size_t line = 19 + 6 * std::size_t(p.totalSegments() - 1);
-    const std::size_t withFlow = line + 1 + 3 * std::size_t(shapePoints);
-    if (state.size() != withFlow && state.size() != line) {
+    const std::size_t withFlow = line + lastFlow_.size();
+    if (state.size() != withFlow) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(state.size())
             + " values does not fit a line of "
             + std::to_string(p.totalSegments()) + " segments ("
-            + std::to_string(withFlow) + " values, or " + std::to_string(line)
-            + " without the flow's history)");
-    }
-    if (state.size() == line) {
-        // saved without the flow's history: no flow acceleration in the
-        // first step
-        state_ = connectors::MooringLineState::deserialize(state, p);
-        lastFlow_ = {state_->time, {}};
-        return;
+            + std::to_string(withFlow) + " values: " + std::to_string(line)
+            + " of the line, 1 + 3 x " + std::to_string(shapePoints)
+            + " of the last step's flow)");
     }
     state_ = connectors::MooringLineState::deserialize(
         std::vector<double>(state.begin(),
                             state.begin() + std::ptrdiff_t(line)),
         p);
-    lastFlow_ = {state[line], {}};
-    const double* u = state.data() + line + 1;
-    if (std::any_of(u, u + 3 * shapePoints,
-                    [](double x) { return x != 0.0; })) {
-        for (int k = 0; k < shapePoints; ++k) {
-            lastFlow_.flow.emplace_back(u[3 * k], u[3 * k + 1], u[3 * k + 2]);
-        }
-    }
+    lastFlow_.restore(state.data() + line);
 }
 
 } // namespace
