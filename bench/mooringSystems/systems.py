@@ -20,12 +20,11 @@ import math
 import numpy as np
 
 from foamfmi import catenary
-from foamfmi.bridgecase import vec
-
+from foamfmi.bridgecase import fmu_restraint, rigid_body, rigid_body_model
 # The anchored lines: those of tests/bridge/test_catenary_world.py
-DEPTH, L, EA, W = 40.0, 100.0, 5e7, 700.0        # m, m, N, N/m (submerged)
-DIAMETER, RHO, G = 0.1, 1025.0, 9.81
-MU = W / G + RHO * math.pi * DIAMETER ** 2 / 4    # kg/m, dry mass for weight W
+from foamfmi.mooringcase import (DEPTH, EA, G, L, W, catenary_parameters, lumped_parameters,
+                                 push_and_damper)
+
 SEGMENTS = 20
 SPAN = 85.0                     # m, anchor to fairlead (horizontal): H ~ 1.6e4 N
 SHARED_L = 55.0                 # m, shared line between fairleads 50 m apart
@@ -148,50 +147,20 @@ def scaling(n):
 # The case ----------------------------------------------------------------
 
 def body_entry(i, centre, start):
-    return f"""
-    body{i}
-    {{
-        type rigidBody;
-        parent root;
-        mass {MASS};
-        centreOfMass (0 0 0);
-        inertia (1e4 0 0 1e4 0 1e4);
-        transform (1 0 0 0 1 0 0 0 1) {vec((*(centre + start), 0))};
-        joint {{ type composite; joints ({{ type Px; }} {{ type Py; }}); }}
-    }}"""
+    return rigid_body(f"body{i}", MASS, "1e4", (*(centre + start), 0),
+                      "composite; joints ({ type Px; } { type Py; })")
 
 
 def line_entry(name, fmu, a, p_a, b, p_b, anchored):
     """A restraint for one line; p_b is the anchor (global) when b is None."""
-    body_b = "" if b is None else f"bodyB body{b};\n            "
+    length = L if anchored else SHARED_L
     if fmu.endswith("catenary.fmu"):
-        law = f"""unstretchedLength {L if anchored else SHARED_L};
-                EA {EA};
-                weight {W};
-                seabedContact {int(anchored)};"""
+        law = catenary_parameters(length, int(anchored))
     else:
-        law = f"""unstretchedLength {L if anchored else SHARED_L};
-                EA {EA};
-                axialDamping 2e5;
-                massPerLength {MU!r};
-                diameter {DIAMETER};
-                waterDensity {RHO};
-                gravity {G};
-                seabedContact {int(anchored)};
-                segments {SEGMENTS if anchored else SEGMENTS * SHARED_L // L:.0f};"""
-    return f"""
-        {name}
-        {{
-            type fmuConnector;
-            body body{a};
-            {body_b}fmu "{fmu}";
-            parameters
-            {{
-                {law}
-                A.p {vec(p_a)};
-                B.p {vec(p_b)};
-            }}
-        }}"""
+        law = lumped_parameters(SEGMENTS if anchored else int(SEGMENTS * SHARED_L // L),
+                                length, int(anchored))
+    return fmu_restraint(name, fmu, f"body{a}", {**law, "A.p": p_a, "B.p": p_b},
+                         None if b is None else f"body{b}")
 
 
 def model(system, fmu, damping, start, lines=True):
@@ -199,36 +168,15 @@ def model(system, fmu, damping, start, lines=True):
     FMU, damping (N s/m) and start offset (m, x and y) per body; without
     lines, the bodies, push and dampers only."""
     bodies = "".join(body_entry(i, c, start[i]) for i, c in enumerate(system.centres))
-    restraints = "".join(f"""
-        push{i}
-        {{
-            type externalForce;
-            body body{i};
-            location (0 0 0);
-            force constant ({PUSH} 0 0);
-        }}
-        damper{i}
-        {{
-            type linearDamper;
-            body body{i};
-            coeff {damping[i]!r};
-        }}""" for i in range(len(system.centres)))
+    restraints = "".join(push_and_damper(f"push{i}", f"damper{i}", f"body{i}", PUSH, damping[i])
+                         for i in range(len(system.centres)))
     if lines:
         for j, (body, offset, anchor) in enumerate(system.anchored):
             restraints += line_entry(f"line{j}", fmu, body, (*offset, 0),
                                      None, (*anchor, -DEPTH), True)
         for j, (a, off_a, b, off_b) in enumerate(system.shared):
             restraints += line_entry(f"shared{j}", fmu, a, (*off_a, 0), b, (*off_b, 0), False)
-    return f"""
-    solver {{ type Newmark; }}
-    g (0 0 -{G});
-    bodies
-    {{{bodies}
-    }}
-    restraints
-    {{{restraints}
-    }}
-"""
+    return rigid_body_model(bodies, restraints, "Newmark", g=(0, 0, -G))
 
 
 def damping(system, k):

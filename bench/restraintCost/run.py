@@ -7,58 +7,31 @@ differences.
 
 Run in the project's environment: tests/run-with-openfoam python3 bench/restraintCost/run.py
 """
-import os
 import subprocess
+import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi import cli
+from foamfmi.bridgecase import Case, linear_spring, rigid_body, rigid_body_model, spring_fmu
 
-
-def fmu_restraint(name, isolation, fmu="linearSpring"):
-    return f"""        {name}
-        {{
-            type fmuConnector;
-            body hull;
-            fmu "{fmu_path(fmu)}";
-            isolation {isolation};
-            parameters
-            {{
-                stiffness 50;
-                damping 0.5;
-                restLength 0.5;
-                A.p {vec((0.1, 0, 0.05))};
-                B.p {vec((0.3, 0.2, 1.2))};
-            }}
-        }}"""
+# The spring of tests/bridge/test_spring_world.py on one floating body
+SPRING = ((0.3, 0.2, 1.2), (0.1, 0, 0.05), 50, 0.5, 0.5)
 
 
-MODEL = f"""
-    solver {{ type symplectic; }}
-    bodies
-    {{
-{rigid_body("hull", 2, 0.1, (0, 0, 0), "floating")}
-    }}
-    restraints
-    {{
-        builtin
-        {{
-            type linearSpring;
-            body hull;
-            anchor (0.3 0.2 1.2);
-            refAttachmentPt (0.1 0 0.05);
-            stiffness 50;
-            damping 0.5;
-            restLength 0.5;
-        }}
-{fmu_restraint("fmu", "none")}
-{fmu_restraint("fmuProcess", "process")}
-{fmu_restraint("fmu3", "none", "fmi3/linearSpring")}
-{fmu_restraint("fmu3Process", "process", "fmi3/linearSpring")}
-    }}
-"""
+def model():
+    """The built-in spring and the FMU's four ways on one body."""
+    return rigid_body_model(
+        rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+        linear_spring("builtin", "hull", *SPRING)
+        + spring_fmu("fmu", "hull", *SPRING, isolation="none")
+        + spring_fmu("fmuProcess", "hull", *SPRING, isolation="process")
+        + spring_fmu("fmu3", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="none")
+        + spring_fmu("fmu3Process", "hull", *SPRING, fmu="fmi3/linearSpring", isolation="process"),
+        g=None)
 
 
-def main():
-    case = Case("restraintCost", MODEL, 1, 0.001)
+def main(argv):
+    cli.parser("run.py", __doc__).parse_args(argv)
+    case = Case("restraintCost", model(), 1, 0.001)
     out = subprocess.run(
         ["restraintCost", "-case", case.dir, "-evaluations", "20000", "-rounds", "5"],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, check=True,
@@ -109,4 +82,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

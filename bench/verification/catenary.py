@@ -22,7 +22,8 @@ import os
 import subprocess
 import tempfile
 
-from vcommon import FMUSIM, child_cpu, fmi_message, fmu_path, has_nan, run_rigid, slider, solver_entry, vec
+from foamfmi.bridgecase import fmu_restraint, rigid_body_model
+from vcommon import FMUSIM, child_cpu, fmi_message, fmu_path, has_nan, run_rigid, slider, solver_entry
 
 L, EA, W = 100.0, 5e7, 700.0
 
@@ -133,32 +134,11 @@ MOORING = {"unstretchedLength": L, "EA": EA, "weight": W, "seabedContact": 1, "s
 
 
 def moored_model(solver):
-    lines = ""
-    for name, sign in (("east", 1), ("west", -1)):
-        entries = "".join(f"                {k} {v!r};\n" for k, v in MOORING.items())
-        lines += f"""
-        {name}
-        {{
-            type fmuConnector;
-            body body;
-            fmu "{fmu_path('catenary')}";
-            parameters
-            {{
-{entries}                A.p (0 0 0);
-                B.p {vec((sign * XA, 0, -ZA))};
-            }}
-        }}"""
-    return f"""
-    {solver_entry(solver)}
-    g (0 0 -9.81);
-    bodies
-    {{
-{slider("body", MB, (OFFSET, 0, 0), "Px")}
-    }}
-    restraints
-    {{{lines}
-    }}
-"""
+    lines = "".join(fmu_restraint(name, fmu_path("catenary"), "body",
+                                  {**MOORING, "A.p": "(0 0 0)", "B.p": (sign * XA, 0, -ZA)})
+                    for name, sign in (("east", 1), ("west", -1)))
+    return rigid_body_model(slider("body", MB, (OFFSET, 0, 0), "Px"), lines, solver_entry(solver),
+                            g=(0, 0, -9.81))
 
 
 def surge_period():
@@ -190,29 +170,10 @@ def tension_leg_model(solver, ratio, dt, mass=1.0, x0=0.01):
     z_eq = length + 2 * x0
     params = {"unstretchedLength": length, "EA": ea, "weight": 0.0, "seabedContact": 0,
               "seabedFriction": 0}
-    entries = "".join(f"                {k_} {v!r};\n" for k_, v in params.items())
-    model = f"""
-    {solver_entry(solver)}
-    g {vec((0, 0, lift / mass))};
-    bodies
-    {{
-{slider("body", mass, (0, 0, z_eq + x0), "Pz")}
-    }}
-    restraints
-    {{
-        leg
-        {{
-            type fmuConnector;
-            body body;
-            fmu "{fmu_path('catenary')}";
-            parameters
-            {{
-{entries}                A.p (0 0 0);
-                B.p (0 0 0);
-            }}
-        }}
-    }}
-"""
+    model = rigid_body_model(
+        slider("body", mass, (0, 0, z_eq + x0), "Pz"),
+        fmu_restraint("leg", fmu_path("catenary"), "body", {**params, "A.p": "(0 0 0)", "B.p": "(0 0 0)"}),
+        solver_entry(solver), g=(0, 0, lift / mass))
     return model, z_eq, x0
 
 

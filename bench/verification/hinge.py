@@ -20,7 +20,8 @@ import math
 import os
 import sys
 
-from vcommon import TOP, fmu_path, has_nan, run_rigid, solver_entry, vec
+from foamfmi.bridgecase import fmu_restraint, rigid_body, rigid_body_model
+from vcommon import TOP, fmu_path, has_nan, run_rigid, solver_entry
 
 # The double pendulum itself
 sys.path.insert(0, os.path.join(TOP, "tests", "bridge"))
@@ -74,43 +75,11 @@ def pendulum_error(ref, solver, n_iter, k, dt):
 def rod_model(solver, k, inertia_ratio):
     inertia = inertia_ratio * M * D**2
     g = (-G * math.sin(ALPHA), 0, -G * math.cos(ALPHA))
-    return f"""
-    {solver_entry(solver)}
-    g {vec(g)};
-    bodies
-    {{
-        rod
-        {{
-            type rigidBody;
-            parent root;
-            mass {M};
-            centreOfMass (0 0 0);
-            inertia ({inertia!r} 0 0 {inertia!r} 0 {inertia!r});
-            transform (1 0 0 0 1 0 0 0 1) (0 0 {-D});
-            joint {{ type floating; }}
-        }}
-    }}
-    restraints
-    {{
-        hinge
-        {{
-            type fmuConnector;
-            body rod;
-            fmu "{fmu_path('hinge')}";
-            parameters
-            {{
-                A.p (0 0 {D});
-                B.p (0 0 0);
-                A.axis (0 1 0);
-                B.axis (0 1 0);
-                stiffness {k!r};
-                damping 0;
-                rotationalStiffness {k * D**2!r};
-                rotationalDamping 0;
-            }}
-        }}
-    }}
-"""
+    hinge = fmu_restraint("hinge", fmu_path("hinge"), "rod", {
+        "A.p": (0, 0, D), "B.p": "(0 0 0)", "A.axis": "(0 1 0)", "B.axis": "(0 1 0)",
+        "stiffness": k, "damping": 0, "rotationalStiffness": k * D**2, "rotationalDamping": 0})
+    return rigid_body_model(rigid_body("rod", M, inertia, (0, 0, -D), "floating"), hinge,
+                            solver_entry(solver), g=g)
 
 
 def m_eff(inertia_ratio):

@@ -14,6 +14,7 @@ or to the travel U0 TAU (damper).
 """
 import math
 
+from foamfmi.bridgecase import fmu_restraint, rigid_body_model
 from vcommon import fmu_path, run_fmusim, run_rigid, slider, solver_entry
 
 M1, M2, K, L0, S0 = 2.0, 3.0, 50.0, 1.0, 0.1
@@ -55,31 +56,11 @@ def case_setup(connector, m1=M1, m2=M2, k=K, c=None):
 
 
 def rigid_model(solver, fmu, params, s0, u0, m1, m2):
-    entries = "".join(f"                {key} {value!r};\n" for key, value in params.items())
-    return f"""
-    {solver_entry(solver)}
-    g (0 0 0);
-    bodies
-    {{
-{slider("body1", m1, (0, 0, 0), "Px")}{slider("body2", m2, (L0 + s0, 0, 0), "Px")}
-    }}
-    qDot (0 {u0!r});
-    restraints
-    {{
-        connector
-        {{
-            type fmuConnector;
-            body body1;
-            bodyB body2;
-            fmu "{fmu_path(fmu)}";
-            parameters
-            {{
-{entries}                A.p (0 0 0);
-                B.p (0 0 0);
-            }}
-        }}
-    }}
-"""
+    return rigid_body_model(
+        slider("body1", m1, (0, 0, 0), "Px") + slider("body2", m2, (L0 + s0, 0, 0), "Px"),
+        fmu_restraint("connector", fmu_path(fmu), "body1", {**params, "A.p": "(0 0 0)", "B.p": "(0 0 0)"},
+                      "body2"),
+        solver_entry(solver), extra=f"    qDot (0 {u0!r});\n")
 
 
 def run(connector, scheme, dt, end, m1=M1, m2=M2, k=K, c=None):

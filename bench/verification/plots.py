@@ -12,6 +12,16 @@ def gnuplot(script):
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
 
 
+def datablock(name, lines):
+    """A gnuplot datablock $name of the given lines."""
+    return f"${name} << EOD\n" + "".join(lines) + "EOD\n"
+
+
+def plot(script, curves):
+    """Run script, then one plot command of the curves."""
+    gnuplot(script + "plot " + ", \\\n     ".join(curves) + "\n")
+
+
 def loglog(png, title, xlabel, ylabel, series, w=800, h=560):
     """series: [(label, [(x, y), ...])]; non-finite points are left out."""
     s = HEAD.format(w=w, h=h, png=png)
@@ -23,10 +33,9 @@ def loglog(png, title, xlabel, ylabel, series, w=800, h=560):
         pts = [(x, y) for x, y in points if x > 0 and y > 0 and math.isfinite(x) and math.isfinite(y)]
         if not pts:
             continue
-        s += f"$d{i} << EOD\n" + "".join(f"{x!r} {y!r}\n" for x, y in pts) + "EOD\n"
+        s += datablock(f"d{i}", (f"{x!r} {y!r}\n" for x, y in pts))
         plots.append(f'$d{i} using 1:2 with linespoints lw 2 pt {5 + i % 8} title "{label}"')
-    s += "plot " + ", \\\n     ".join(plots) + "\n"
-    gnuplot(s)
+    plot(s, plots)
 
 
 def stability_map(png, title, xlabel, rows, points, w=1000, h=None):
@@ -45,7 +54,6 @@ def stability_map(png, title, xlabel, rows, points, w=1000, h=None):
         pts = [(x, rows.index(r)) for x, r, o in points if o == outcome]
         if not pts:
             continue
-        s += f"${outcome} << EOD\n" + "".join(f"{x!r} {y}\n" for x, y in pts) + "EOD\n"
+        s += datablock(outcome, (f"{x!r} {y}\n" for x, y in pts))
         plots.append(f'${outcome} using 1:2 with points pt {pt} ps 1.3 lc rgb "{colour}" title "{outcome}"')
-    s += "plot " + ", \\\n     ".join(plots) + "\n"
-    gnuplot(s)
+    plot(s, plots)

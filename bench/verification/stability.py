@@ -19,18 +19,10 @@ from vcommon import has_nan, run_rigid, solver_entry
 DT = 0.01
 GROWTH = 2.0
 DAMPER_STEPS = 200
-SOLVERS = (
-    ("symplectic", "rigid", "symplectic", 1),
-    ("Newmark x1", "rigid", "Newmark", 1),
-    ("Newmark x3", "rigid", "Newmark", 3),
-    ("implicitNewmark", "rigid", "implicitNewmark", 1),
-    ("fmusim explicit", "fmusim", "explicit", 1),
-    ("fmusim implicit", "fmusim", "implicit", 1),
-)
+# The oscillators' schemes and OpenFOAM's Newmark with one solve a step
+SOLVERS = osc.SCHEMES[:1] + (("Newmark x1", "rigid", "Newmark", 1),) + osc.SCHEMES[1:]
 # theory.py scheme of each solver
-THEORY = {"symplectic": ("symplectic", 1), "Newmark x1": ("Newmark", 1),
-          "Newmark x3": ("Newmark", 3), "implicitNewmark": ("implicitNewmark", 1),
-          "fmusim explicit": ("explicit", 1), "fmusim implicit": ("implicit", 1)}
+THEORY = {label: (solver, n_iter) for label, _, solver, n_iter in SOLVERS}
 MASS_RATIOS = (1e-3, 1.0, 1e3)
 
 

@@ -39,6 +39,20 @@ def failure_kinds(r):
     return fpe, named
 
 
+def first_failure(d, g):
+    """The first failure message of a solver's map and the ratio it shows
+    from, or '-'."""
+    return "; ".join(f"{m[:110]} (from {g(x)})" for x, m in list(d["messages"].values())[:1]) or "-"
+
+
+def limit_table(section, figure, solvers, limit, table, g, limit_text):
+    """A map's section text, its figure and the table of each solver's
+    limit (header limit) and first failure."""
+    return (section + f"![{figure} stability]({FIG}/stability-{figure}.png)\n\n"
+            + table(("solver", limit, "failure message"),
+                    [(name, limit_text(d["limit"]), first_failure(d, g)) for name, d in solvers.items()]))
+
+
 def stability_text(r, table, g, limit_text):
     s = ("## Stability on stiff cases\n\n"
          f"A run is stable when the largest displacement from equilibrium (spring, hinge gap, tension "
@@ -62,7 +76,7 @@ def stability_text(r, table, g, limit_text):
         lt = d["limits"].get("two bodies m2/m1 = 1")
         rows.append((name, limit_text(lw) if lw else "-", limit_text(lt) if lt else "-",
                      g(d["theory"][0]), g(d["theory"][1]) if d["theory"][1] > 0 else "none (unstable)",
-                     "; ".join(f"{m[:110]} (from {g(x)})" for x, m in list(d["messages"].values())[:1]) or "-"))
+                     first_failure(d, g)))
     s += table(("solver", "limit k dt^2/m, to world", "limit k dt^2/mu, two bodies", "theory (2x criterion)",
                 "theory (growth < 1e-9 per step)", "failure message"), rows)
     builtin, ratios = disagreements(r["spring_map"])
@@ -85,21 +99,14 @@ def stability_text(r, table, g, limit_text):
     rows = [(name, limit_text(d["limit"]), g(d["theory"][0]), g(d["theory"][1]) if d["theory"][1] > 0 else "none")
             for name, d in r["damper_map"].items()]
     s += table(("solver", "limit c dt/mu", "theory (2x criterion)", "theory (growth < 1e-9 per step)"), rows)
-    s += ("\n### Hinge\n\nOne rod (2 kg, centre 0.25 m below the hinge point) hanging from the world on a "
-          "hinge FMU, no penalty damping, rotational penalty k d^2; J = I/(m d^2) the inertia ratio "
-          "(1/3: a uniform rod), m_eff = m J/(1 + J) the mass felt across the rod at the hinge point.\n\n"
-          f"![hinge stability]({FIG}/stability-hinge.png)\n\n")
-    rows = [(name, limit_text(d["limit"]),
-             "; ".join(f"{m[:110]} (from {g(x)})" for x, m in list(d["messages"].values())[:1]) or "-")
-            for name, d in r["hinge_map"].items()]
-    s += table(("solver", "limit k dt^2/m_eff (J = 1/3)", "failure message"), rows)
-    s += ("\n### Catenary\n\nA tension leg: a 1 kg body on a prismatic z joint held down by a vertical "
-          "weightless line (catenary FMU, vertical regime, stiffness EA/L) against a lift that keeps the "
-          "line taut; dt = 0.01 s, EA varied.\n\n"
-          f"![catenary stability]({FIG}/stability-catenary.png)\n\n")
-    rows = [(name, limit_text(d["limit"]),
-             "; ".join(f"{m[:110]} (from {g(x)})" for x, m in list(d["messages"].values())[:1]) or "-")
-            for name, d in r["catenary_map"].items()]
-    s += table(("solver", "limit EA dt^2/(L m)", "failure message"), rows)
+    s += limit_table("\n### Hinge\n\nOne rod (2 kg, centre 0.25 m below the hinge point) hanging from the "
+                     "world on a hinge FMU, no penalty damping, rotational penalty k d^2; J = I/(m d^2) the "
+                     "inertia ratio (1/3: a uniform rod), m_eff = m J/(1 + J) the mass felt across the rod at "
+                     "the hinge point.\n\n", "hinge", r["hinge_map"], "limit k dt^2/m_eff (J = 1/3)",
+                     table, g, limit_text)
+    s += limit_table("\n### Catenary\n\nA tension leg: a 1 kg body on a prismatic z joint held down by a "
+                     "vertical weightless line (catenary FMU, vertical regime, stiffness EA/L) against a lift "
+                     "that keeps the line taut; dt = 0.01 s, EA varied.\n\n", "catenary", r["catenary_map"],
+                     "limit EA dt^2/(L m)", table, g, limit_text)
     s += f"\nRuns of the maps with a non-finite number in their output: {nan_count(r)}.\n\n"
     return s

@@ -105,7 +105,10 @@ CatenaryOutput Catenary::evaluate(const BodyKinematics& A,
         out.shape[std::size_t(i)] = p_WQ_W + p[0] * eH + p[1] * zHat;
         out.shapeTension[std::size_t(i)] = catenaryTension(line, s, sArc);
     }
-    if (!line.sections.empty()) {
+    if (line.sections.empty()) {
+        out.sectionLowerTension = {out.anchorTension};
+        out.sectionUpperTension = {out.fairleadTension};
+    } else {
         const CatenarySectionTensions t = catenarySectionTensions(line, s, x);
         out.sectionLowerTension = t.lower;
         out.sectionUpperTension = t.upper;

@@ -51,9 +51,10 @@ struct CatenaryOutput {
     std::vector<Vector3> shape;
     //- Effective tension at the shape points [N] (catenaryTension)
     std::vector<double> shapeTension;
-    //- A line of sections: per section from Q, the tension at its end
-    //  towards Q (lower) and towards P (upper) [N]; the positions of the
-    //  joints from Q, global frame [m] (all empty for a uniform line)
+    //- Per section from Q, the tension at its end towards Q (lower) and
+    //  towards P (upper) [N] (a uniform line: its one section, the anchor
+    //  and fairlead tensions); the positions of the joints from Q, global
+    //  frame [m] (none for a uniform line)
     std::vector<double> sectionLowerTension, sectionUpperTension;
     std::vector<Vector3> joints;
 };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "LineFmuModel.hpp"
+#include "LineSections.hpp"
 #include "catenary/Catenary.hpp"
 #include "common/ConnectorError.hpp"
 
@@ -52,7 +53,14 @@ by the sections' and points' weights; the grounded part may reach over
 several sections and rest a clump weight on the seabed. fmi2Error, naming
 the section or joint, for a buoyant section or a buoy below the touchdown
 point or a sag through the seabed (the line would touch it twice), and for
-a folded line of sections.</p>)";
+a folded line of sections.</p>
+<p>Local variables (read when asked for, not outputs):
+<code>shape.section[k]</code>, the section (1 at B.p) that shape point k
+lies in; <code>section.lowerTension[k]</code>,
+<code>section.upperTension[k]</code> (N), the tension at the ends of
+section k towards B.p and towards A.p; <code>joint.x[k]</code>,
+<code>.y</code>, <code>.z</code> (m, global frame), the joint of sections
+k and k+1; 0 for an absent section or joint.</p>)";
 
 //- Sections of the line, the first (unstretchedLength, EA, weight) included
 constexpr int maxSections = 4;
@@ -145,6 +153,13 @@ CatenaryModel::CatenaryModel()
     d.tension = d.loads;
     d.potentialEnergy = d.loads;
     declareLineOutputs(d);
+    // the sections' variables as locals: the outputs stay the uniform
+    // line's, which importers record by default
+    declareShapeSections();
+    for (const fmuExport::lineSections::Variable& v :
+         fmuExport::lineSections::endVariables(maxSections, "")) {
+        extraLocal(v.name, Shape::scalar, v.unit, v.description);
+    }
 }
 
 connectors::CatenaryParameters
@@ -222,7 +237,16 @@ CatenaryModel::evaluate(const double* values,
     o.V = c.solution.V;
     o.shape = c.shape;
     o.tension = c.shapeTension;
-    return outputs(o);
+    const connectors::CatenaryLine& line = law_.get().parameters().line;
+    o.sectionLengths = {line.length};
+    for (const connectors::CatenarySection& s : line.sections) {
+        o.sectionLengths.push_back(s.length);
+    }
+    fmuExport::ConnectorOutputs all = outputs(o);
+    const std::vector<double> ends = fmuExport::lineSections::endValues(
+        maxSections, c.sectionLowerTension, c.sectionUpperTension, c.joints);
+    all.locals.insert(all.locals.end(), ends.begin(), ends.end());
+    return all;
 }
 
 } // namespace

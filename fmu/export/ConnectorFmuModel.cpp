@@ -1,5 +1,6 @@
 #include "ConnectorFmuModel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -90,6 +91,25 @@ Block ConnectorFmuModel::extraOutput(const std::string& name, Shape shape,
     return block;
 }
 
+Block ConnectorFmuModel::extraLocal(const std::string& name, Shape shape,
+                                    const std::string& unit,
+                                    const std::string& description)
+{
+    VariableTable& t = table();
+    const std::size_t outputsEnd
+        = firstOutput_ + interfaceOutputCount + extraCount_;
+    if (!outputsDeclared_
+        || t.size()
+            != (localCount_ == 0 ? outputsEnd : firstLocal_ + localCount_)) {
+        throw std::logic_error(identity().modelIdentifier + ": local " + name
+                               + " does not follow the outputs and locals");
+    }
+    const Block block = t.local(name, shape, unit, description);
+    firstLocal_ = localCount_ == 0 ? block.first : firstLocal_;
+    localCount_ += block.size;
+    return block;
+}
+
 std::vector<Block> ConnectorFmuModel::positionBlocks() const
 {
     return {A_p, B_p, A.r, A.R, B.r, B.R};
@@ -143,10 +163,14 @@ void ConnectorFmuModel::writeOutputs(double* values,
                                      const ConnectorOutputs& outputs) const
 {
     const std::string& model = identity().modelIdentifier;
-    if (outputs.extra.size() != extraCount_) {
+    if (outputs.extra.size() != extraCount_
+        || outputs.locals.size() != localCount_) {
         throw std::logic_error(
             model + ": " + std::to_string(outputs.extra.size())
-            + " extra output values, expected " + std::to_string(extraCount_));
+            + " extra output values and "
+            + std::to_string(outputs.locals.size()) + " local values, expected "
+            + std::to_string(extraCount_) + " and "
+            + std::to_string(localCount_));
     }
     const connectors::ConnectorResult& r = outputs.loads;
     const double interface[interfaceOutputCount]
@@ -163,18 +187,28 @@ void ConnectorFmuModel::writeOutputs(double* values,
     const std::size_t count = interfaceOutputCount + extraCount_;
     const std::vector<ScalarVariable>& variables
         = this->variables().variables();
+    const auto refuse = [&](const char* kind, fmi2ValueReference vr, double v) {
+        throw std::range_error(model + ": " + kind + " " + variables[vr].name
+                               + " = " + formatDouble(v)
+                               + " is not finite (inputs or parameters too "
+                                 "large)");
+    };
     for (std::size_t i = 0; i < count; ++i) {
         if (!std::isfinite(value(i))) {
-            throw std::range_error(model + ": output "
-                                   + variables[firstOutput_ + i].name + " = "
-                                   + formatDouble(value(i))
-                                   + " is not finite (inputs or parameters "
-                                     "too large)");
+            refuse("output", firstOutput_ + fmi2ValueReference(i), value(i));
+        }
+    }
+    for (std::size_t i = 0; i < localCount_; ++i) {
+        if (!std::isfinite(outputs.locals[i])) {
+            refuse("local", firstLocal_ + fmi2ValueReference(i),
+                   outputs.locals[i]);
         }
     }
     for (std::size_t i = 0; i < count; ++i) {
         values[firstOutput_ + i] = value(i);
     }
+    std::copy(outputs.locals.begin(), outputs.locals.end(),
+              values + firstLocal_);
 }
 
 } // namespace fmuExport

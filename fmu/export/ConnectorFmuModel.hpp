@@ -9,7 +9,8 @@
 //     FMI layer calls it once per parameter set);
 //   - evaluate(): the law's result to the outputs;
 //   - optionally outputs of its own after the 17 interface outputs
-//     (extraOutput(), filled in by evaluate() in declaration order);
+//     (extraOutput(), filled in by evaluate() in declaration order), and
+//     after them local variables (extraLocal(), likewise);
 //   - optionally an internal state through Model's state hooks
 //     (initializeState, doStep, internalState, setInternalState), with
 //     writeOutputs() to publish what a step computed.
@@ -47,17 +48,20 @@ struct ConnectorWording {
 };
 
 //- What one evaluation gives the outputs: the law's loads and diagnostics,
-//  then the values of the model's extra outputs in declaration order
+//  then the values of the model's extra outputs in declaration order, then
+//  those of its local variables
 struct ConnectorOutputs {
     //- Implicit: a model without extra outputs returns its law's result
     ConnectorOutputs(const connectors::ConnectorResult& result,
-                     std::vector<double> extraValues = {})
-        : loads(result), extra(std::move(extraValues))
+                     std::vector<double> extraValues = {},
+                     std::vector<double> localValues = {})
+        : loads(result), extra(std::move(extraValues)),
+          locals(std::move(localValues))
     {
     }
 
     connectors::ConnectorResult loads;
-    std::vector<double> extra;
+    std::vector<double> extra, locals;
 };
 
 //- A connector model's law, built by its setParameters for one parameter
@@ -120,14 +124,21 @@ protected:
                       const std::string& unit, const std::string& description,
                       const std::vector<Block>& dependsOn);
 
+    //- Declares a variable of the model's own that evaluate() computes
+    //  with the outputs but that is no output (causality local: read with
+    //  fmi2GetReal when asked for, not among the outputs importers record
+    //  by default), after the extra outputs and the locals declared before
+    Block extraLocal(const std::string& name, Shape shape,
+                     const std::string& unit, const std::string& description);
+
     //- The connector law built by setParameters, with the previous outputs
     //  in `values`: the outputs for the kinematics of A and B
     virtual ConnectorOutputs
     evaluate(const double* values, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const = 0;
 
-    //- Writes every output; throws std::range_error naming the first
-    //  non-finite one, and writes nothing then
+    //- Writes every output and local; throws std::range_error naming the
+    //  first non-finite one, and writes nothing then
     void writeOutputs(double* values, const ConnectorOutputs& outputs) const;
 
     //- Blocks that the geometry depends on: A.p, B.p, A.r, A.R, B.r, B.R
@@ -154,6 +165,9 @@ private:
     //  extra outputs after them
     fmi2ValueReference firstOutput_ = 0;
     std::size_t extraCount_ = 0;
+    //- First value reference and number of the scalar locals
+    fmi2ValueReference firstLocal_ = 0;
+    std::size_t localCount_ = 0;
 };
 
 } // namespace fmuExport

@@ -22,6 +22,7 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                 : v.causality == Causality::input     ? RealAccess::input
                 : v.causality == Causality::parameter ? RealAccess::parameter
                 : v.causality == Causality::output    ? RealAccess::output
+                : v.causality == Causality::local     ? RealAccess::local
                                                       : RealAccess::none);
     }
     startValues();
@@ -181,7 +182,9 @@ void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
 {
     bool needsOutputs = false;
     for (std::size_t i = 0; i < n; ++i) {
-        needsOutputs |= realAccess(vr[i]) == RealAccess::output;
+        const RealAccess access = realAccess(vr[i]);
+        needsOutputs
+            |= access == RealAccess::output || access == RealAccess::local;
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
@@ -200,6 +203,11 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
             throw UsageError("variable " + variableName(vr[i])
                              + " (value reference " + std::to_string(vr[i])
                              + ") is an output and cannot be set");
+        }
+        if (access == RealAccess::local) {
+            throw UsageError("variable " + variableName(vr[i])
+                             + " (value reference " + std::to_string(vr[i])
+                             + ") is calculated by the FMU and cannot be set");
         }
         if (access == RealAccess::parameter
             && (state_ & (instantiated | initializationMode)) == 0) {

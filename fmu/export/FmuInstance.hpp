@@ -81,7 +81,13 @@ private:
     const ScalarVariable& variable(fmi2ValueReference vr, Type type) const;
 
     //- How a Real value reference may be used, checked on every access
-    enum class RealAccess : unsigned char { input, parameter, output, none };
+    enum class RealAccess : unsigned char {
+        input,
+        parameter,
+        output,
+        local,
+        none
+    };
 
     //- Access of a Real variable; UsageError (from variable()) otherwise
     RealAccess realAccess(fmi2ValueReference vr) const

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "LineSections.hpp"
+
 namespace fmuExport {
 
 namespace {
@@ -66,6 +68,15 @@ void LineFmuModel::declareLineOutputs(const OutputDependencies& d)
     }
 }
 
+void LineFmuModel::declareShapeSections()
+{
+    for (const lineSections::Variable& v :
+         lineSections::shapeVariables(shapePoints)) {
+        extraLocal(v.name, Shape::scalar, v.unit, v.description);
+    }
+    shapeSections_ = true;
+}
+
 ConnectorOutputs LineFmuModel::outputs(const LineOutputs& o) const
 {
     if (o.shape.size() != std::size_t(shapePoints)
@@ -83,7 +94,11 @@ ConnectorOutputs LineFmuModel::outputs(const LineOutputs& o) const
         }
     }
     extra.insert(extra.end(), o.tension.begin(), o.tension.end());
-    return {o.loads, std::move(extra)};
+    std::vector<double> locals;
+    if (shapeSections_) {
+        locals = lineSections::shapeSections(o.sectionLengths, shapePoints);
+    }
+    return {o.loads, std::move(extra), std::move(locals)};
 }
 
 } // namespace fmuExport

@@ -2,7 +2,8 @@
 // mooringLine.fmu). Beyond the interface it words A.p as the fairlead and
 // B.p as the anchor, and adds the line's outputs: end tensions, grounded
 // length, H, V and a fixed number of points along the line with the
-// tension there.
+// tension there; optionally, as local variables, the section of each of
+// those points (LineSections.hpp).
 #ifndef FMU_EXPORT_LINEFMUMODEL_HPP
 #define FMU_EXPORT_LINEFMUMODEL_HPP
 
@@ -21,6 +22,9 @@ struct LineOutputs {
     //  frame [m], and the line's effective tension there [N]
     std::vector<connectors::Vector3> shape;
     std::vector<double> tension;
+    //- Unstretched lengths of the line's sections from B.p [m] (empty: one
+    //  section), for shape.section
+    std::vector<double> sectionLengths;
 };
 
 class LineFmuModel : public ConnectorFmuModel {
@@ -36,12 +40,19 @@ protected:
     //  shape.y[1..N], shape.z[1..N], shape.tension[1..N]
     void declareLineOutputs(const OutputDependencies& d);
 
-    //- The outputs in declaration order; throws std::logic_error for a
-    //  shape or tension of other than shapePoints points
+    //- Declares the locals shape.section[1..N] (after every output)
+    void declareShapeSections();
+
+    //- The outputs in declaration order, and shape.section when declared
+    //  (the first locals); throws std::logic_error for a shape or tension
+    //  of other than shapePoints points
     ConnectorOutputs outputs(const LineOutputs& line) const;
 
     //- The H and V outputs (the solution of the previous evaluation)
     Block H, V;
+
+private:
+    bool shapeSections_ = false;
 };
 
 } // namespace fmuExport

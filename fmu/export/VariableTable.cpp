@@ -76,6 +76,13 @@ Block VariableTable::output(const std::string& name, Shape shape,
                dependsOn);
 }
 
+Block VariableTable::local(const std::string& name, Shape shape,
+                           const std::string& unit,
+                           const std::string& description)
+{
+    return add(name, shape, Causality::local, unit, description, {}, {});
+}
+
 Block VariableTable::booleanConstant(const std::string& name,
                                      const std::string& description, bool value)
 {
@@ -99,7 +106,9 @@ Block VariableTable::add(const std::string& name, Shape shape,
                          const std::vector<Block>& dependsOn)
 {
     const std::size_t n = shapeSize(shape);
-    if (causality != Causality::output && start.size() != n) {
+    const bool calculated
+        = causality == Causality::output || causality == Causality::local;
+    if (!calculated && start.size() != n) {
         throw std::logic_error("variable " + name + ": " + std::to_string(n)
                                + " start values expected, got "
                                + std::to_string(start.size()));
@@ -133,11 +142,11 @@ Block VariableTable::add(const std::string& name, Shape shape,
             ? Variability::fixed
             : Variability::continuous;
         v.initial = causality == Causality::parameter ? Initial::exact
-            : causality == Causality::output          ? Initial::calculated
+            : calculated                              ? Initial::calculated
                                                       : Initial::none;
         v.unit = unit;
         v.description = elementDescription(description, shape, i);
-        v.start = causality == Causality::output ? 0.0 : start[i];
+        v.start = calculated ? 0.0 : start[i];
         v.dependencies = dependencies;
         variables_.push_back(v);
     }

@@ -62,6 +62,11 @@ public:
                  const std::string& description,
                  const std::vector<Block>& dependsOn);
 
+    //- Continuous local variable (initial calculated): computed by the
+    //  model like an output, readable, but no output
+    Block local(const std::string& name, Shape shape, const std::string& unit,
+                const std::string& description);
+
     //- Boolean constant (causality local, variability constant)
     Block booleanConstant(const std::string& name,
                           const std::string& description, bool value);

@@ -287,6 +287,7 @@ MooringLineModel::MooringLineModel()
     for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
+    declareShapeSections();
     // declared last: the variables above keep their value references
     flowInertia_ = t.parameter(
         "flowInertia", Shape::scalar, "1",
@@ -376,6 +377,8 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     o.V = m.V;
     o.shape = m.shape;
     o.tension = m.shapeTension;
+    o.sectionLengths
+        = mooringLineFmu::SectionVariables::lengths(law_.get().parameters());
     fmuExport::ConnectorOutputs all = outputs(o);
     const std::vector<double> sections
         = mooringLineFmu::SectionVariables::values(m);

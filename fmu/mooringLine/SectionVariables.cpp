@@ -174,47 +174,25 @@ void SectionVariables::read(const double* values,
 
 std::vector<SectionVariables::Output> SectionVariables::outputs()
 {
-    std::vector<Output> o;
-    for (const char* end : {"lower", "upper"}) {
-        for (int k = 1; k <= maxSections; ++k) {
-            o.push_back(
-                {std::string("section.") + end + "Tension[" + number(k) + "]",
-                 "N",
-                 std::string("tension of section ") + number(k)
-                     + " (from B.p) in its segment at its "
-                     + (end[0] == 'l' ? "lower end (towards B.p)"
-                                      : "upper end (towards A.p)")
-                     + "; 0 without the section"});
-        }
-    }
-    for (const char* axis : {"x", "y", "z"}) {
-        for (int k = 1; k < maxSections; ++k) {
-            o.push_back({std::string("joint.") + axis + "[" + number(k) + "]",
-                         "m",
-                         std::string(axis) + " of the joint of sections "
-                             + number(k) + " and " + number(k + 1)
-                             + " (global frame); 0 without it"});
-        }
-    }
-    return o;
+    return fmuExport::lineSections::endVariables(maxSections,
+                                                 " in its segment");
 }
 
 std::vector<double>
 SectionVariables::values(const connectors::MooringLineOutput& m)
 {
-    std::vector<double> v;
-    for (const auto* tensions :
-         {&m.sectionLowerTension, &m.sectionUpperTension}) {
-        for (std::size_t k = 0; k < std::size_t(maxSections); ++k) {
-            v.push_back(k < tensions->size() ? (*tensions)[k] : 0.0);
-        }
+    return fmuExport::lineSections::endValues(
+        maxSections, m.sectionLowerTension, m.sectionUpperTension, m.joints);
+}
+
+std::vector<double>
+SectionVariables::lengths(const connectors::MooringLineParameters& p)
+{
+    std::vector<double> l = {p.length};
+    for (const connectors::LineSection& s : p.sections) {
+        l.push_back(s.length);
     }
-    for (int axis = 0; axis < 3; ++axis) {
-        for (std::size_t k = 0; k + 1 < std::size_t(maxSections); ++k) {
-            v.push_back(k < m.joints.size() ? m.joints[k][axis] : 0.0);
-        }
-    }
-    return v;
+    return l;
 }
 
 } // namespace mooringLineFmu

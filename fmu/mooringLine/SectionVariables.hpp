@@ -1,13 +1,15 @@
 // The sections of mooringLine.fmu after the first and the points at their
 // joints: their parameters (section<k>.*, joint<k>.*), read into the law's
 // MooringLineParameters::sections, and their outputs (the tension at each
-// section's ends, the joints' positions). Declared once, here.
+// section's ends, the joints' positions). Declared once, here; the outputs'
+// names are those of every line FMU (fmu/export/LineSections.hpp).
 #ifndef FMU_MOORINGLINE_SECTIONVARIABLES_HPP
 #define FMU_MOORINGLINE_SECTIONVARIABLES_HPP
 
 #include <string>
 #include <vector>
 
+#include "LineSections.hpp"
 #include "VariableTable.hpp"
 #include "mooringLine/MooringLine.hpp"
 
@@ -36,13 +38,14 @@ public:
 
     //- The outputs, in order: section.lowerTension[1..maxSections],
     //  section.upperTension[...], joint.x[1..maxSections - 1], joint.y,
-    //  joint.z
-    struct Output {
-        std::string name, unit, description;
-    };
+    //  joint.z (named and described as catenary.fmu's, LineSections.hpp)
+    using Output = fmuExport::lineSections::Variable;
     static std::vector<Output> outputs();
     //- Their values for the law's output (0 for absent sections and joints)
     static std::vector<double> values(const connectors::MooringLineOutput& m);
+    //- The unstretched lengths of the sections from B.p [m]
+    static std::vector<double>
+    lengths(const connectors::MooringLineParameters& p);
 
 private:
     //- Per section k = 2..maxSections: its joint's four parameters, then

@@ -13,17 +13,23 @@ the benchmarks and the tests.
   foamdict        OpenFOAM dictionaries parsed into nested dictionaries
                   (#include, $macros): a restraint's entries
   scene           what tutorials/bin/renderScene draws, read from a case
+  scenedraw       its drawing through ParaView's VTK (pvbatch): water,
+                  tank, bodies, lines, connectors, labels
+  sceneview       its camera and picture
   connectorscene  its springs, dampers and hinges: kinds, attachment
                   points placed by the bodies' motion, their shapes
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
   plots           figures through gnuplot: terminal, window, a body's response
-  cli             the scripts' command lines (argparse) and error exits
+  cli             the scripts' command lines (argparse), error exits and
+                  scratch folders
   bridgecase      throw-away rigid-body cases with no fluid, run by
-                  rigidBodySim (the bridge's tests and benchmarks)
+                  rigidBodySim (the bridge's tests and benchmarks), and
+                  their rigidBodyMotion dictionaries
   implicitcase    the same loading implicitNewmark's library; the
                   single-body spring model
   sixdofcase      sixDoFRigidBodyMotion cases with no fluid, run by
                   sixDoFSim
+  mooringcase     the mooring line of the bridge's moored-body cases
 
 etc/bashrc puts the folder above this package on PYTHONPATH. Only
 harmonics needs numpy (Debian's python3-numpy, /usr/bin/python3).

@@ -133,3 +133,83 @@ def rigid_body(name, mass, inertia, origin, joint, parent="root"):
 
 def vec(v):
     return "(" + " ".join(repr(float(x)) for x in v) + ")"
+
+
+def value(v):
+    """An entry's value as OpenFOAM reads it: text as it stands, a tuple or
+    list as a vector (vec), a float by repr (every digit), else str."""
+    if isinstance(v, str):
+        return v
+    if isinstance(v, (tuple, list)):
+        return vec(v)
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def entries(values, indent):
+    """Entries 'key value;', one a line, indented by indent spaces; a value
+    that is a dict is a sub-dictionary, a None value is left out."""
+    pad = " " * indent
+    text = ""
+    for key, v in values.items():
+        if isinstance(v, dict):
+            text += f"{pad}{key}\n{pad}{{\n{entries(v, indent + 4)}{pad}}}\n"
+        elif v is not None:
+            text += f"{pad}{key} {value(v)};\n"
+    return text
+
+
+def restraint(name, values, extra="", indent=8):
+    """A restraint of rigidBodyMotionCoeffs' restraints: name { values },
+    and extra, entries as text, after them."""
+    pad = " " * indent
+    return f"{pad}{name}\n{pad}{{\n{entries(values, indent + 4)}" + (
+        f"{pad}    {extra}\n" if extra else "") + f"{pad}}}\n"
+
+
+def fmu_restraint(name, fmu, body, parameters, body_b=None, extra="", indent=8,
+                  type_key="type", **options):
+    """An fmuConnector restraint: the FMU file fmu, the bodies body and
+    body_b (None: the world), the FMU's parameters {name: value} (or their
+    entries as text, on one line), further entries as options (report,
+    isolation, ...) and as text, extra. indent and type_key: those of
+    sixDoFRigidBodyMotion's restraints (sixdofcase.fmu_restraint)."""
+    if isinstance(parameters, str):
+        extra = f"parameters {{ {parameters} }}" + (f"\n{' ' * indent}    {extra}" if extra else "")
+        parameters = None
+    return restraint(name, {type_key: "fmuConnector", "body": body, "bodyB": body_b,
+                            "fmu": f'"{fmu}"', **options, "parameters": parameters}, extra, indent)
+
+
+def solver_entry(solver, **options):
+    """The solver sub-dictionary: a type and its options."""
+    settings = "".join(f" {key} {v};" for key, v in options.items())
+    return f"solver {{ type {solver};{settings} }}"
+
+
+def rigid_body_model(bodies, restraints, solver="symplectic", g=(0, 0, 0), extra=""):
+    """rigidBodyMotionCoeffs' entries: the solver (a type, or a whole entry
+    of solver_entry), further entries extra (qDot, ...), gravity g (None:
+    left out, OpenFOAM's zero), the bodies' text (rigid_body) and the
+    restraints' (restraint, fmu_restraint)."""
+    if not solver.startswith("solver"):
+        solver = solver_entry(solver)
+    gravity = "" if g is None else f"    g {value(g)};\n"
+    return (f"\n    {solver}\n{extra}{gravity}    bodies\n    {{\n{bodies}\n    }}\n"
+            f"    restraints\n    {{\n{restraints}    }}\n")
+
+
+def linear_spring(name, body, anchor, attachment, stiffness, damping, rest_length):
+    """OpenFOAM's linearSpring restraint from the world point anchor to the
+    point attachment of body (body frame, from its frame origin)."""
+    return restraint(name, {"type": "linearSpring", "body": body, "anchor": anchor,
+                            "refAttachmentPt": attachment, "stiffness": stiffness,
+                            "damping": damping, "restLength": rest_length})
+
+
+def spring_fmu(name, body, anchor, attachment, stiffness, damping, rest_length,
+               fmu="linearSpring", **options):
+    """The same spring as linear_spring through the linearSpring FMU (fmu:
+    its name in build/fmus, fmi3/linearSpring for the FMI 3.0 one)."""
+    return fmu_restraint(name, fmu_path(fmu), body,
+                         {"stiffness": stiffness, "damping": damping, "restLength": rest_length,
+                          "A.p": attachment, "B.p": anchor}, **options)

@@ -3,7 +3,10 @@
 printing the script's docstring, and errors that name the script."""
 
 import argparse
+import contextlib
+import shutil
 import sys
+import tempfile
 
 
 def parser(prog, doc):
@@ -29,6 +32,24 @@ def add_no_plot(p):
 def add_window(p):
     p.add_argument("-window", nargs=2, type=float, metavar=("T0", "T1"),
                    help="the analysis window in s (default: see above)")
+
+
+def add_keep(p):
+    p.add_argument("-keep", action="store_true", help="keep the runs' folder")
+
+
+@contextlib.contextmanager
+def scratch(prefix, keep):
+    """A temporary folder for a script's runs, removed when it is done
+    (also by an exit), or with keep (-keep) kept and its path printed."""
+    work = tempfile.mkdtemp(prefix=prefix)
+    try:
+        yield work
+    finally:
+        if keep:
+            print(f"runs kept in {work}")
+        else:
+            shutil.rmtree(work, ignore_errors=True)
 
 
 def run(prog, doc, analyse, argv, window=False):

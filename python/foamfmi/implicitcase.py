@@ -4,7 +4,8 @@ library, runs that may diverge, and the single-body spring model.
 import math
 import os
 
-from foamfmi.bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import (Case, linear_spring, rigid_body_model, solver_entry,  # noqa: F401
+                                spring_fmu, vec)
 
 LIBS = 'libs ("libfoamFmiBridge.so" "libimplicitRigidBodySolvers.so");'
 
@@ -36,12 +37,6 @@ def run_bodies(name, model, end_time, delta_t, n_iter=1):
     return b, log
 
 
-def solver_entry(solver, **options):
-    """The solver sub-dictionary: a type and its options."""
-    entries = "".join(f" {key} {value};" for key, value in options.items())
-    return f"solver {{ type {solver};{entries} }}"
-
-
 def slider(name, mass, origin=(0, 0, 0), joint="Pz"):
     """A body on a one-DoF joint, frame origin at its centre of mass."""
     return (
@@ -65,42 +60,11 @@ def spring_model(solver, k, with_fmu=True):
     """Bodies 'builtin' (linearSpring) and 'fmu' (the linearSpring FMU),
     identical and independent, in one model."""
     bodies = slider("builtin", MASS) + (slider("fmu", MASS) if with_fmu else "")
-    fmu_restraint = f"""
-        fmuSpring
-        {{
-            type fmuConnector;
-            body fmu;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness {k!r};
-                damping 0;
-                restLength {REST_LENGTH!r};
-                A.p (0 0 0);
-                B.p {vec(ANCHOR)};
-            }}
-        }}"""
-    return f"""
-    {solver}
-    g (0 0 0);
-    bodies
-    {{
-{bodies}
-    }}
-    restraints
-    {{
-        builtinSpring
-        {{
-            type linearSpring;
-            body builtin;
-            anchor {vec(ANCHOR)};
-            refAttachmentPt (0 0 0);
-            stiffness {k!r};
-            damping 0;
-            restLength {REST_LENGTH!r};
-        }}{fmu_restraint if with_fmu else ""}
-    }}
-"""
+    spring = (ANCHOR, (0, 0, 0), k, 0, REST_LENGTH)
+    restraints = linear_spring("builtinSpring", "builtin", *spring)
+    if with_fmu:
+        restraints += spring_fmu("fmuSpring", "fmu", *spring)
+    return rigid_body_model(bodies, restraints, solver)
 
 
 def spring_errors(b, body, omega, dt):

@@ -4,9 +4,15 @@ Like bridgecase.Case, but the model is constant/sixDoFBodies: 'bodies', one
 sixDoFRigidBodyMotion dictionary per body (named by its keyword, as a patch
 names a body of the sixDoFRigidBodyDisplacement condition), and 'g'.
 """
+import functools
 import os
 
+from foamfmi import bridgecase
 from foamfmi.bridgecase import Case, foam_file, fmu_path, vec  # noqa: F401
+
+# An fmuConnector restraint in a body's restraints (bridgecase.fmu_restraint)
+fmu_restraint = functools.partial(bridgecase.fmu_restraint, indent=12,
+                                  type_key="sixDoFRigidBodyMotionRestraint")
 
 
 def sixdof_body(mass, inertia, centre, solver="symplectic", restraints=""):

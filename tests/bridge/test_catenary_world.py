@@ -20,11 +20,10 @@ offset is printed, not checked.
 import math
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, vec
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model
+from foamfmi.mooringcase import DEPTH, EA, L, W, catenary_parameters, lumped_parameters, push_and_damper
 
-L, EA, W, DEPTH, MASS = 100.0, 5e7, 700.0, 40.0, 1e3
-DIAMETER, RHO, G = 0.1, 1025.0, 9.81
-MU = W / G + RHO * math.pi * DIAMETER ** 2 / 4  # dry mass for weight W
+MASS = 1e3
 ANCHOR = (0.0, 0.0, -DEPTH)
 
 
@@ -53,92 +52,18 @@ def span(h):
     return h / W * (math.asinh(v / h) - math.asinh(b)) + h * L / EA, 0.0
 
 
-def body(name, x0):
-    return f"""
-    {name}
-    {{
-        type rigidBody;
-        parent root;
-        mass {MASS};
-        centreOfMass (0 0 0);
-        inertia (1e3 0 0 1e3 0 1e3);
-        transform (1 0 0 0 1 0 0 0 1) ({x0} 0 0);
-        joint {{ type Px; }}
-    }}
-"""
-
-
-def restraints(name, force, damping):
-    return f"""
-        {name}Push
-        {{
-            type externalForce;
-            body {name};
-            location (0 0 0);
-            force constant ({force} 0 0);
-        }}
-        {name}Damper
-        {{
-            type linearDamper;
-            body {name};
-            coeff {damping};
-        }}
-"""
-
-
 def model(force, x0, damping):
-    return f"""
-    solver {{ type Newmark; }}
-    g (0 0 -9.81);
-    bodies
-    {{
-{body("hull", x0)}
-{body("dynamic", x0)}
-    }}
-    restraints
-    {{
-{restraints("hull", force, damping)}
-{restraints("dynamic", force, damping)}
-        mooring
-        {{
-            type fmuConnector;
-            body hull;
-            fmu "{fmu_path('catenary')}";
-            report off;
-            parameters
-            {{
-                unstretchedLength {L};
-                EA {EA};
-                weight {W};
-                seabedContact 1;
-                seabedFriction 0;
-                A.p (0 0 0);
-                B.p {vec(ANCHOR)};
-            }}
-        }}
-        line
-        {{
-            type fmuConnector;
-            body dynamic;
-            fmu "{fmu_path('mooringLine')}";
-            report off;
-            parameters
-            {{
-                unstretchedLength {L};
-                EA {EA};
-                axialDamping 2e5;
-                massPerLength {MU!r};
-                diameter {DIAMETER};
-                waterDensity {RHO};
-                gravity {G};
-                seabedContact 1;
-                segments 20;
-                A.p (0 0 0);
-                B.p {vec(ANCHOR)};
-            }}
-        }}
-    }}
-"""
+    lines = (fmu_restraint("mooring", fmu_path("catenary"), "hull",
+                           {**catenary_parameters(seabedFriction=0), "A.p": "(0 0 0)", "B.p": ANCHOR},
+                           report="off")
+             + fmu_restraint("line", fmu_path("mooringLine"), "dynamic",
+                             {**lumped_parameters(20), "A.p": "(0 0 0)", "B.p": ANCHOR},
+                             report="off"))
+    return rigid_body_model(
+        "".join(rigid_body(name, MASS, "1e3", (x0, 0, 0), "Px") for name in ("hull", "dynamic")),
+        "".join(push_and_damper(f"{name}Push", f"{name}Damper", name, force, damping)
+                for name in ("hull", "dynamic")) + lines,
+        "Newmark", g=(0, 0, -9.81))
 
 
 def main():

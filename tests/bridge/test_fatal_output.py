@@ -34,8 +34,9 @@ import subprocess
 import sys
 import time
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model, summary
 from foamfmi.sixdofcase import SixDoFCase, sixdof_body
+from foamfmi.sixdofcase import fmu_restraint as sixdof_fmu_restraint
 
 DT, FAULT_TIME, END = 0.01, 0.3, 1.0
 
@@ -50,68 +51,22 @@ def faulty_fmu():
 def catenary_line():
     """A slack catenary from the weight to an anchor on the seabed: a
     connector with a line shape, written as VTK at write times."""
-    return f"""
-        line
-        {{
-            type fmuConnector;
-            body weight;
-            fmu "{fmu_path('catenary')}";
-            parameters
-            {{
-                unstretchedLength 3;
-                EA 1e5;
-                weight 0.5;
-                seabedContact 1;
-                A.p {vec((0, 0, 0))};
-                B.p {vec((2, 0, -1.5))};
-            }}
-        }}"""
+    return fmu_restraint("line", fmu_path("catenary"), "weight", {
+        "unstretchedLength": 3, "EA": "1e5", "weight": 0.5, "seabedContact": 1,
+        "A.p": (0, 0, 0), "B.p": (2, 0, -1.5)})
 
 
 def model(fmu, fault="nanTime", fault_time=FAULT_TIME, extra=""):
-    return f"""
-    solver {{ type symplectic; }}
-    g (0 0 -9.81);
-    bodies
-    {{
-{rigid_body("weight", 1.0, 0.1, (0, 0, 0), "Pz")}
-    }}
-    restraints
-    {{
-        spring
-        {{
-            type fmuConnector;
-            body weight;
-            fmu "{fmu}";
-            parameters
-            {{
-                stiffness 100;
-                restLength 0.5;
-                {fault} {fault_time};
-                A.p {vec((0, 0, 0))};
-                B.p {vec((0, 0, 0.5))};
-            }}
-        }}{extra}
-    }}
-"""
+    spring = fmu_restraint("spring", fmu, "weight", {
+        "stiffness": 100, "restLength": 0.5, fault: fault_time, "A.p": (0, 0, 0), "B.p": (0, 0, 0.5)})
+    return rigid_body_model(rigid_body("weight", 1.0, 0.1, (0, 0, 0), "Pz"), spring + extra,
+                            g=(0, 0, -9.81))
 
 
 def steady_spring():
     """A second connector, evaluated after the faulty one."""
-    return f"""
-        steady
-        {{
-            type fmuConnector;
-            body weight;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness 1;
-                restLength 0.5;
-                A.p {vec((0, 0, 0))};
-                B.p {vec((0, 0, 0.5))};
-            }}
-        }}"""
+    return fmu_restraint("steady", fmu_path("linearSpring"), "weight", {
+        "stiffness": 1, "restLength": 0.5, "A.p": (0, 0, 0), "B.p": (0, 0, 0.5)})
 
 
 def steps_to(t):
@@ -231,18 +186,8 @@ def main():
     case.cleanup()
 
     # sixDoFSim's bodies file: a NaN output in the step from 0.3
-    spring = f"""            spring
-            {{
-                sixDoFRigidBodyMotionRestraint fmuConnector;
-                fmu "{fmu}";
-                body weight;
-                parameters
-                {{
-                    stiffness 100; restLength 0.5; nanTime {FAULT_TIME};
-                    A.p {vec((0, 0, 0))}; B.p {vec((0, 0, 0.5))};
-                }}
-            }}
-"""
+    spring = sixdof_fmu_restraint("spring", fmu, "weight", {
+        "stiffness": 100, "restLength": 0.5, "nanTime": FAULT_TIME, "A.p": (0, 0, 0), "B.p": (0, 0, 0.5)})
     case = SixDoFCase("fatalOutputSixDoF", {"weight": sixdof_body(1.0, 0.1, (0, 0, 0), "symplectic", spring)},
                       END, DT, write_interval=10 * END, g=(0, 0, -9.81))
     case.run(expect_failure=True)

@@ -15,7 +15,7 @@ spring FMU, no gravity, no damping.
 import math
 import sys
 
-from foamfmi.bridgecase import check, check_order, fmu_path, vec
+from foamfmi.bridgecase import check, check_order, rigid_body_model, spring_fmu, vec
 from foamfmi.implicitcase import ImplicitCase, run_bodies, solver_entry
 
 M1, M2, L0, STRETCH, INERTIA = 2.0, 3.0, 1.0, 0.1, 0.1
@@ -41,33 +41,9 @@ def model(solver, k, pA, pB, spin=False):
     x2 = L0 + STRETCH + pA[0] - pB[0]
     # DoF: body1 Pxyz, Rs (body-frame angular velocity), body2 Pxyz, Rs
     qdot = f"qDot (0 0 0 {SPIN1} 0 0 0 0 0 0 0 {SPIN2});" if spin else ""
-    return f"""
-    {solver}
-    {qdot}
-    g (0 0 0);
-    bodies
-    {{
-{body("body1", M1, (0, 0, 0))}{body("body2", M2, (x2, pA[1] - pB[1], pA[2] - pB[2]))}
-    }}
-    restraints
-    {{
-        spring
-        {{
-            type fmuConnector;
-            body body1;
-            bodyB body2;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness {k!r};
-                damping 0;
-                restLength {L0};
-                A.p {vec(pA)};
-                B.p {vec(pB)};
-            }}
-        }}
-    }}
-"""
+    bodies = body("body1", M1, (0, 0, 0)) + body("body2", M2, (x2, pA[1] - pB[1], pA[2] - pB[2]))
+    spring = spring_fmu("spring", "body1", pB, pA, k, 0, L0, body_b="body2")
+    return rigid_body_model(bodies, spring, solver, extra=f"    {qdot}\n")
 
 
 def run(solver, k, pA, pB, dt, end_time, n_iter=1, spin=False):

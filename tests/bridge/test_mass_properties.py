@@ -11,48 +11,30 @@ inertia in the hull's frame, and buoy's as B; a connector from buoy to the
 world leaves B's mass inputs at their start values.
 """
 import os
-import shutil
 import sys
-import tempfile
 
-from foamfmi.bridgecase import Case
+from foamfmi.bridgecase import Case, entries, fmu_restraint, rigid_body_model, summary, vec
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "massEcho"))
 import build  # noqa: E402
 
 
+def body(mass, centre, inertia, origin, **links):
+    """A rigidBody: mass, centre of mass and inertia about it (body frame),
+    frame origin, and its parent and joint or the body it is merged with."""
+    return {"type": "rigidBody", **links, "mass": mass, "centreOfMass": centre,
+            "inertia": inertia, "transform": f"(1 0 0 0 1 0 0 0 1) {vec(origin)}"}
+
+
 def model(fmu):
-    return f"""
-    solver {{ type Newmark; }}
-    bodies
-    {{
-        hull
-        {{
-            type rigidBody; parent root; mass 2; centreOfMass (0.1 0 0);
-            inertia (0.1 0 0 0.2 0 0.3);
-            transform (1 0 0 0 1 0 0 0 1) (0 0 0);
-            joint {{ type floating; }}
-        }}
-        lid
-        {{
-            type rigidBody; mergeWith hull; mass 1; centreOfMass (0 0 0);
-            inertia (0.01 0 0 0.01 0 0.01);
-            transform (1 0 0 0 1 0 0 0 1) (0 0 0.2);
-        }}
-        buoy
-        {{
-            type rigidBody; parent root; mass 3; centreOfMass (0 0.05 0);
-            inertia (0.4 0 0 0.4 0 0.4);
-            transform (1 0 0 0 1 0 0 0 1) (1 0 0);
-            joint {{ type floating; }}
-        }}
-    }}
-    restraints
-    {{
-        echo {{ type fmuConnector; fmu "{fmu}"; body hull; bodyB buoy; }}
-        echoWorld {{ type fmuConnector; fmu "{fmu}"; body buoy; }}
-    }}
-"""
+    floating = {"parent": "root", "joint": {"type": "floating"}}
+    bodies = {
+        "hull": body(2, (0.1, 0, 0), "(0.1 0 0 0.2 0 0.3)", (0, 0, 0), **floating),
+        "lid": body(1, (0, 0, 0), "(0.01 0 0 0.01 0 0.01)", (0, 0, 0.2), mergeWith="hull"),
+        "buoy": body(3, (0, 0.05, 0), "(0.4 0 0 0.4 0 0.4)", (1, 0, 0), **floating),
+    }
+    return rigid_body_model(entries(bodies, 8), fmu_restraint("echo", fmu, "hull", None, "buoy")
+                            + fmu_restraint("echoWorld", fmu, "buoy", None), "Newmark", g=None)
 
 
 def merged():
@@ -79,32 +61,23 @@ def expected(prefix, m, c, J):
     return v
 
 
-def check(case, name, values):
-    out = case.connector(name)
+def main():
+    with build.built() as fmu:
+        case = Case("massProperties", model(fmu), 0.01, 0.001)
+        case.run(n_iter=2)
+    m, c, J = merged()
     # The merged inertia is a sum of a few products of the inputs:
     # round-off 1e-15; 1e-14 leaves room and fails on any wrong term
-    worst = max(abs(out["echo." + k][-1] - v) for k, v in values.items())
-    ok = worst <= 1e-14
-    print(f"{'PASS' if ok else 'FAIL'} {name}: largest difference {worst:.3e}")
-    return not ok
-
-
-def main():
-    tmp = tempfile.mkdtemp(prefix="massEcho.")
-    fmu = build.build(tmp)
-    case = Case("massProperties", model(fmu), 0.01, 0.001)
-    case.run(n_iter=2)
-    m, c, J = merged()
-    failures = check(case, "echo", {**expected("A", m, c, J),
-                                    **expected("B", 3.0, (0, 0.05, 0), [[0.4, 0, 0], [0, 0.4, 0], [0, 0, 0.4]])})
+    rows = {name: {k: v[-1] for k, v in case.connector(name).items()} for name in ("echo", "echoWorld")}
+    failures = build.check_echo("echo", rows["echo"], {
+        **expected("A", m, c, J),
+        **expected("B", 3.0, (0, 0.05, 0), [[0.4, 0, 0], [0, 0.4, 0], [0, 0, 0.4]])}, 1e-14)
     # B, the world, keeps its start values: mass 1, the rest 0
-    failures += check(case, "echoWorld", {
+    failures += build.check_echo("echoWorld", rows["echoWorld"], {
         **expected("A", 3.0, (0, 0.05, 0), [[0.4, 0, 0], [0, 0.4, 0], [0, 0, 0.4]]),
-        **expected("B", 1.0, (0, 0, 0), [[0] * 3] * 3)})
+        **expected("B", 1.0, (0, 0, 0), [[0] * 3] * 3)}, 1e-14)
     case.cleanup()
-    shutil.rmtree(tmp, ignore_errors=True)
-    print("all passed" if not failures else f"{failures} failed")
-    return 1 if failures else 0
+    return summary(2, failures)
 
 
 if __name__ == "__main__":

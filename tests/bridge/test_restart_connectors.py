@@ -24,7 +24,7 @@ import os
 import shutil
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, vec
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, linear_spring, rigid_body, rigid_body_model
 from foamfmi.implicitcase import ImplicitCase
 import test_catenary_world as catenary
 import test_hinge as hinge
@@ -36,39 +36,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "customConnecto
 def damper_model():
     """A body on a vertical slider, held by OpenFOAM's linearSpring and
     damped by the linearDamper FMU towards the fixed world."""
-    return f"""
-    solver {{ type Newmark; }}
-    g (0 0 -9.81);
-    bodies
-    {{
-{rigid_body("buoy", 2.0, 0.1, (0, 0, 0.3), "Pz")}
-    }}
-    restraints
-    {{
-        spring
-        {{
-            type linearSpring;
-            body buoy;
-            anchor (0 0 1);
-            refAttachmentPt (0 0 0);
-            stiffness 200;
-            damping 0;
-            restLength 0.5;
-        }}
-        damper
-        {{
-            type fmuConnector;
-            body buoy;
-            fmu "{fmu_path('linearDamper')}";
-            parameters
-            {{
-                damping 3;
-                A.p {vec((0, 0, 0))};
-                B.p {vec((0, 0, 1))};
-            }}
-        }}
-    }}
-"""
+    return rigid_body_model(
+        rigid_body("buoy", 2.0, 0.1, (0, 0, 0.3), "Pz"),
+        linear_spring("spring", "buoy", (0, 0, 1), (0, 0, 0), 200, 0, 0.5)
+        + fmu_restraint("damper", fmu_path("linearDamper"), "buoy",
+                        {"damping": 3, "A.p": (0, 0, 0), "B.p": (0, 0, 1)}),
+        "Newmark", g=(0, 0, -9.81))
 
 
 # Folders made for a scene, removed at the end

@@ -16,44 +16,21 @@ import os
 import shutil
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model, summary, vec
 from foamfmi.sixdofcase import SixDoFCase, sixdof_body
+from foamfmi.sixdofcase import fmu_restraint as sixdof_fmu_restraint
 
 PARAMETERS = f"stiffness 50; damping 0.5; restLength 0.5; A.p {vec((0.1, 0, 0.05))}; B.p {vec((0.3, 0.2, 1.2))};"
 
 
 def model(fmu, extra):
-    return f"""
-    solver {{ type symplectic; }}
-    g (0 0 -9.81);
-    bodies
-    {{
-{rigid_body("hull", 2, 0.1, (0, 0, 0), "floating")}
-    }}
-    restraints
-    {{
-        mooring
-        {{
-            type fmuConnector;
-            body hull;
-            fmu "{fmu}";
-            {extra}
-            parameters {{ {PARAMETERS} }}
-        }}
-    }}
-"""
+    return rigid_body_model(rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+                            fmu_restraint("mooring", fmu, "hull", PARAMETERS, extra=extra),
+                            g=(0, 0, -9.81))
 
 
 def sixdof_bodies(fmu, extra):
-    restraint = f"""            mooring
-            {{
-                sixDoFRigidBodyMotionRestraint fmuConnector;
-                fmu "{fmu}";
-                body hull;
-                {extra}
-                parameters {{ {PARAMETERS} }}
-            }}
-"""
+    restraint = sixdof_fmu_restraint("mooring", fmu, "hull", PARAMETERS, extra=extra)
     return {"hull": sixdof_body(2.0, 0.1, (0, 0, 0), restraints=restraint)}
 
 

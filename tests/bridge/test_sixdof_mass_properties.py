@@ -11,25 +11,13 @@ massEcho/massEcho.c) returns no load and echoes them as outputs.
 2. Two bodies: B's are body 2's.
 """
 import os
-import shutil
 import sys
-import tempfile
 
-from foamfmi.sixdofcase import SixDoFCase, sixdof_body, vec
+from foamfmi.bridgecase import summary
+from foamfmi.sixdofcase import SixDoFCase, fmu_restraint, sixdof_body, vec
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "massEcho"))
 import build  # noqa: E402
-
-
-def restraint(fmu, body_b=None):
-    b = f"\n                bodyB {body_b};" if body_b else ""
-    return f"""            echo
-            {{
-                sixDoFRigidBodyMotionRestraint fmuConnector;
-                fmu "{fmu}";
-                body cube1;{b}
-            }}
-"""
 
 
 def last_row(case):
@@ -37,49 +25,38 @@ def last_row(case):
     return {k: v[-1] for k, v in out.items()}
 
 
-def expect(row, values, failures, what):
+def main():
+    inertia = (0.1, 0.2, 0.3)
+    with build.built() as fmu:
+        body = sixdof_body(2.5, 0.1, (0, 0, 0.6), restraints=fmu_restraint("echo", fmu, "cube1", None))
+        body = body.replace("momentOfInertia (0.1 0.1 0.1)", f"momentOfInertia {vec(inertia)}")
+        body += ("        constraints { hinge { sixDoFRigidBodyMotionConstraint point;"
+                 " centreOfRotation (0 0 0.8); } }\n")
+        world = SixDoFCase("sixdofMass.world", {"cube1": body}, 0.01, 0.001)
+        world.run(n_iter=2)
+
+        echo = fmu_restraint("echo", fmu, "cube1", None, "cube2")
+        b1 = sixdof_body(2.0, 0.1, (0, 0, 0), restraints=echo)
+        b2 = sixdof_body(3.0, 0.4, (1, 0, 0), restraints=echo)
+        two = SixDoFCase("sixdofMass.two", {"cube1": b1, "cube2": b2}, 0.01, 0.001)
+        two.run(n_iter=2)
+
     # Sums and differences of a few doubles (the parallel-axis term added
     # by sixDoFRigidBodyMotion and taken off by the bridge): 1e-14
-    worst = max(abs(row["echo." + k] - v) for k, v in values.items())
-    ok = worst <= 1e-14
-    print(f"{'PASS' if ok else 'FAIL'} {what}: largest difference {worst:.3e}")
-    return failures + (not ok)
-
-
-def main():
-    failures = 0
-    tmp = tempfile.mkdtemp(prefix="massEcho.")
-    fmu = build.build(tmp)
-    inertia = (0.1, 0.2, 0.3)
-
-    body = sixdof_body(2.5, 0.1, (0, 0, 0.6), restraints=restraint(fmu))
-    body = body.replace("momentOfInertia (0.1 0.1 0.1)", f"momentOfInertia {vec(inertia)}")
-    body += ("        constraints { hinge { sixDoFRigidBodyMotionConstraint point;"
-             " centreOfRotation (0 0 0.8); } }\n")
-    case = SixDoFCase("sixdofMass.world", {"cube1": body}, 0.01, 0.001)
-    case.run(n_iter=2)
-    row = last_row(case)
     values = {"A.m": 2.5, "A.c[1]": 0, "A.c[2]": 0, "A.c[3]": -0.2, "B.m": 1}
     for i in range(3):
         for j in range(3):
             values[f"A.J[{i + 1},{j + 1}]"] = inertia[i] if i == j else 0
             values[f"B.J[{i + 1},{j + 1}]"] = 0
-    failures = expect(row, values, failures, "one body: A's mass properties, B's start values")
-    case.cleanup()
+    failures = build.check_echo("one body: A's mass properties, B's start values",
+                                last_row(world), values, 1e-14)
+    world.cleanup()
 
-    b1 = sixdof_body(2.0, 0.1, (0, 0, 0), restraints=restraint(fmu, "cube2"))
-    b2 = sixdof_body(3.0, 0.4, (1, 0, 0), restraints=restraint(fmu, "cube2"))
-    case = SixDoFCase("sixdofMass.two", {"cube1": b1, "cube2": b2}, 0.01, 0.001)
-    case.run(n_iter=2)
-    row = last_row(case)
     values = {"A.m": 2.0, "B.m": 3.0, "B.c[1]": 0, "A.J[1,1]": 0.1, "B.J[1,1]": 0.4,
               "B.J[3,3]": 0.4, "B.J[1,2]": 0}
-    failures = expect(row, values, failures, "two bodies: A's and B's mass properties")
-    case.cleanup()
-
-    shutil.rmtree(tmp, ignore_errors=True)
-    print("all passed" if not failures else f"{failures} failed")
-    return 1 if failures else 0
+    failures += build.check_echo("two bodies: A's and B's mass properties", last_row(two), values, 1e-14)
+    two.cleanup()
+    return summary(2, failures)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,7 @@ must match the built-in one in every combination.
 """
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, rigid_body, summary, vec
+from foamfmi.bridgecase import Case, linear_spring, rigid_body, rigid_body_model, spring_fmu, summary
 
 ANCHOR = (0.3, 0.2, 1.2)
 ATTACHMENT = (0.1, 0.0, 0.05)  # body frame, from the centre of mass
@@ -24,41 +24,11 @@ def model(solver):
     bodies = rigid_body("builtin", 2, 0.1, (0, 0, 0), "floating") + rigid_body(
         "fmu", 2, 0.1, (0, 0, 0), "floating"
     )
-    return f"""
-    solver {{ type {solver}; }}
-    g (0 0 -9.81);
-    bodies
-    {{
-{bodies}
-    }}
-    restraints
-    {{
-        builtinSpring
-        {{
-            type linearSpring;
-            body builtin;
-            anchor {vec(ANCHOR)};
-            refAttachmentPt {vec(ATTACHMENT)};
-            stiffness {K};
-            damping {C};
-            restLength {L0};
-        }}
-        fmuSpring
-        {{
-            type fmuConnector;
-            body fmu;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness {K};
-                damping {C};
-                restLength {L0};
-                A.p {vec(ATTACHMENT)};
-                B.p {vec(ANCHOR)};
-            }}
-        }}
-    }}
-"""
+    spring = (ANCHOR, ATTACHMENT, K, C, L0)
+    return rigid_body_model(
+        bodies,
+        linear_spring("builtinSpring", "builtin", *spring) + spring_fmu("fmuSpring", "fmu", *spring),
+        solver, g=(0, 0, -9.81))
 
 
 def main():

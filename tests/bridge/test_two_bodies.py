@@ -10,7 +10,7 @@ as the time step shrinks.
 import math
 import sys
 
-from foamfmi.bridgecase import Case, check, check_order, fmu_path, rigid_body, summary, vec
+from foamfmi.bridgecase import Case, check, check_order, rigid_body, rigid_body_model, spring_fmu, summary
 
 M1, M2, K, L0 = 2.0, 3.0, 50.0, 1.0
 STRETCH = 0.1  # initial extension of the spring [m]
@@ -23,32 +23,8 @@ def model(solver):
     bodies = rigid_body("body1", M1, 0.1, (0, 0, 0), "floating") + rigid_body(
         "body2", M2, 0.1, (x2, 0, 0), "floating"
     )
-    return f"""
-    solver {{ type {solver}; }}
-    g (0 0 0);
-    bodies
-    {{
-{bodies}
-    }}
-    restraints
-    {{
-        spring
-        {{
-            type fmuConnector;
-            body body1;
-            bodyB body2;
-            fmu "{fmu_path('linearSpring')}";
-            parameters
-            {{
-                stiffness {K};
-                damping 0;
-                restLength {L0};
-                A.p {vec((0, 0, 0))};
-                B.p {vec((0, 0, 0))};
-            }}
-        }}
-    }}
-"""
+    spring = spring_fmu("spring", "body1", (0, 0, 0), (0, 0, 0), K, 0, L0, body_b="body2")
+    return rigid_body_model(bodies, spring, solver)
 
 
 def measured_period(b):

@@ -551,6 +551,79 @@ TEST(CatenarySections, ForceIsMinusTheEnergyGradient)
     }
 }
 
+TEST(CatenarySections, OutputsGiveTheJointsTensionsAndPositions)
+{
+    // The law's outputs for a turned and moved fairlead body, suspended,
+    // with touchdown and with a buoy lifting the joint (60 m of chain, 60 m
+    // of rope): the tension at the sections' ends at the joint is the
+    // closed form T = sqrt(H^2 + V^2), V the fairlead's less the rope's
+    // weight (above the joint) and less the point's too (below it), and the
+    // tension along the line there (catenaryTension, above the joint; 1 nm
+    // below it); the joint in the global frame is the law's profile point
+    // at its arc placed in the plane of P and Q, and the sixth of 11 shape
+    // points (12 m of arc apart: 60 m from the anchor)
+    struct Case {
+        CatenaryLine line;
+        double x, z; // spans from Q to P [m]
+    };
+    // the regimes of the tests against the reference above
+    const Case cases[] = {{chainRope(2e4, false), 105.0, 30.0},
+                          {chainRope(2e4, true), 108.0, 40.0},
+                          {chainRope(-3.5e4, true), 100.0, 30.0}};
+    for (const Case& c : cases) {
+        const CatenaryLine& line = c.line;
+        const Catenary law(mooring(line));
+        const BodyKinematics B = body(Vector3(3, -2, -10));
+        const Vector3 Q0 = B.p_WKo_W + Vector3(0.5, 0.2, 0.0);
+        const Matrix3 R_A = rotation(0.2, Vector3(1, 1, 0));
+        const Vector3 P0
+            = Q0 + c.x * Vector3(0.6, 0.8, 0.0) + c.z * Vector3::UnitZ();
+        const BodyKinematics A
+            = body(Vector3(P0 - R_A * Vector3(2.0, -1.0, -3.0)), R_A);
+        const CatenaryOutput out = law.evaluate(A, B, nullptr, 11);
+        const CatenarySolution& s = out.solution;
+        const double T = out.fairleadTension, J = line.sections[0].jointWeight;
+        ASSERT_EQ(out.sectionLowerTension.size(), 2u);
+        ASSERT_EQ(out.sectionUpperTension.size(), 2u);
+        ASSERT_EQ(out.joints.size(), 1u);
+        // the joint hangs (suspended pieces on both sides): round-off only
+        const double above = s.V - 50.0 * 60.0, below = above - J;
+        EXPECT_NEAR(out.sectionLowerTension[1], std::hypot(s.H, above),
+                    1e-12 * T);
+        EXPECT_NEAR(out.sectionUpperTension[0], std::hypot(s.H, below),
+                    1e-12 * T);
+        EXPECT_NEAR(out.sectionLowerTension[1],
+                    connectors::catenaryTension(line, s, 60.0), 1e-12 * T);
+        // 1e-9 m down the chain: its tension changes by w 1e-9 = 7e-7 N
+        EXPECT_NEAR(out.sectionUpperTension[0],
+                    connectors::catenaryTension(line, s, 60.0 - 1e-9),
+                    1e-9 * T);
+        // the profile plane: from Q, e_h horizontal towards P, z up
+        const Vector3 P = A.p_WKo_W + A.R_WK * Vector3(2.0, -1.0, -3.0);
+        const Vector3 Q = B.p_WKo_W + B.R_WK * Vector3(0.5, 0.2, 0.0);
+        const Vector3 chord = P - Q;
+        const double x = std::hypot(chord[0], chord[1]);
+        const Vector3 eH(chord[0] / x, chord[1] / x, 0.0);
+        const Eigen::Vector2d j
+            = connectors::catenaryPoint(line, s, x, chord[2], 60.0);
+        const Vector3 joint = Q + j[0] * eH + j[1] * Vector3::UnitZ();
+        expectVectorNear(out.joints[0], joint, 1e-12 * 120.0);
+        expectVectorNear(out.shape[5], out.joints[0], 1e-12 * 120.0);
+        std::cout << regimeName(s.regime) << ": T at the joint "
+                  << out.sectionUpperTension[0] << " N below, "
+                  << out.sectionLowerTension[1] << " N above, joint at ("
+                  << joint.transpose() << ") m\n";
+    }
+    // a uniform line is one section from the anchor to the fairlead
+    const Catenary uniform(mooring(uniformLine(120.0, 5e8, 700.0, true, 0.0)));
+    const CatenaryOutput u = uniform.evaluate(
+        body(Vector3(95, 30, 43), rotation(0.2, Vector3(1, 1, 0))),
+        body(Vector3::Zero()), nullptr, 0);
+    EXPECT_EQ(u.sectionLowerTension, std::vector<double> {u.anchorTension});
+    EXPECT_EQ(u.sectionUpperTension, std::vector<double> {u.fairleadTension});
+    EXPECT_TRUE(u.joints.empty());
+}
+
 //- The call throws UndefinedStateError with each of `parts` in its message
 template <class Call>
 void expectRefusal(Call&& call, const std::vector<std::string>& parts)

@@ -47,8 +47,8 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 
+from foamfmi import cli
 from foamfmi.bridgecase import foam_file
 
 DT = 0.001
@@ -351,10 +351,10 @@ def as_entry(M):
     return f"6 6 ({rows})"
 
 
-def main():
-    keep = "-keep" in sys.argv[1:]
-    work = tempfile.mkdtemp(prefix="addedMassRotation.")
-    try:
+def main(argv):
+    p = cli.parser("addedMassRotation.py", __doc__)
+    cli.add_keep(p)
+    with cli.scratch("addedMassRotation.", p.parse_args(argv).keep) as work:
         # Turning between two estimates, without a restart
         turning = make(os.path.join(work, "turning"), False, 50, 3)
         solve(turning)
@@ -433,12 +433,7 @@ def main():
                  f"\n{log[-3000:]}")
         print("restart with an addedMassBody of 3 x 3: FatalIOError")
         print("PASS [addedMassRotation]")
-    finally:
-        if keep:
-            print(f"runs kept in {work}")
-        else:
-            shutil.rmtree(work, ignore_errors=True)
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

@@ -184,12 +184,21 @@ tankCase()
     runUtility "$1" setFields
 }
 
+# runTank CASE MESH SOLVER [REFERENCE_U]: the tank case of MESH (tankCase)
+#     run by SOLVER to endTime and reported, with REFERENCE_U beside its
+#     largest |U|; sets maxU to it
+runTank()
+{
+    tankCase "$1" "$2"
+    runSolver "$1" "$3"
+    maxU=$(maxVelocity "$1")
+    report "$2" "$3" "$1" $endTime
+    echo "     $2 $3: max |U| = $maxU m/s${4:+ (alignedTank: $4 m/s)}"
+}
+
 reference="$workDir/alignedTank.$fixedSolver"
-tankCase "$reference" alignedTank
-runSolver "$reference" $fixedSolver
-refU=$(maxVelocity "$reference")
-report alignedTank $fixedSolver "$reference" $endTime
-echo "     alignedTank $fixedSolver: max |U| = $refU m/s"
+runTank "$reference" alignedTank $fixedSolver
+refU=$maxU
 # The reference itself must be at rest: there the velocity is the residue of
 # the pressure solution (p_rgh tolerance 1e-8), 9e-6 m/s. 1e-3 m/s is
 # already a visible flow in a 0.5 m tank (and 100 times what is measured).
@@ -205,11 +214,7 @@ do
     [ $role = stock ] && solver=$stockSolver
 
     case="$workDir/shearedTank.$role.$solver"
-    tankCase "$case" shearedTank
-    runSolver "$case" $solver
-    maxU=$(maxVelocity "$case")
-    report shearedTank $solver "$case" $endTime
-    echo "     shearedTank $solver: max |U| = $maxU m/s (alignedTank: $refU m/s)"
+    runTank "$case" shearedTank $solver "$refU"
 
     # At rest both meshes give only the residue of the pressure solution:
     # measured 2.3e-5 m/s sheared against 9.3e-6 m/s aligned with

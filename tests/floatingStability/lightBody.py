@@ -29,8 +29,6 @@ restraint evaluated at a stale state took 5 to 10 and diverged.
 
 import os
 import sys
-import tempfile
-import shutil
 
 from foamfmi import cli, floatingobject as foc
 from foamfmi.dictionary import substitute
@@ -47,10 +45,8 @@ def fail(message):
 
 def main(argv):
     p = cli.parser("lightBody.py", __doc__)
-    p.add_argument("-keep", action="store_true", help="keep the runs' folder")
-    keep = p.parse_args(argv).keep
-    work = tempfile.mkdtemp(prefix="lightBody.")
-    try:
+    cli.add_keep(p)
+    with cli.scratch("lightBody.", p.parse_args(argv).keep) as work:
         base = foc.mesh(os.path.join(work, "mesh"))
 
         stock = foc.solve(foc.make(base, os.path.join(work, "stock"),
@@ -124,11 +120,6 @@ def main(argv):
                  f" stop the run naming it (log: {relaxed})")
         print("bad coupling entries stop the run, each named")
         print("PASS [lightBody]")
-    finally:
-        if keep:
-            print(f"runs kept in {work}")
-        else:
-            shutil.rmtree(work, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -1,10 +1,12 @@
 // mooringLine.fmu with sections: a chain, a rope and a clump weight between
 // them give the law's outputs (section end tensions, the joint's
-// position); sections and joints it cannot use are refused with
+// position) and the section of each shape point (local variables
+// shape.section); sections and joints it cannot use are refused with
 // fmi2Error and a message naming the parameter and the allowed range.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "mooringLineFmuSupport.hpp"
 
@@ -103,6 +105,45 @@ TEST(MooringLineSectionsFmu, OutputsEqualTheLaw)
                 << names[i] << " at step " << k;
         }
     }
+}
+
+TEST(MooringLineSectionsFmu, ShapePointsNameTheirSection)
+{
+    // 100 m of line, the shape points 10 m of arc apart from the fairlead:
+    // 1 to 5 in the rope (5 at the joint, 60 m from the anchor: the
+    // section towards A.p), 6 to 11 in the chain
+    LoadedFmu fmu("mooringLine");
+    std::vector<std::string> names;
+    for (int k = 1; k <= 11; ++k) {
+        names.push_back("shape.section[" + std::to_string(k) + "]");
+    }
+    for (const fmuImport::Variable& v : fmu.modelDescription().variables) {
+        if (v.name.rfind("shape.section[", 0) == 0) {
+            EXPECT_EQ(v.causality, fmuImport::Causality::local) << v.name;
+        }
+    }
+    const std::vector<double> sections = {2, 2, 2, 2, 2, 1, 1, 1, 1, 1, 1};
+    Instance in(fmu);
+    ASSERT_EQ(initialise(fmu, in, ropeAndClump), fmi2OK) << in.lastMessage();
+    std::vector<double> got;
+    ASSERT_EQ(in.get(names, got), fmi2OK);
+    EXPECT_EQ(got, sections);
+    ASSERT_EQ(in.set(inputs(floater(0.1), BodyKinematics())), fmi2OK);
+    ASSERT_EQ(fmu.api.DoStep(in.c, 0.0, 0.1, fmi2True), fmi2OK)
+        << in.lastMessage();
+    ASSERT_EQ(in.get(names, got), fmi2OK);
+    EXPECT_EQ(got, sections);
+    // point 5 is the joint's node
+    for (const char* axis : {"x", "y", "z"}) {
+        EXPECT_NEAR(in.get(std::string("shape.") + axis + "[5]"),
+                    in.get(std::string("joint.") + axis + "[1]"), 1e-12)
+            << axis;
+    }
+    // a uniform line: every point in section 1
+    Instance uniform(fmu);
+    ASSERT_EQ(initialise(fmu, uniform, {}), fmi2OK) << uniform.lastMessage();
+    ASSERT_EQ(uniform.get(names, got), fmi2OK);
+    EXPECT_EQ(got, std::vector<double>(11, 1.0));
 }
 
 TEST(MooringLineSectionsFmu, SerializedStateContinuesInAnotherInstance)

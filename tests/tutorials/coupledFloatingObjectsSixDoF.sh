@@ -24,24 +24,17 @@
 #    wrong frame changes them by far more;
 #  - the plots are written.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 . "$(dirname "$0")/connectorTestFunctions"
 
 endTime=0.3
-bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
 
 requireBridge linearSpring "the spring FMU (build it: cmake --build build)"
 
 makeWorkDir
 
-sixDoF=$workDir/coupledFloatingObjectsSixDoF
-rigidBody=$workDir/coupledFloatingObjects
-runTutorial coupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
-    -end-time $endTime -no-plot
-runTutorial coupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
-    -end-time $endTime
-
-checkRuns $endTime "$bodies" "$sixDoF" "$rigidBody"
+runCubePair $endTime rigidBody=coupledFloatingObjects sixDoF=coupledFloatingObjectsSixDoF
 
 checkConnectorRows "$sixDoF" spring balanced
 

@@ -23,12 +23,12 @@
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so and
 # build/fmus/linearDamper.fmu. Exits non-zero on the first failure.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 . "$(dirname "$0")/connectorTestFunctions"
 
 endTime=0.3
 damping=10
-bodies="floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43"
 attachmentA="0.1 0 0.17"
 attachmentB="-0.1 0 0.17"
 restLength=0.2
@@ -37,15 +37,7 @@ requireBridge linearDamper "the damper FMU (build it: ./Allwmake)"
 
 makeWorkDir
 
-damped=$workDir/damperFloatingObjects
-uncoupled=$workDir/uncoupledFloatingObjects
-
-runTutorial uncoupledFloatingObjects "$uncoupled" -mesh-factor 0.5 \
-    -end-time $endTime -no-plot
-runTutorial damperFloatingObjects "$damped" -mesh-factor 0.5 \
-    -end-time $endTime
-
-checkRuns $endTime "$bodies" "$uncoupled" "$damped"
+runCubePair $endTime uncoupled=uncoupledFloatingObjects damped=damperFloatingObjects
 
 
 # --- The damper's output -----------------------------------------------------
@@ -59,29 +51,11 @@ cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
 # Total moment about the origin with the reference points (the fixed centres
 # of mass), and the law. Tolerances: 1e-9 relative to the loads, and for the
 # law c times the rounding of the written rate (12 significant digits).
-awk -v cols="$cols" -v c="$damping" '
-function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
-function abs(x) { return x < 0 ? -x : x }
-BEGIN {
-    split(cols, k, " ")
-    split("-0.2 0.5 0.43", rA, " "); split("0.2 0.5 0.43", rB, " ")
-}
+awk -v cols="$cols" -v c="$damping" "$momentAwk"'
+BEGIN { split(cols, k, " ") }
 /^#/ { next }
 {
-    for (i = 1; i <= 3; i++)
-    {
-        FA[i] = $(k[i]); MA[i] = $(k[i + 3]); FB[i] = $(k[i + 6]); MB[i] = $(k[i + 9])
-    }
-    scale = 0
-    for (i = 1; i <= 3; i++) scale += abs(FA[i]) + abs(FB[i])
-    m[1] = MA[1] + rA[2]*FA[3] - rA[3]*FA[2] + MB[1] + rB[2]*FB[3] - rB[3]*FB[2]
-    m[2] = MA[2] + rA[3]*FA[1] - rA[1]*FA[3] + MB[2] + rB[3]*FB[1] - rB[1]*FB[3]
-    m[3] = MA[3] + rA[1]*FA[2] - rA[2]*FA[1] + MB[3] + rB[1]*FB[2] - rB[2]*FB[1]
-    for (i = 1; i <= 3; i++)
-    {
-        if (abs(m[i]) > 1e-9*scale + 1e-14) bad(sprintf("t = %s: total moment about the origin %.3g N.m, component %d", $1, m[i], i))
-        if (abs(m[i]) > worstM) worstM = abs(m[i])
-    }
+    balanceMoment(k)
     rate = $(k[13]); T = $(k[14]); P = $(k[15])
     if (P < 0) bad(sprintf("t = %s: dissipatedPower %.12g W < 0", $1, P))
     if (abs(T - c*rate) > 1e-9*abs(T) + c*1e-12*(abs(rate) + 1e-3))

@@ -87,18 +87,12 @@ pass "hinge holds: $(cat "$workDir/check.out")"
 
 # --- Relative motion of the bodies: a rotation about the hinge line ---------
 awk -v pa="$hingeA" -v pb="$hingeB" -v angleCol="$(columnOf "$dat" angle)" \
-    -v gapBound=$gapBound -v misBound=$misalignmentBound "$rotateAwk"'
+    -v gapBound=$gapBound -v misBound=$misalignmentBound "$rotateAwk$hingeRowsAwk"'
 function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
 function abs(x) { return x < 0 ? -x : x }
 BEGIN { deg = atan2(1, 1)/45; split(pa, pA, " "); split(pb, pB, " ") }
-FNR == 1 { f++ }
-/^#/ { next }
-f == 1 { nA++; tA[nA] = $1; for (i = 2; i <= 8; i++) A[nA, i] = $i; next }
-f == 2 { nB++; tB[nB] = $1; for (i = 2; i <= 8; i++) B[nB, i] = $i; next }
 {
-    n++
-    if (n > nA || n > nB || abs(tA[n] - $1) > 1e-5*(abs($1) + 1e-3) || abs(tB[n] - $1) > 1e-5*(abs($1) + 1e-3))
-        bad("row " n ": different times in the body and hinge files")
+    hingeRow()
     # Hinge points from the body motion
     rotate(A[n, 6], A[n, 7], A[n, 8], pA, qA)
     rotate(B[n, 6], B[n, 7], B[n, 8], pB, qB)
@@ -126,7 +120,7 @@ f == 2 { nB++; tB[nB] = $1; for (i = 2; i <= 8; i++) B[nB, i] = $i; next }
 }
 END {
     if (failed) exit 1
-    if (n != nA || n != nB) bad(n " hinge rows, " nA " and " nB " body rows")
+    hingeRowsEnd()
     for (i = 1; i <= n; i++)
         if (abs(phi[i] - rel[i]) > worst) { worst = abs(phi[i] - rel[i]); tWorst = i }
     tol = 0.01*maxPhi + 1e-4

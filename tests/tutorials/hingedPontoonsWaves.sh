@@ -121,7 +121,7 @@ do
     cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' 'A.M[1]' 'A.M[2]' 'A.M[3]' \
         'B.F[1]' 'B.F[2]' 'B.F[3]' 'B.M[1]' 'B.M[2]' 'B.M[3]' ptoTorque angle) || exit 1
     awk -v cols="$cols" -v pa="$hingeA" -v pb="$hingeB" -v gapBound=$gapBound \
-        "$rotateAwk"'
+        "$rotateAwk$hingeRowsAwk"'
     function bad(msg) { print msg > "/dev/stderr"; failed = 1; exit 1 }
     function abs(x) { return x < 0 ? -x : x }
     # m = L - (P - r) x F, components 1..3 of arrays
@@ -133,14 +133,8 @@ do
         m[3] = L[3] - (d1*F[2] - d2*F[1])
     }
     BEGIN { deg = atan2(1, 1)/45; split(cols, k, " "); split(pa, pA, " "); split(pb, pB, " ") }
-    FNR == 1 { f++ }
-    /^#/ { next }
-    f == 1 { nA++; tA[nA] = $1; for (j = 2; j <= 8; j++) A[nA, j] = $j; next }
-    f == 2 { nB++; tB[nB] = $1; for (j = 2; j <= 8; j++) B[nB, j] = $j; next }
     {
-        n++
-        if (n > nA || n > nB || abs(tA[n] - $1) > 1e-5*(abs($1) + 1e-3) || abs(tB[n] - $1) > 1e-5*(abs($1) + 1e-3))
-            bad("row " n ": different times in the body and hinge files")
+        hingeRow()
         for (j = 1; j <= 3; j++)
         {
             rA[j] = A[n, j + 1]; rB[j] = B[n, j + 1]
@@ -178,7 +172,7 @@ do
     }
     END {
         if (failed) exit 1
-        if (n != nA || n != nB) bad(n " hinge rows, " nA " and " nB " body rows")
+        hingeRowsEnd()
         for (j = 1; j <= n; j++)
         {
             tol = F[j]*step + 1e-9

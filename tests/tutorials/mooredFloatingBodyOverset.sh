@@ -141,13 +141,7 @@ function catenary(x, z,    lo, hi, m, i)
 
 for spec in $lines
 do
-    name=${spec%%:*}
-    rest=${spec#*:}
-    fairlead=$(echo "${rest%%:*}" | tr ',' ' ')
-    anchor=$(echo "${rest#*:}" | tr ',' ' ')
-
-    checkConnectorRows "$moored" "$name"
-    dat=$(connectorFile "$moored" "$name") || exit 1
+    mooringLineRows "$moored" "$spec"
     cols=$(columnsOf "$dat" 'A.F[1]' H V fairleadTension 'shape.x[1]' 'shape.y[1]' 'shape.z[1]') || exit 1
 
     awk -v cols="$cols" -v pa="$fairlead" -v anchor="$anchor" -v x0="$x0" \
@@ -194,7 +188,7 @@ do
         if (n != nB) bad(n " line rows, " nB " body rows")
         printf("evaluated at the logged fairlead (within %.2g m); spans %.4g-%.4g m, fairlead tensions %.4g-%.4g N, the catenary within %.2g N\n", maxE, minX, maxX, minT, maxT, maxD)
     }' "$bodyDat" "$dat" > "$workDir/check.out" || fail "$dat: see above"
-    pass "$name: $(cat "$workDir/check.out")"
+    pass "$lineName: $(cat "$workDir/check.out")"
 done
 
 

@@ -95,13 +95,7 @@ BEGIN {
 # --- Each line ---------------------------------------------------------------
 for spec in $lines
 do
-    name=${spec%%:*}
-    rest=${spec#*:}
-    fairlead=$(echo "${rest%%:*}" | tr ',' ' ')
-    anchor=$(echo "${rest#*:}" | tr ',' ' ')
-
-    checkConnectorRows "$moored" "$name"
-    dat=$(connectorFile "$moored" "$name") || exit 1
+    mooringLineRows "$moored" "$spec"
     cols=$(columnsOf "$dat" 'A.F[1]' 'A.F[2]' 'A.F[3]' fairleadTension anchorTension \
         groundedLength length) || exit 1
 
@@ -141,7 +135,7 @@ do
         if (worst > 0.1*maxStep) bad(sprintf("length differs from the distance fairlead-anchor by %.3g m at t = %s (tolerance %.3g m)", worst, tWorst, 0.1*maxStep))
         printf("fairlead tension %.4g N at the start (catenary %.4g N), %.4g to %.4g N, anchor tension > 0, %slength = fairlead-anchor distance within %.2g m, at least %.3g m on the floor\n", T1, T0, minT, maxT, quasiStatic ? "|A.F| = fairlead tension, " : "", worst, minG)
     }' "$bodyDat" "$dat" > "$workDir/check.out" || fail "$dat: see above"
-    pass "$name: $(cat "$workDir/check.out")"
+    pass "$lineName: $(cat "$workDir/check.out")"
 done
 
 

@@ -15,6 +15,7 @@ case=$workDir/uncoupledFloatingObjects
 runTutorial uncoupledFloatingObjects "$case" -mesh-factor 0.5 -end-time $endTime
 
 checkRanToEnd "$case" $endTime
-checkBodies "$case" floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43
+# shellcheck disable=SC2086
+checkBodies "$case" $cubeBodies
 
 checkPlots "$case" rotation displacement snapshots

@@ -16,20 +16,13 @@
 # transpose error in either body frame, or forces on the wrong body, breaks
 # the agreement at once.
 #------------------------------------------------------------------------------
+# shellcheck disable=SC2154  # the case folders, set by runCubePair
 . "$(dirname "$0")/tutorialTestFunctions"
 
 endTime=0.3
 makeWorkDir
 
-sixDoF=$workDir/uncoupledFloatingObjectsSixDoF
-rigidBody=$workDir/uncoupledFloatingObjects
-runTutorial uncoupledFloatingObjects "$rigidBody" -mesh-factor 0.5 \
-    -end-time $endTime -no-plot
-runTutorial uncoupledFloatingObjectsSixDoF "$sixDoF" -mesh-factor 0.5 \
-    -end-time $endTime
-
-checkRuns $endTime "floatingObject1:-0.2,0.5,0.43 floatingObject2:0.2,0.5,0.43" \
-    "$sixDoF" "$rigidBody"
+runCubePair $endTime rigidBody=uncoupledFloatingObjects sixDoF=uncoupledFloatingObjectsSixDoF
 
 for body in floatingObject1 floatingObject2
 do

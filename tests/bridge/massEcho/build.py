@@ -1,9 +1,14 @@
 """Build massEcho.fmu (massEcho.c) into a directory: the C compiler, the
 FMI headers of fmu/include, the fixture FMUs' FMI plumbing (tests/fixtureFmu)
 and modelDescription.xml written here."""
+import contextlib
 import os
+import shutil
 import subprocess
+import tempfile
 import zipfile
+
+from foamfmi.bridgecase import check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
@@ -73,3 +78,21 @@ def build(directory):
         z.writestr("modelDescription.xml", model_description())
         z.write(so, "binaries/linux64/massEcho.so")
     return fmu
+
+
+@contextlib.contextmanager
+def built():
+    """massEcho.fmu built in a temporary folder, removed afterwards."""
+    directory = tempfile.mkdtemp(prefix="massEcho.")
+    try:
+        yield build(directory)
+    finally:
+        shutil.rmtree(directory, ignore_errors=True)
+
+
+def check_echo(name, row, values, tolerance):
+    """Print PASS or FAIL for the echoed mass properties of a connector's
+    last row, {column: value}, against values {input name: value}; 1 if
+    one is off by more than tolerance, else 0."""
+    worst = max(abs(row["echo." + k] - v) for k, v in values.items())
+    return check(name, worst <= tolerance, f"largest difference {worst:.3e}")

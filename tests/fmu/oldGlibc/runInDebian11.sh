@@ -45,7 +45,8 @@ python3 "$here/stepFmus.py" --output "$work/host.json" --same-versions "${starts
 inside=/srv/fmuOldGlibc
 rm -rf "$root$inside"
 mkdir -p "$root$inside"
-cp "$here/stepFmus.py" "$work/host.json" "$root$inside/"
+cp "$here"/stepFmus.py "$here"/fmucalls.py "$here"/fmudescription.py "$here"/fmucompare.py \
+    "$work/host.json" "$root$inside/"
 # A folder per FMU: a connector's 2.0 and 3.0 FMUs have the same file name
 paths=()
 for fmu in "${fmus[@]}"; do

@@ -184,8 +184,29 @@ void Foam::fmuConnectorCore::lookupShape()
         tensionOut_.append(i);
     }
 
-    // The water velocity inputs: all of them at every shape point, or none
+    // The section of each shape point: outputs or local variables, read
+    // with the outputs
     const fmuImport::Fmu& fmu = fmu_();
+    for (label k = 1; k <= n; ++k)
+    {
+        const word name(indexed("shape.section", k));
+        if
+        (
+            !fmu.hasVariable(name)
+         || fmu.variable(name).type != fmuImport::Type::Real
+         || (
+                fmu.variable(name).causality != fmuImport::Causality::output
+             && fmu.variable(name).causality != fmuImport::Causality::local
+            )
+        )
+        {
+            sectionRefs_.clear();
+            break;
+        }
+        sectionRefs_.push_back(fmu.variable(name).valueReference);
+    }
+
+    // The water velocity inputs: all of them at every shape point, or none
     wordList missing;
     for (label k = 1; k <= max(n, label(1)); ++k)
     {
@@ -304,6 +325,10 @@ void Foam::fmuConnectorCore::readOutputs()
         }
         outputs_[i] = values[i];
     }
+    if (!sectionRefs_.empty())
+    {
+        sectionValues_ = instance_->getReal(sectionRefs_);
+    }
 }
 
 
@@ -354,6 +379,17 @@ Foam::pointField Foam::fmuConnectorCore::shapePoints() const
 Foam::scalarField Foam::fmuConnectorCore::shapeTension() const
 {
     return scalarField(outputs_, tensionOut_);
+}
+
+
+Foam::labelList Foam::fmuConnectorCore::shapeSections() const
+{
+    labelList sections(sectionValues_.size());
+    forAll(sections, k)
+    {
+        sections[k] = label(std::lround(sectionValues_[k])) - 1;
+    }
+    return sections;
 }
 
 

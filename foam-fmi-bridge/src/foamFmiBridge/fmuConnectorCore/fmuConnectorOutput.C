@@ -280,14 +280,26 @@ void Foam::fmuConnectorOutput::writeShape() const
         }
         os  << nl;
 
+        if (fmu_.reportsShapeTension() || fmu_.reportsShapeSections())
+        {
+            os  << "POINT_DATA " << n << nl;
+        }
         if (fmu_.reportsShapeTension())
         {
-            os  << "POINT_DATA " << n << nl
-                << "SCALARS tension double 1" << nl
+            os  << "SCALARS tension double 1" << nl
                 << "LOOKUP_TABLE default" << nl;
             for (const scalar T : fmu_.shapeTension())
             {
                 os  << T << nl;
+            }
+        }
+        if (fmu_.reportsShapeSections())
+        {
+            os  << "SCALARS section int 1" << nl
+                << "LOOKUP_TABLE default" << nl;
+            for (const label k : fmu_.shapeSections())
+            {
+                os  << k << nl;
             }
         }
         if (!os.good())
