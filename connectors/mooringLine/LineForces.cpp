@@ -270,6 +270,16 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         if (diagnostics) {
             dissipatedPower += drag.dot(u);
         }
+        if (water && !water->flowAcceleration.empty()) {
+            // The flow's inertia (Froude-Krylov and added mass, as MoorDyn's
+            // Ap, Aq): phi (rho V (1 + Can) a_n + rho V (1 + Cat) a_t); work
+            // of the water on the line, not dissipation
+            const Vector3& a = water->flowAcceleration[std::size_t(i)];
+            const double aAlong = a.dot(t);
+            E += phi
+                * (node.flowInertiaN * (a - aAlong * t)
+                   + node.flowInertiaT * aAlong * t);
+        }
         f.external[i] = E;
     }
     f.strainEnergy = strainEnergy;

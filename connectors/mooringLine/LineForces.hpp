@@ -16,10 +16,12 @@ struct LineLayout;
 
 //- The water's motion seen by the line: the current profile of the
 //  parameters (MooringLineParameters::currentSurface, currentSeabed) plus
-//  a flow velocity at every node 0..N (empty: none), global frame [m/s]
+//  a flow velocity at every node 0..N (empty: none), global frame [m/s],
+//  and the flow's acceleration at every node 0..N (empty: none) [m/s2]
 struct WaterMotion {
     bool current = false;
     std::vector<Vector3> flow;
+    std::vector<Vector3> flowAcceleration;
 };
 
 //- Forces on every node for given node positions and velocities
@@ -35,7 +37,8 @@ struct NodeForces {
     //  0 and N unused)
     std::vector<Vector3> F, a;
     //- Forces on every node 0..N other than the segment tensions (weight,
-    //  buoyancy, seabed, friction, drag) [N]; the end nodes' half segments
+    //  buoyancy, seabed, friction, drag, the flow's inertia) [N]; the end
+    //  nodes' half segments
     //  (the loads on the bodies take them)
     std::vector<Vector3> external;
     //- Per node 0..N: submerged fraction [-] (1 without freeSurface), the

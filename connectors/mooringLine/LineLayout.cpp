@@ -35,6 +35,8 @@ LineLayout::Section section(const MooringLineParameters& p, std::size_t k,
     c.ct = 0.5 * rho * pi * d * s.tangentialDrag;
     c.addedN = s.normalAddedMass * rho * c.area * c.l;
     c.addedT = s.tangentialAddedMass * rho * c.area * c.l;
+    c.flowInertiaN = rho * c.area * (1.0 + s.normalAddedMass);
+    c.flowInertiaT = rho * c.area * (1.0 + s.tangentialAddedMass);
     return c;
 }
 
@@ -110,6 +112,8 @@ LineLayout lineLayout(const MooringLineParameters& p, double w)
             node.mass = end ? 0.0 : sa.massPerLength * sa.l;
             node.addedN = end ? 0.0 : sa.addedN;
             node.addedT = end ? 0.0 : sa.addedT;
+            node.flowInertiaN = sa.flowInertiaN * node.piece[0].share;
+            node.flowInertiaT = sa.flowInertiaT * node.piece[0].share;
             continue;
         }
         // the joint of sections a and b = a + 1, and its point
@@ -138,6 +142,12 @@ LineLayout lineLayout(const MooringLineParameters& p, double w)
             + point.mass;
         node.addedN = 0.5 * (sa.addedN + sb.addedN) + pointAdded;
         node.addedT = 0.5 * (sa.addedT + sb.addedT) + pointAdded;
+        const double pointInertia
+            = (1.0 + point.addedMass) * p.waterDensity * point.volume;
+        node.flowInertiaN = sa.flowInertiaN * node.piece[0].share
+            + sb.flowInertiaN * node.piece[1].share + pointInertia;
+        node.flowInertiaT = sa.flowInertiaT * node.piece[0].share
+            + sb.flowInertiaT * node.piece[1].share + pointInertia;
     }
     return L;
 }

@@ -35,6 +35,9 @@ struct LineLayout {
         double cn = 0.0,
                ct = 0.0; // drag factors 1/2 rho d Cdn, 1/2 rho pi d Cdt [kg/m2]
         double addedN = 0.0, addedT = 0.0; // added mass of a segment l [kg]
+        //- The flow's inertia per length, rho A (1 + Can) and
+        //  rho A (1 + Cat) [kg/m] (Froude-Krylov and added mass)
+        double flowInertiaN = 0.0, flowInertiaT = 0.0;
         int firstSegment = 0, segments = 0;
     };
     //- The line a node carries: one piece (inside a section, or an end)
@@ -73,6 +76,10 @@ struct LineLayout {
         //- The point's drag factor 1/2 rho CdA [kg/m], its weight and
         //  buoyancy [N] (zero without a point)
         double pointDrag = 0.0, pointWeight = 0.0, pointBuoyancy = 0.0;
+        //- The flow's inertia on the node's pieces and point (at phi = 1),
+        //  normal and tangential: the force of a flow accelerating at a is
+        //  phi (flowInertiaN a_n + flowInertiaT a_t) [kg]
+        double flowInertiaN = 0.0, flowInertiaT = 0.0;
     };
 
     int N = 0;

@@ -426,47 +426,71 @@ void MooringLine::checkJointsSubmerged(const std::vector<Vector3>& r) const
     }
 }
 
-void MooringLine::waterMotion(const std::vector<Vector3>& flow,
-                              WaterMotion& water) const
+void MooringLine::alongLine(const std::vector<Vector3>& points,
+                            std::vector<Vector3>& atNodes) const
 {
-    const MooringLineParameters& p = parameters_;
-    water.current
-        = !p.currentSurface.isZero(0.0) || !p.currentSeabed.isZero(0.0);
-    if (flow.empty()) {
-        water.flow.clear();
-        return;
-    }
-    if (flow.size() < 2) {
-        throw std::invalid_argument(
-            "mooringLine: the flow needs 0 or at least 2 points");
-    }
-    for (std::size_t k = 0; k < flow.size(); ++k) {
-        if (!flow[k].allFinite()) {
-            throw UndefinedStateError(
-                "mooringLine: the flow velocity at shape point "
-                + std::to_string(k + 1) + " is not finite");
-        }
-    }
     // node i is (N - i)/N of the line from P (its unstretched arc from P
     // over L with sections): between points k and k + 1
     const LineLayout& L = layout_;
     const int N = L.N;
-    const int last = int(flow.size()) - 1;
-    water.flow.resize(std::size_t(N + 1));
+    const int last = int(points.size()) - 1;
+    atNodes.resize(std::size_t(N + 1));
     for (int i = 0; i <= N; ++i) {
         const double u = L.sections.size() == 1
             ? double(N - i) * last / N
             : (L.length - L.arc[std::size_t(i)]) / L.length * last;
         const int k = std::min(int(u), last - 1);
         const double f01 = u - k;
-        water.flow[std::size_t(i)] = (1.0 - f01) * flow[std::size_t(k)]
-            + f01 * flow[std::size_t(k + 1)];
+        atNodes[std::size_t(i)] = (1.0 - f01) * points[std::size_t(k)]
+            + f01 * points[std::size_t(k + 1)];
+    }
+}
+
+void MooringLine::waterMotion(const std::vector<Vector3>& flow,
+                              const std::vector<Vector3>& flowAcceleration,
+                              WaterMotion& water) const
+{
+    const MooringLineParameters& p = parameters_;
+    water.current
+        = !p.currentSurface.isZero(0.0) || !p.currentSeabed.isZero(0.0);
+    const auto check = [](const std::vector<Vector3>& points,
+                          const char* what) {
+        if (points.size() == 1) {
+            throw std::invalid_argument(std::string("mooringLine: the ") + what
+                                        + " needs 0 or at least 2 points");
+        }
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            if (!points[k].allFinite()) {
+                throw UndefinedStateError(
+                    std::string("mooringLine: the ") + what + " at shape point "
+                    + std::to_string(k + 1) + " is not finite");
+            }
+        }
+    };
+    check(flow, "flow velocity");
+    check(flowAcceleration, "flow acceleration");
+    if (!flow.empty() && !flowAcceleration.empty()
+        && flow.size() != flowAcceleration.size()) {
+        throw std::invalid_argument(
+            "mooringLine: the flow's velocity and acceleration need the same "
+            "points");
+    }
+    if (flow.empty()) {
+        water.flow.clear();
+    } else {
+        alongLine(flow, water.flow);
+    }
+    if (flowAcceleration.empty()) {
+        water.flowAcceleration.clear();
+    } else {
+        alongLine(flowAcceleration, water.flowAcceleration);
     }
 }
 
 void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
                           const BodyKinematics& B, double h,
-                          const std::vector<Vector3>& flow)
+                          const std::vector<Vector3>& flow,
+                          const std::vector<Vector3>& flowAcceleration)
 {
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
@@ -490,7 +514,11 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     ends_.vP1 = attachmentVelocity(A, parameters_.p_AoP_A);
     ends_.t0 = state.time;
     ends_.h = h;
-    waterMotion(flow, water_);
+    waterMotion(flow, flowAcceleration, water_);
+    if (lastEvaluated_.water.flowAcceleration != water_.flowAcceleration) {
+        // the last evaluation's accelerations are not this water's
+        lastEvaluated_.r.clear();
+    }
     std::vector<double> y(state.nodes);
     stepWork_ = 0.0;
     try {
@@ -534,11 +562,11 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     state.aP = acceleration(ends_.P0, ends_.P1, ends_.vP0, ends_.vP1);
 }
 
-MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
-                                        const BodyKinematics& A,
-                                        const BodyKinematics& B,
-                                        int shapePoints,
-                                        const std::vector<Vector3>& flow) const
+MooringLineOutput
+MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
+                      const BodyKinematics& B, int shapePoints,
+                      const std::vector<Vector3>& flow,
+                      const std::vector<Vector3>& flowAcceleration) const
 {
     requireFiniteInputs(lawName, "A", A);
     requireFiniteInputs(lawName, "B", B);
@@ -560,7 +588,7 @@ MooringLineOutput MooringLine::evaluate(const MooringLineState& state,
     v[0] = attachmentVelocity(B, p.p_BoQ_B);
     v[N] = attachmentVelocity(A, p.p_AoP_A);
     WaterMotion& water = lastEvaluated_.water;
-    waterMotion(flow, water);
+    waterMotion(flow, flowAcceleration, water);
     NodeForces& f = lastEvaluated_.f;
     nodeForces(p, L, r, v, r[0][2], f, &water);
 

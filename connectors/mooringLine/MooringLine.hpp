@@ -26,6 +26,10 @@
 //           with un, ut the normal and tangential parts of u = U - v_i, U the
 //           current (currentSurface at waterLevel, currentSeabed at zb,
 //           linear in z between) plus the flow given at points along the line
+//         + the flow's inertia (Froude-Krylov and added mass, MoorDyn's Ap,
+//           Aq): phi rho A lambda ((1 + Can) a_n + (1 + Cat) a_t), a_n, a_t
+//           the normal and tangential parts of the flow's acceleration given
+//           at points along the line (a point: phi rho V (1 + Ca) a)
 //
 // Sections (MooringLineParameters::sections, LineLayout.hpp): the line may
 // be made of sections from Q to P, each with its own l, EA, BA, mu, d and
@@ -233,17 +237,22 @@ public:
     //  steps of unstretched length (empty: none, else at least 2), held
     //  over the step, interpolated linearly along the line to its nodes
     //  and added to the current.
+    //  `flowAcceleration`: the flow's acceleration [m/s2] at the same
+    //  points (empty: none, else as many as `flow`'s, or at least 2 when
+    //  `flow` is empty), held and interpolated as the flow.
     void advance(MooringLineState& state, const BodyKinematics& A,
                  const BodyKinematics& B, double h,
-                 const std::vector<Vector3>& flow = {});
+                 const std::vector<Vector3>& flow = {},
+                 const std::vector<Vector3>& flowAcceleration = {});
 
     //- Loads and diagnostics of `state` with the ends at A's and B's
-    //  attachment points, in the water's `flow` (as in advance);
-    //  shapePoints 0 or >= 2
-    MooringLineOutput evaluate(const MooringLineState& state,
-                               const BodyKinematics& A, const BodyKinematics& B,
-                               int shapePoints,
-                               const std::vector<Vector3>& flow = {}) const;
+    //  attachment points, in the water's `flow` and `flowAcceleration` (as
+    //  in advance); shapePoints 0 or >= 2
+    MooringLineOutput
+    evaluate(const MooringLineState& state, const BodyKinematics& A,
+             const BodyKinematics& B, int shapePoints,
+             const std::vector<Vector3>& flow = {},
+             const std::vector<Vector3>& flowAcceleration = {}) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
@@ -286,9 +295,15 @@ private:
     //- UndefinedStateError for a buoy that holds a joint of the start
     //  shape r above waterLevel (without freeSurface)
     void checkJointsSubmerged(const std::vector<Vector3>& r) const;
-    //- The water's motion for `flow` (see advance) into `water`
+    //- The water's motion for `flow` and `flowAcceleration` (see advance)
+    //  into `water`
     void waterMotion(const std::vector<Vector3>& flow,
+                     const std::vector<Vector3>& flowAcceleration,
                      WaterMotion& water) const;
+    //- Values at points from P to Q (at least 2) interpolated linearly
+    //  along the unstretched arc to the nodes 0..N, into `atNodes`
+    void alongLine(const std::vector<Vector3>& points,
+                   std::vector<Vector3>& atNodes) const;
 
     MooringLineParameters parameters_;
     double weight_ = 0.0;

@@ -5,15 +5,18 @@
 //
 // Internal state (Model::internalState): time, end positions, velocities
 // (the start of the next step's Hermite path) and accelerations, and the
-// position
-// and velocity of every free node. It is saved, restored and
-// serialized with the FMU state; each step starts the integrator from it,
-// so a step repeated after fmi2SetFMUstate gives the same outputs to the
-// bit.
+// position and velocity of every free node; then the start time of the
+// last step and its flow inputs (the flow's acceleration over the next
+// step is their change). It is saved, restored and serialized with the FMU
+// state; each step starts the integrator from it, so a step repeated after
+// fmi2SetFMUstate gives the same outputs to the bit.
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "LineFmuModel.hpp"
+#include "FlowHistory.hpp"
 #include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -40,7 +43,10 @@ A.F = -T_N-1 q_N-1 + E_N,   B.F = T_0 q_0 + E_0   (the ends' half segments)
 at <code>waterLevel</code>, <code>current.seabed</code> at the height of
 B.p, linear between) plus the inputs <code>shape.Ux/Uy/Uz[k]</code>: the
 water velocity at the points of the shape outputs of the previous step,
-held over the step and interpolated along the line.
+held over the step and interpolated along the line. Their change over the
+previous step is the flow's acceleration a, held over the step: with
+<code>flowInertia</code> = 1 (default) it acts on the line as
+(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
 <code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
 <code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
 on the seabed, regularised below <code>frictionVelocity</code>.</p>
@@ -176,6 +182,7 @@ public:
     void setParameters(const double* values) override
     {
         law_.build(parameters(values));
+        flag(values, flowInertia_); // 0 or 1, refused otherwise
     }
 
     void initializeState(const double* values, double time) override;
@@ -196,6 +203,21 @@ private:
 
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
+    //- The flow's acceleration over a step from `time` with the flow
+    //  inputs `U` (FlowHistory; none with flowInertia = 0)
+    std::vector<connectors::Vector3>
+    flowAcceleration(const double* values,
+                     const std::vector<connectors::Vector3>& U,
+                     double time) const
+    {
+        return flag(values, flowInertia_) ? lastFlow_.acceleration(U, time)
+                                          : std::vector<connectors::Vector3> {};
+    }
+
+    //- The flow inputs of the last step and its start time (at the start:
+    //  those at fmi2ExitInitializationMode and its time)
+    mooringLineFmu::FlowHistory lastFlow_ {shapePoints};
+    Block flowInertia_;
 
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
@@ -266,6 +288,13 @@ MooringLineModel::MooringLineModel()
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
     declareShapeSections();
+    // declared last: the variables above keep their value references
+    flowInertia_ = t.parameter(
+        "flowInertia", Shape::scalar, "1",
+        "1 (default): the flow's acceleration, the change of the inputs "
+        "shape.U over the previous step, acts on the line as (1 + Ca) rho V "
+        "dU/dt, normal and tangential (Froude-Krylov and added mass); 0: not",
+        {1.0});
 }
 
 connectors::MooringLineParameters
@@ -364,8 +393,11 @@ MooringLineModel::evaluate(const double* values,
 {
     const connectors::MooringLine& law = law_.get();
     if (state_) {
+        // as the step from here will see the water
+        const std::vector<connectors::Vector3> U = flow(values);
         return lineOutputs(
-            law.evaluate(*state_, A, B, shapePoints, flow(values)));
+            law.evaluate(*state_, A, B, shapePoints, U,
+                         flowAcceleration(values, U, state_->time)));
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
@@ -377,9 +409,10 @@ void MooringLineModel::initializeState(const double* values, double time)
     state_
         = law_.get().initialState(fmuExport::bodyKinematics(values, A),
                                   fmuExport::bodyKinematics(values, B), time);
+    lastFlow_.record(time, flow(values));
 }
 
-void MooringLineModel::doStep(double* values, double, double h)
+void MooringLineModel::doStep(double* values, double time, double h)
 {
     if (!state_) {
         throw std::logic_error("mooringLine: fmi2DoStep before the line was "
@@ -391,17 +424,27 @@ void MooringLineModel::doStep(double* values, double, double h)
     const connectors::BodyKinematics bodyB
         = fmuExport::bodyKinematics(values, B);
     const std::vector<connectors::Vector3> water = flow(values);
+    const std::vector<connectors::Vector3> a
+        = flowAcceleration(values, water, time);
     connectors::MooringLineState next = *state_;
-    law.advance(next, bodyA, bodyB, h, water);
+    law.advance(next, bodyA, bodyB, h, water, a);
     writeOutputs(
         values,
-        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water)));
+        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a)));
     state_ = std::move(next);
+    lastFlow_.record(time, water);
 }
 
 std::vector<double> MooringLineModel::internalState() const
 {
-    return state_ ? state_->serialize() : std::vector<double> {};
+    if (!state_) {
+        return {};
+    }
+    // the line's state, then the last step's start time and flow inputs
+    // (3 values a point, all zero for none)
+    std::vector<double> out = state_->serialize();
+    lastFlow_.save(out);
+    return out;
 }
 
 void MooringLineModel::setInternalState(const double*,
@@ -411,8 +454,23 @@ void MooringLineModel::setInternalState(const double*,
         state_.reset();
         return;
     }
-    state_ = connectors::MooringLineState::deserialize(state,
-                                                       law_.get().parameters());
+    const connectors::MooringLineParameters& p = law_.get().parameters();
+    const std::size_t line = 19 + 6 * std::size_t(p.totalSegments() - 1);
+    const std::size_t withFlow = line + lastFlow_.size();
+    if (state.size() != withFlow) {
+        throw std::invalid_argument(
+            "mooringLine: a saved state of " + std::to_string(state.size())
+            + " values does not fit a line of "
+            + std::to_string(p.totalSegments()) + " segments ("
+            + std::to_string(withFlow) + " values: " + std::to_string(line)
+            + " of the line, 1 + 3 x " + std::to_string(shapePoints)
+            + " of the last step's flow)");
+    }
+    state_ = connectors::MooringLineState::deserialize(
+        std::vector<double>(state.begin(),
+                            state.begin() + std::ptrdiff_t(line)),
+        p);
+    lastFlow_.restore(state.data() + line);
 }
 
 } // namespace

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
 
 #include "ConnectorInputs.hpp"
 #include "MooringLineReferences.hpp"
@@ -62,6 +65,36 @@ inline fmi2Status initialise(const fmuTest::LoadedFmu& fmu,
         s = in.set(fmuTest::inputs(floater(0.0), BodyKinematics()));
     }
     return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
+}
+
+//- Water velocities at the 11 shape points, point 1 at the fairlead, as
+//  the inputs shape.Ux/Uy/Uz[k]
+inline std::map<std::string, double>
+flowInputs(const std::vector<Vector3>& flow)
+{
+    std::map<std::string, double> m;
+    for (int k = 0; k < 11; ++k) {
+        const std::string point = "[" + std::to_string(k + 1) + "]";
+        m["shape.Ux" + point] = flow[std::size_t(k)][0];
+        m["shape.Uy" + point] = flow[std::size_t(k)][1];
+        m["shape.Uz" + point] = flow[std::size_t(k)][2];
+    }
+    return m;
+}
+
+//- A restart: the state of `from` serialized and set in `to` (a new
+//  instance, no parameters set); the serialized bytes
+inline std::vector<fmi2Byte> restart(const fmuTest::LoadedFmu& fmu,
+                                     fmuTest::Instance& from,
+                                     fmuTest::Instance& to)
+{
+    fmi2FMUstate saved = nullptr;
+    EXPECT_EQ(fmu.api.GetFMUstate(from.c, &saved), fmi2OK);
+    const std::vector<fmi2Byte> bytes = from.serialize(saved);
+    EXPECT_FALSE(bytes.empty()) << from.lastMessage();
+    EXPECT_EQ(to.restore(bytes), fmi2OK) << to.lastMessage();
+    EXPECT_EQ(fmu.api.FreeFMUstate(from.c, &saved), fmi2OK);
+    return bytes;
 }
 
 } // namespace mooringLineFmuTest

@@ -46,19 +46,6 @@ std::vector<std::string> names()
     return n;
 }
 
-//- Flow inputs for water velocities at the 11 shape points
-std::map<std::string, double> flowInputs(const std::vector<Vector3>& flow)
-{
-    std::map<std::string, double> m;
-    for (int k = 0; k < 11; ++k) {
-        const std::string point = "[" + std::to_string(k + 1) + "]";
-        m["shape.Ux" + point] = flow[std::size_t(k)][0];
-        m["shape.Uy" + point] = flow[std::size_t(k)][1];
-        m["shape.Uz" + point] = flow[std::size_t(k)][2];
-    }
-    return m;
-}
-
 TEST(MooringLineWaterFmu, ParametersAndFlowInputsReachTheLaw)
 {
     // flow varying along the line, point 1 at the fairlead: a wrong order

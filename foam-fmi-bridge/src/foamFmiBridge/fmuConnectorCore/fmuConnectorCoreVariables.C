@@ -408,6 +408,46 @@ void Foam::fmuConnectorCore::setFlow(const vectorField& U)
 }
 
 
+void Foam::fmuConnectorCore::setStartKinematics
+(
+    const std::function<std::pair<kinematics, kinematics>()>& start
+)
+{
+    startKinematics_ = start;
+}
+
+
+Foam::pointField Foam::fmuConnectorCore::startShapePoints()
+{
+    if
+    (
+        initialised_
+     || !restoreBytes_.empty()
+     || !startKinematics_
+     || nShapePoints() == 0
+    )
+    {
+        return pointField();
+    }
+
+    const std::pair<kinematics, kinematics> start(startKinematics_());
+    const fmuImport::MaskFpTraps masked;
+    try
+    {
+        // Still in initialisation mode: the outputs of the start shape
+        setInputs(start.first, start.second);
+        readOutputs();
+    }
+    catch (const fmuImport::Error& err)
+    {
+        FatalErrorInFunction
+            << "restraint " << restraintName_ << ", the start shape: "
+            << err.what() << exit(FatalError);
+    }
+    return shapePoints();
+}
+
+
 void Foam::fmuConnectorCore::writeDiagnostics(Ostream& os) const
 {
     for (const word diagnostic : {"length", "tension"})

@@ -34,14 +34,14 @@ Foam::fileName Foam::functionObjects::fmuConnectorFlow::statePath
 }
 
 
-void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
+bool Foam::functionObjects::fmuConnectorFlow::restoreFlow()
 {
     // When the run starts (read() is called again when the dictionary
     // changes), on the master, where the connectors are
     const fileName path(statePath(time_.timeName()));
     if (!Pstream::master() || time_.timeIndex() != time_.startTimeIndex())
     {
-        return;
+        return false;
     }
 
     // A run restarted from a time written by an earlier run needs the
@@ -63,7 +63,7 @@ void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
     }
     if (fresh_ || !isFile(path))
     {
-        return;
+        return false;
     }
 
     IFstream is(path);
@@ -78,6 +78,102 @@ void Foam::functionObjects::fmuConnectorFlow::restoreFlow()
     }
     Info<< "Function object " << name() << ": water velocity at the lines"
         << " restored from " << path << endl;
+    return true;
+}
+
+
+void Foam::functionObjects::fmuConnectorFlow::startFlow(const bool restored)
+{
+    // When the run starts, on every processor (the sampling is collective)
+    if (time_.timeIndex() != time_.startTimeIndex())
+    {
+        return;
+    }
+
+    // The start shapes of the connectors that start from one, known on
+    // the master
+    List<pointField> points(connectors_.size());
+    if (Pstream::master() && !restored)
+    {
+        forAll(connectors_, i)
+        {
+            points[i] =
+                fmuConnectorCore::find(time_, connectors_[i])
+                    ->startShapePoints();
+        }
+    }
+    Pstream::scatter(points);
+
+    bool any = false;
+    forAll(points, i)
+    {
+        any = any || points[i].size();
+    }
+    if (!any || !foundObject<volVectorField>(UName_))
+    {
+        return;
+    }
+
+    const List<vectorField> flows(sample(points));
+    if (Pstream::master())
+    {
+        forAll(connectors_, i)
+        {
+            if (points[i].size())
+            {
+                fmuConnectorCore::find(time_, connectors_[i])
+                    ->setFlow(flows[i]);
+                Info<< "Function object " << name() << ": water velocity at"
+                    << " the start shape of " << connectors_[i]
+                    << " set for the first time step" << endl;
+            }
+        }
+    }
+}
+
+
+Foam::List<Foam::vectorField>
+Foam::functionObjects::fmuConnectorFlow::sample
+(
+    const List<pointField>& points
+) const
+{
+    const volVectorField& U = lookupObject<volVectorField>(UName_);
+
+    // Each processor samples the points in its cells; a point on a
+    // processor boundary may be found by two, whose values are averaged
+    autoPtr<interpolation<vector>> interp
+    (
+        interpolation<vector>::New(scheme_, U)
+    );
+    List<vectorField> sums(points.size());
+    List<scalarField> counts(points.size());
+    forAll(points, i)
+    {
+        sums[i].setSize(points[i].size(), Zero);
+        counts[i].setSize(points[i].size(), Zero);
+        forAll(points[i], k)
+        {
+            const label celli = mesh_.findCell(points[i][k]);
+            if (celli >= 0)
+            {
+                sums[i][k] = interp->interpolate(points[i][k], celli);
+                counts[i][k] = 1;
+            }
+        }
+    }
+    Pstream::listCombineGather(sums, plusEqOp<vectorField>());
+    Pstream::listCombineGather(counts, plusEqOp<scalarField>());
+
+    List<vectorField> flows(points.size());
+    if (Pstream::master())
+    {
+        forAll(points, i)
+        {
+            flows[i] = sums[i]/max(counts[i], scalar(1));
+        }
+    }
+    return flows;
 }
 
 
@@ -199,7 +295,7 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
     }
 
     resetNames(connectors_);
-    restoreFlow();
+    startFlow(restoreFlow());
     if (Pstream::master())
     {
         forAll(connectors_, i)
@@ -214,8 +310,6 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
 
 bool Foam::functionObjects::fmuConnectorFlow::execute()
 {
-    const volVectorField& U = lookupObject<volVectorField>(UName_);
-
     // The shape points of every connector, known on the master
     List<pointField> points(connectors_.size());
     if (Pstream::master())
@@ -228,37 +322,11 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
     }
     Pstream::scatter(points);
 
-    // Each processor samples the points in its cells; a point on a
-    // processor boundary may be found by two, whose values are averaged
-    autoPtr<interpolation<vector>> interp
-    (
-        interpolation<vector>::New(scheme_, U)
-    );
-    List<vectorField> sums(points.size());
-    List<scalarField> counts(points.size());
-    forAll(points, i)
-    {
-        sums[i].setSize(points[i].size(), Zero);
-        counts[i].setSize(points[i].size(), Zero);
-        forAll(points[i], k)
-        {
-            const label celli = mesh_.findCell(points[i][k]);
-            if (celli >= 0)
-            {
-                sums[i][k] = interp->interpolate(points[i][k], celli);
-                counts[i][k] = 1;
-            }
-        }
-    }
-    Pstream::listCombineGather(sums, plusEqOp<vectorField>());
-    Pstream::listCombineGather(counts, plusEqOp<scalarField>());
-
+    const List<vectorField> flows(sample(points));
     if (Pstream::master())
     {
-        List<vectorField> flows(connectors_.size());
         forAll(connectors_, i)
         {
-            flows[i] = sums[i]/max(counts[i], scalar(1));
             const vectorField& flow = flows[i];
             fmuConnectorCore::find(time_, connectors_[i])->setFlow(flow);
 

@@ -139,6 +139,22 @@ void Foam::RBD::restraints::fmuConnector::load()
     );
     fmu_->checkBodyB(bodyBName_, coeffs_);
 
+    // The bodies where the run starts (the model is initialised before the
+    // first time step), for the water velocity at a line's start shape
+    fmu_->setStartKinematics
+    (
+        [this]()
+        {
+            return std::make_pair
+            (
+                bodyKinematics(bodyID_),
+                bodyBName_.empty()
+              ? fmuConnectorCore::kinematics::world()
+              : bodyKinematics(bodyBID_)
+            );
+        }
+    );
+
     // The mass inputs the FMU declares (A.m, A.c, A.J, B's when B is a
     // body); nothing is set for an FMU that declares none
     fmu_->setMassProperties

@@ -172,6 +172,20 @@ Foam::sixDoFConnector::sixDoFConnector
     );
     fmu_->checkBodyB(bodyB_, dict_);
 
+    // The bodies where they start (registerSide), for the water velocity
+    // at a line's start shape
+    fmu_->setStartKinematics
+    (
+        [this]()
+        {
+            return std::make_pair
+            (
+                start_[0],
+                bodyB_.empty() ? fmuConnectorCore::kinematics::world() : start_[1]
+            );
+        }
+    );
+
     const bool fresh =
         fmuConnectorCore::restartModeNames.getOrDefault
         (
