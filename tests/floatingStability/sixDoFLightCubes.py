@@ -16,7 +16,7 @@ ranks (hierarchical decomposition, one cube on each):
   - addedMassSixDoFRigidBodyDisplacement, no relaxation, at most 40 outer
     correctors (measured at 10 kg/m^3: the coupling residual falls by a
     factor of about 0.75 per corrector, 13 correctors a step on average and
-    up to 28, where rigidBodyMotion's coupling takes 2 to 3: see
+    over 20 in the first step, where rigidBodyMotion's coupling takes 2 to 3: see
     docs/floating-stability.md), each cube's coupling residual reported under
     rigidBodyCoupling.<patch> and residualControl "rigidBodyCoupling.*"
     below 1e-2, must reach the end with every time step ended by PIMPLE's
