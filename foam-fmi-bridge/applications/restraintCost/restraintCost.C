@@ -40,6 +40,7 @@ Usage
 #include "fmuConnector.H"
 #include "fmuConnectorOutput.H"
 #include "fmuImport/fmuImport.hpp"
+#include "bodySim.H"
 
 #include <chrono>
 
@@ -196,15 +197,7 @@ int main(int argc, char *argv[])
 
     const IOdictionary dynamicMeshDict
     (
-        IOobject
-        (
-            "dynamicMeshDict",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        bodySim::constantIO(runTime, "dynamicMeshDict")
     );
     const dictionary& dict = dynamicMeshDict.subDict("rigidBodyMotionCoeffs");
     RBD::rigidBodyMotion motion(runTime, dict);
