@@ -1,8 +1,10 @@
 #include "common/ConnectorError.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -28,21 +30,11 @@ std::string formatVector(const Vector3& value)
 
 const char* refusalName(Refusal code)
 {
-    switch (code) {
-    case Refusal::notFinite:
-        return "notFinite";
-    case Refusal::negative:
-        return "negative";
-    case Refusal::notPositive:
-        return "notPositive";
-    case Refusal::outOfRange:
-        return "outOfRange";
-    case Refusal::noDirection:
-        return "noDirection";
-    case Refusal::inconsistent:
-        return "inconsistent";
-    }
-    return "outOfRange";
+    static const char* const names[]
+        = {"notFinite",  "negative",    "notPositive",
+           "outOfRange", "noDirection", "inconsistent"};
+    const auto i = static_cast<std::size_t>(code);
+    return i < std::size(names) ? names[i] : "outOfRange";
 }
 
 ParameterError::ParameterError(Refusal code, const std::string& law,
@@ -136,6 +128,20 @@ void requireFiniteInputs(const char* law, const char* body,
     }
     checkVector(law, body, "v", kinematics.v_WKo_W);
     checkVector(law, body, "omega", kinematics.w_WK_W);
+}
+
+void requireFiniteAttachments(const char* law, const Vector3& p_AoP_A,
+                              const Vector3& p_BoQ_B)
+{
+    requireFinite(law, "A.p", p_AoP_A, "m");
+    requireFinite(law, "B.p", p_BoQ_B, "m");
+}
+
+void requireFiniteInputs(const char* law, const BodyKinematics& A,
+                         const BodyKinematics& B)
+{
+    requireFiniteInputs(law, "A", A);
+    requireFiniteInputs(law, "B", B);
 }
 
 } // namespace connectors

@@ -103,6 +103,15 @@ void requireFinite(const char* law, const char* name, const Vector3& value,
 void requireFiniteInputs(const char* law, const char* body,
                          const BodyKinematics& kinematics);
 
+//- requireFinite of the attachment points A.p (P on A, A's frame) and B.p
+//  (Q on B, B's frame) [m], A.p first
+void requireFiniteAttachments(const char* law, const Vector3& p_AoP_A,
+                              const Vector3& p_BoQ_B);
+
+//- requireFiniteInputs of both bodies, A first
+void requireFiniteInputs(const char* law, const BodyKinematics& A,
+                         const BodyKinematics& B);
+
 } // namespace connectors
 
 #endif

@@ -17,8 +17,7 @@ const char* const lawName = "coulombFriction";
 CoulombFriction::CoulombFriction(const CoulombFrictionParameters& parameters)
     : parameters_(parameters), a_B_(Vector3::Zero())
 {
-    requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
-    requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
+    requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
     requireFinite(lawName, "B.axis", parameters.axis_B, "1");
     const double norm = parameters.axis_B.norm();
     if (norm > 0.0 && norm < minimumGuideAxisNorm) {
@@ -48,8 +47,7 @@ CoulombFrictionResult
 CoulombFriction::evaluateSliding(const BodyKinematics& A,
                                  const BodyKinematics& B) const
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
 
     const double Fc = parameters_.frictionForce;
     const double vs = parameters_.regularisationVelocity;

@@ -76,8 +76,7 @@ Vector3 deriveReference(const Vector3& axis)
 
 Hinge::Hinge(const HingeParameters& parameters) : parameters_(parameters)
 {
-    requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
-    requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
+    requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
     axis_A_ = unitAxis("A.axis", parameters.axis_A);
     axis_B_ = unitAxis("B.axis", parameters.axis_B);
     ref_A_ = unitReference("A.ref", "A.axis", parameters.ref_A, axis_A_);
@@ -101,8 +100,7 @@ Hinge::Hinge(const HingeParameters& parameters) : parameters_(parameters)
 HingeResult Hinge::evaluate(const BodyKinematics& A, const BodyKinematics& B,
                             double previousAngle) const
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
     const HingeParameters& p = parameters_;
     const AxialGeometry g = axialGeometry(A, B, p.p_AoP_A, p.p_BoQ_B);
 

@@ -12,16 +12,14 @@ const char* const lawName = "linearDamper";
 LinearDamper::LinearDamper(const LinearDamperParameters& parameters)
     : parameters_(parameters)
 {
-    requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
-    requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
+    requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
     requireNonNegative(lawName, "damping", parameters.damping, "N.s/m");
 }
 
 ConnectorResult LinearDamper::evaluate(const BodyKinematics& A,
                                        const BodyKinematics& B) const
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
 
     const double c = parameters_.damping;
     const AxialGeometry g

@@ -14,8 +14,7 @@ const char* const lawName = "linearSpring";
 LinearSpring::LinearSpring(const LinearSpringParameters& parameters)
     : parameters_(parameters)
 {
-    requireFinite(lawName, "A.p", parameters.p_AoP_A, "m");
-    requireFinite(lawName, "B.p", parameters.p_BoQ_B, "m");
+    requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
     requireNonNegative(lawName, "stiffness", parameters.stiffness, "N/m");
     requireNonNegative(lawName, "restLength", parameters.restLength, "m");
     requireNonNegative(lawName, "damping", parameters.damping, "N.s/m");
@@ -24,8 +23,7 @@ LinearSpring::LinearSpring(const LinearSpringParameters& parameters)
 ConnectorResult LinearSpring::evaluate(const BodyKinematics& A,
                                        const BodyKinematics& B) const
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
 
     const double k = parameters_.stiffness;
     const double L0 = parameters_.restLength;

@@ -1,6 +1,6 @@
 // coulombFriction.fmu: connectors::CoulombFriction behind the connector FMU
 // interface. The variable table below is the only list of its variables.
-#include "ConnectorFmuModel.hpp"
+#include "LawFmuModel.hpp"
 #include "coulombFriction/CoulombFriction.hpp"
 
 namespace {
@@ -28,44 +28,37 @@ not. frictionForce must be finite and &ge; 0, regularisationVelocity
 finite and &gt; 0, B.axis zero or of length &ge; 1e-12 (checked in
 fmi2ExitInitializationMode).</p>)";
 
-class CoulombFrictionModel final : public fmuExport::ConnectorFmuModel {
+using Parameters = connectors::CoulombFrictionParameters;
+
+class CoulombFrictionModel final
+    : public fmuExport::LawFmuModel<connectors::CoulombFriction, Parameters> {
 public:
     CoulombFrictionModel()
-        : ConnectorFmuModel({"coulombFriction",
-                             "Regularised Coulomb friction of a point of A "
-                             "sliding on B, along a guide or in every "
-                             "direction",
-                             "1.0.0", lawHtml},
-                            wording())
+        : LawFmuModel({"coulombFriction",
+                       "Regularised Coulomb friction of a point of A "
+                       "sliding on B, along a guide or in every "
+                       "direction",
+                       "1.0.0", lawHtml},
+                      wording())
     {
         declareBodies({1, 0, 0});
-        B_axis_ = table().parameter(
-            "B.axis", Shape::vector3, "1",
-            "sliding direction (guide), B's frame, normalised; 0: every "
-            "direction",
-            {0, 0, 0});
-        frictionForce_ = table().parameter(
-            "frictionForce", Shape::scalar, "N",
-            "Coulomb (sliding) friction force F_c, >= 0", {0.3});
-        regularisationVelocity_
-            = table().parameter("regularisationVelocity", Shape::scalar, "m/s",
-                                "regularisation velocity v_s, > 0", {1e-3});
-        const std::vector<Block> positions = positionBlocks();
-        const std::vector<Block> motion = join(positions, velocityBlocks());
-        const std::vector<Block> law
-            = {B_axis_, frictionForce_, regularisationVelocity_};
-        OutputDependencies d;
-        d.loads = join(motion, law);
-        d.length = positions;
-        d.lengthRate = motion;
-        d.tension = d.loads;
-        d.potentialEnergy = {};
-        d.dissipatedPower = d.loads;
+        B_axis_ = parameter(&Parameters::axis_B, "B.axis", "1",
+                            "sliding direction (guide), B's frame, "
+                            "normalised; 0: every direction",
+                            {0, 0, 0});
+        frictionForce_
+            = parameter(&Parameters::frictionForce, "frictionForce", "N",
+                        "Coulomb (sliding) friction force F_c, >= 0", 0.3);
+        regularisationVelocity_ = parameter(
+            &Parameters::regularisationVelocity, "regularisationVelocity",
+            "m/s", "regularisation velocity v_s, > 0", 1e-3);
+        const OutputDependencies d = pointToPointDependencies(
+            {B_axis_, frictionForce_, regularisationVelocity_});
         declareOutputs(d);
         extraOutput("slidingVelocity", Shape::scalar, "m/s",
                     "velocity of P relative to B along B.axis (its magnitude "
                     "without an axis)",
-                    join(motion, {B_axis_}));
+                    join(d.lengthRate, {B_axis_}));
         extraOutput("friction", Shape::scalar, "N",
                     "friction force on A along B.axis (its magnitude without "
                     "an axis)",
@@ -73,18 +66,12 @@ public:
         declareStartAtRest();
     }
 
-    void setParameters(const double* values) override
-    {
-        law_.build(parameters(values));
-    }
-
 protected:
     fmuExport::ConnectorOutputs
     evaluate(const double*, const connectors::BodyKinematics& A,
              const connectors::BodyKinematics& B) const override
     {
-        const connectors::CoulombFrictionResult r
-            = law_.get().evaluateSliding(A, B);
+        const connectors::CoulombFrictionResult r = law().evaluateSliding(A, B);
         return {r.loads, {r.slidingVelocity, r.friction}};
     }
 
@@ -99,19 +86,7 @@ private:
         return w;
     }
 
-    connectors::CoulombFrictionParameters parameters(const double* values) const
-    {
-        connectors::CoulombFrictionParameters p;
-        p.p_AoP_A = vector3(values, A_p);
-        p.p_BoQ_B = vector3(values, B_p);
-        p.axis_B = vector3(values, B_axis_);
-        p.frictionForce = scalar(values, frictionForce_);
-        p.regularisationVelocity = scalar(values, regularisationVelocity_);
-        return p;
-    }
-
     Block B_axis_, frictionForce_, regularisationVelocity_;
-    fmuExport::BuiltLaw<connectors::CoulombFriction> law_;
 };
 
 } // namespace

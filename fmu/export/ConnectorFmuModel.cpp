@@ -120,6 +120,21 @@ std::vector<Block> ConnectorFmuModel::velocityBlocks() const
     return {A.v, A.omega, B.v, B.omega};
 }
 
+ConnectorFmuModel::OutputDependencies
+ConnectorFmuModel::pointToPointDependencies(const std::vector<Block>& law) const
+{
+    const std::vector<Block> positions = positionBlocks();
+    const std::vector<Block> motion = join(positions, velocityBlocks());
+    OutputDependencies d;
+    d.loads = join(motion, law);
+    d.length = positions;
+    d.lengthRate = motion;
+    d.tension = d.loads;
+    d.potentialEnergy = {};
+    d.dissipatedPower = d.loads;
+    return d;
+}
+
 std::vector<Block> ConnectorFmuModel::join(std::vector<Block> a,
                                            const std::vector<Block>& b)
 {

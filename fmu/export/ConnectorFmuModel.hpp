@@ -6,7 +6,9 @@
 //     before or after declareBodies() (the order is that of the value
 //     references, so that of modelDescription.xml);
 //   - setParameters(): its parameters to its law, kept in a BuiltLaw (the
-//     FMI layer calls it once per parameter set);
+//     FMI layer calls it once per parameter set; LawFmuModel does this for a
+//     law built from one parameter struct, each parameter bound to its
+//     field);
 //   - evaluate(): the law's result to the outputs;
 //   - optionally outputs of its own after the 17 interface outputs
 //     (extraOutput(), filled in by evaluate() in declaration order), and
@@ -145,6 +147,14 @@ protected:
     std::vector<Block> positionBlocks() const;
     //- Blocks that velocities depend on: A.v, A.omega, B.v, B.omega
     std::vector<Block> velocityBlocks() const;
+
+    //- Dependencies of a connector between P and Q whose loads depend on
+    //  the positions, the velocities and the blocks `law`: length on the
+    //  positions, lengthRate on positions and velocities, tension and
+    //  dissipatedPower on what the loads depend on, potentialEnergy on
+    //  nothing (a model that stores energy sets it after)
+    OutputDependencies
+    pointToPointDependencies(const std::vector<Block>& law) const;
 
     //- A parameter that is 0 or 1; throws connectors::ParameterError
     //  (outOfRange) naming it otherwise

@@ -1,5 +1,6 @@
 #include "DescriptionText.hpp"
 
+#include <cstddef>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -43,47 +44,30 @@ constexpr UnitDefinition unitDefinitions[] = {
     {"Pa.s/m", "kg=\"1\" m=\"-2\" s=\"-1\""},
 };
 
+//- The name of an enumerator, from the names in the enumeration's order;
+//  "" for a value outside it
+template <class Enum, std::size_t N>
+const char* nameOf(Enum value, const char* const (&names)[N])
+{
+    const auto i = static_cast<std::size_t>(value);
+    return i < N ? names[i] : "";
+}
+
 } // namespace
 
 const char* causalityName(Causality c)
 {
-    switch (c) {
-    case Causality::parameter:
-        return "parameter";
-    case Causality::input:
-        return "input";
-    case Causality::output:
-        return "output";
-    case Causality::local:
-        return "local";
-    }
-    return "";
+    return nameOf(c, {"parameter", "input", "output", "local"});
 }
 
 const char* variabilityName(Variability v)
 {
-    switch (v) {
-    case Variability::constant:
-        return "constant";
-    case Variability::fixed:
-        return "fixed";
-    case Variability::continuous:
-        return "continuous";
-    }
-    return "";
+    return nameOf(v, {"constant", "fixed", "continuous"});
 }
 
 const char* initialName(Initial i)
 {
-    switch (i) {
-    case Initial::none:
-        return "";
-    case Initial::exact:
-        return "exact";
-    case Initial::calculated:
-        return "calculated";
-    }
-    return "";
+    return nameOf(i, {"", "exact", "calculated"});
 }
 
 const char* baseUnitOf(const std::string& unit)

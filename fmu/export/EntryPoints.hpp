@@ -38,6 +38,10 @@ inline void requireNonNull(const void* pointer, const char* argument)
     }
 }
 
+//- Why a co-simulation FMU refuses the model-exchange functions
+constexpr const char* modelExchangeOnly
+    = "model exchange is not supported: this is a co-simulation FMU";
+
 //- Every function of the standard that a co-simulation FMU does not provide
 inline fmi2Status unsupported(fmi2Component c, const char* function,
                               const char* reason)
@@ -47,5 +51,29 @@ inline fmi2Status unsupported(fmi2Component c, const char* function,
 }
 
 } // namespace fmuExport
+
+// A function of a feature the FMU does not have: fmi2Error with the reason
+// logged; the parameters after the instance are unnamed
+#define FMU_EXPORT_UNSUPPORTED2(Function, reason, ...)                         \
+    fmi2Status fmi2##Function(fmi2Component c, __VA_ARGS__)                    \
+    {                                                                          \
+        return fmuExport::unsupported(c, "fmi2" #Function, reason);            \
+    }
+
+// The model-exchange functions that FMI 2.0 and FMI 3.0 declare alike, as
+// Unsupported(Function, reason, the parameters after the instance), Real the
+// version's floating-point type
+// clang-format off
+#define FMU_EXPORT_MODEL_EXCHANGE(Unsupported, Real)                           \
+    Unsupported(SetTime, fmuExport::modelExchangeOnly, Real)                   \
+    Unsupported(SetContinuousStates, fmuExport::modelExchangeOnly,             \
+                const Real[], size_t)                                          \
+    Unsupported(GetEventIndicators, fmuExport::modelExchangeOnly, Real[],      \
+                size_t)                                                        \
+    Unsupported(GetContinuousStates, fmuExport::modelExchangeOnly, Real[],     \
+                size_t)                                                        \
+    Unsupported(GetNominalsOfContinuousStates, fmuExport::modelExchangeOnly,   \
+                Real[], size_t)
+// clang-format on
 
 #endif

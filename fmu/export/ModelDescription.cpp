@@ -130,22 +130,22 @@ std::string modelDescriptionXml(const Model& model)
     }
     x << "  </ModelVariables>\n";
 
+    // Every output as an Unknown, its dependencies those at initialization
+    // or not
+    const auto unknowns = [&](bool initialization) {
+        for (const ScalarVariable& v : variables) {
+            if (v.causality == Causality::output) {
+                x << "      <Unknown index=\"" << v.valueReference + 1
+                  << "\" dependencies=\""
+                  << joinIndices(v.dependencies, variables, initialization)
+                  << "\"/>\n";
+            }
+        }
+    };
     x << "  <ModelStructure>\n    <Outputs>\n";
-    for (const ScalarVariable& v : variables) {
-        if (v.causality == Causality::output) {
-            x << "      <Unknown index=\"" << v.valueReference + 1
-              << "\" dependencies=\""
-              << joinIndices(v.dependencies, variables, false) << "\"/>\n";
-        }
-    }
+    unknowns(false);
     x << "    </Outputs>\n    <InitialUnknowns>\n";
-    for (const ScalarVariable& v : variables) {
-        if (v.causality == Causality::output) {
-            x << "      <Unknown index=\"" << v.valueReference + 1
-              << "\" dependencies=\""
-              << joinIndices(v.dependencies, variables, true) << "\"/>\n";
-        }
-    }
+    unknowns(true);
     x << "    </InitialUnknowns>\n  </ModelStructure>\n"
       << "</fmiModelDescription>\n";
     return x.str();

@@ -10,13 +10,14 @@ namespace {
 using fmuExport::anyLiveState;
 using fmuExport::FmuInstance;
 using fmuExport::guarded;
+using fmuExport::modelExchangeOnly;
 using fmuExport::requireNonNull;
 using fmuExport::savableState;
 using fmuExport::unsupported;
 using fmuExport::UsageError;
 
-constexpr const char* modelExchangeOnly
-    = "model exchange is not supported: this is a co-simulation FMU";
+constexpr const char* noPending
+    = "fmi2DoStep runs synchronously and never returns fmi2Pending";
 
 FmuInstance& instance(fmi2Component c)
 {
@@ -90,17 +91,10 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
 
 fmi2Status fmi2CancelStep(fmi2Component c)
 {
-    return unsupported(c, "fmi2CancelStep",
-                       "fmi2DoStep runs synchronously and never returns "
-                       "fmi2Pending");
+    return unsupported(c, "fmi2CancelStep", noPending);
 }
 
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind, fmi2Status*)
-{
-    return unsupported(c, "fmi2GetStatus",
-                       "fmi2DoStep runs synchronously and never returns "
-                       "fmi2Pending");
-}
+FMU_EXPORT_UNSUPPORTED2(GetStatus, noPending, const fmi2StatusKind, fmi2Status*)
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
                              fmi2Real* value)
@@ -114,12 +108,9 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
     });
 }
 
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind,
-                                fmi2Integer*)
-{
-    return unsupported(c, "fmi2GetIntegerStatus",
-                       "no Integer status is defined in FMI 2.0");
-}
+FMU_EXPORT_UNSUPPORTED2(GetIntegerStatus,
+                        "no Integer status is defined in FMI 2.0",
+                        const fmi2StatusKind, fmi2Integer*)
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
                                 fmi2Boolean* value)
@@ -133,90 +124,42 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
     });
 }
 
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind,
-                               fmi2String*)
-{
-    return unsupported(c, "fmi2GetStringStatus",
-                       "fmi2DoStep runs synchronously and never returns "
-                       "fmi2Pending");
-}
+FMU_EXPORT_UNSUPPORTED2(GetStringStatus, noPending, const fmi2StatusKind,
+                        fmi2String*)
 
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c,
-                                       const fmi2ValueReference[], size_t,
-                                       const fmi2Integer[], const fmi2Real[])
-{
-    return unsupported(c, "fmi2SetRealInputDerivatives",
-                       "canInterpolateInputs is false");
-}
+FMU_EXPORT_UNSUPPORTED2(SetRealInputDerivatives,
+                        "canInterpolateInputs is false",
+                        const fmi2ValueReference[], size_t, const fmi2Integer[],
+                        const fmi2Real[])
 
-fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c,
-                                        const fmi2ValueReference[], size_t,
-                                        const fmi2Integer[], fmi2Real[])
-{
-    return unsupported(c, "fmi2GetRealOutputDerivatives",
-                       "maxOutputDerivativeOrder is 0");
-}
+FMU_EXPORT_UNSUPPORTED2(GetRealOutputDerivatives,
+                        "maxOutputDerivativeOrder is 0",
+                        const fmi2ValueReference[], size_t, const fmi2Integer[],
+                        fmi2Real[])
 
-fmi2Status fmi2GetDirectionalDerivative(fmi2Component c,
-                                        const fmi2ValueReference[], size_t,
-                                        const fmi2ValueReference[], size_t,
-                                        const fmi2Real[], fmi2Real[])
-{
-    return unsupported(c, "fmi2GetDirectionalDerivative",
-                       "providesDirectionalDerivative is false");
-}
+FMU_EXPORT_UNSUPPORTED2(GetDirectionalDerivative,
+                        "providesDirectionalDerivative is false",
+                        const fmi2ValueReference[], size_t,
+                        const fmi2ValueReference[], size_t, const fmi2Real[],
+                        fmi2Real[])
 
 fmi2Status fmi2EnterEventMode(fmi2Component c)
 {
     return unsupported(c, "fmi2EnterEventMode", modelExchangeOnly);
 }
 
-fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo*)
-{
-    return unsupported(c, "fmi2NewDiscreteStates", modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED2(NewDiscreteStates, modelExchangeOnly, fmi2EventInfo*)
 
 fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c)
 {
     return unsupported(c, "fmi2EnterContinuousTimeMode", modelExchangeOnly);
 }
 
-fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean,
-                                       fmi2Boolean*, fmi2Boolean*)
-{
-    return unsupported(c, "fmi2CompletedIntegratorStep", modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED2(CompletedIntegratorStep, modelExchangeOnly, fmi2Boolean,
+                        fmi2Boolean*, fmi2Boolean*)
 
-fmi2Status fmi2SetTime(fmi2Component c, fmi2Real)
-{
-    return unsupported(c, "fmi2SetTime", modelExchangeOnly);
-}
+FMU_EXPORT_MODEL_EXCHANGE(FMU_EXPORT_UNSUPPORTED2, fmi2Real)
 
-fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real[], size_t)
-{
-    return unsupported(c, "fmi2SetContinuousStates", modelExchangeOnly);
-}
-
-fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real[], size_t)
-{
-    return unsupported(c, "fmi2GetDerivatives", modelExchangeOnly);
-}
-
-fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real[], size_t)
-{
-    return unsupported(c, "fmi2GetEventIndicators", modelExchangeOnly);
-}
-
-fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real[], size_t)
-{
-    return unsupported(c, "fmi2GetContinuousStates", modelExchangeOnly);
-}
-
-fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real[],
-                                             size_t)
-{
-    return unsupported(c, "fmi2GetNominalsOfContinuousStates",
-                       modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED2(GetDerivatives, modelExchangeOnly, fmi2Real[], size_t)
 
 } // extern "C"

@@ -153,27 +153,11 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[],
     });
 }
 
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[],
-                          size_t nvr, fmi2Integer[])
-{
-    return guarded(c, "fmi2GetInteger", readableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("Integer", vr, nvr);
-    });
-}
-
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                           size_t nvr, fmi2Boolean value[])
 {
     return guarded(c, "fmi2GetBoolean", readableState, [&] {
         static_cast<FmuInstance*>(c)->getBoolean(vr, nvr, value);
-    });
-}
-
-fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[],
-                         size_t nvr, fmi2String[])
-{
-    return guarded(c, "fmi2GetString", readableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("String", vr, nvr);
     });
 }
 
@@ -185,14 +169,6 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[],
     });
 }
 
-fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[],
-                          size_t nvr, const fmi2Integer[])
-{
-    return guarded(c, "fmi2SetInteger", writableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("Integer", vr, nvr);
-    });
-}
-
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                           size_t nvr, const fmi2Boolean[])
 {
@@ -200,12 +176,20 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[],
                    [&] { static_cast<FmuInstance*>(c)->setBoolean(vr, nvr); });
 }
 
-fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[],
-                         size_t nvr, const fmi2String[])
-{
-    return guarded(c, "fmi2SetString", writableState, [&] {
-        static_cast<FmuInstance*>(c)->rejectValueReferences("String", vr, nvr);
-    });
-}
+// The types no connector declares: every value reference is refused
+#define FMU_EXPORT_NO_VARIABLES(Function, mask, Values)                        \
+    fmi2Status fmi2##Function(fmi2Component c, const fmi2ValueReference vr[],  \
+                              size_t nvr, Values)                              \
+    {                                                                          \
+        return guarded(c, "fmi2" #Function, mask, [&] {                        \
+            static_cast<FmuInstance*>(c)->rejectValueReferences(#Function + 3, \
+                                                                vr, nvr);      \
+        });                                                                    \
+    }
+
+FMU_EXPORT_NO_VARIABLES(GetInteger, readableState, fmi2Integer[])
+FMU_EXPORT_NO_VARIABLES(GetString, readableState, fmi2String[])
+FMU_EXPORT_NO_VARIABLES(SetInteger, writableState, const fmi2Integer[])
+FMU_EXPORT_NO_VARIABLES(SetString, writableState, const fmi2String[])
 
 } // extern "C"

@@ -11,17 +11,24 @@ namespace {
 using fmuExport::anyLiveState;
 using fmuExport::Fmi3Instance;
 using fmuExport::guarded3;
+using fmuExport::modelExchangeOnly;
 using fmuExport::requireNonNull;
 using fmuExport::savableState;
 using fmuExport::unsupported3;
 using fmuExport::UsageError;
 
-constexpr const char* modelExchangeOnly
-    = "model exchange is not supported: this is a co-simulation FMU";
 constexpr const char* noEventMode = "hasEventMode is false: no event mode";
 constexpr const char* noClocks = "the FMU declares no clocks";
 
 } // namespace
+
+// A function of a feature the FMU does not have: fmi3Error with the reason
+// logged; the parameters after the instance are unnamed
+#define FMU_EXPORT_UNSUPPORTED3(Function, reason, ...)                         \
+    fmi3Status fmi3##Function(fmi3Instance instance, __VA_ARGS__)              \
+    {                                                                          \
+        return fmuExport::unsupported3(instance, "fmi3" #Function, reason);    \
+    }
 
 extern "C" {
 
@@ -124,58 +131,36 @@ fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance)
     return unsupported3(instance, "fmi3EvaluateDiscreteStates", noEventMode);
 }
 
-fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean*,
-                                    fmi3Boolean*, fmi3Boolean*, fmi3Boolean*,
-                                    fmi3Boolean*, fmi3Float64*)
-{
-    return unsupported3(instance, "fmi3UpdateDiscreteStates", noEventMode);
-}
+FMU_EXPORT_UNSUPPORTED3(UpdateDiscreteStates, noEventMode, fmi3Boolean*,
+                        fmi3Boolean*, fmi3Boolean*, fmi3Boolean*, fmi3Boolean*,
+                        fmi3Float64*)
 
-fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance instance,
-                                               fmi3ValueReference, size_t*)
-{
-    return unsupported3(instance, "fmi3GetNumberOfVariableDependencies",
+FMU_EXPORT_UNSUPPORTED3(GetNumberOfVariableDependencies,
                         "the dependencies are those of modelDescription.xml's "
-                        "ModelStructure");
-}
+                        "ModelStructure",
+                        fmi3ValueReference, size_t*)
 
-fmi3Status fmi3GetVariableDependencies(fmi3Instance instance,
-                                       fmi3ValueReference, size_t[],
-                                       fmi3ValueReference[], size_t[],
-                                       fmi3DependencyKind[], size_t)
-{
-    return unsupported3(instance, "fmi3GetVariableDependencies",
+FMU_EXPORT_UNSUPPORTED3(GetVariableDependencies,
                         "the dependencies are those of modelDescription.xml's "
-                        "ModelStructure");
-}
+                        "ModelStructure",
+                        fmi3ValueReference, size_t[], fmi3ValueReference[],
+                        size_t[], fmi3DependencyKind[], size_t)
 
-fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance,
-                                        const fmi3ValueReference[], size_t,
-                                        const fmi3ValueReference[], size_t,
-                                        const fmi3Float64[], size_t,
-                                        fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetDirectionalDerivative",
-                        "providesDirectionalDerivative is false");
-}
+FMU_EXPORT_UNSUPPORTED3(GetDirectionalDerivative,
+                        "providesDirectionalDerivative is false",
+                        const fmi3ValueReference[], size_t,
+                        const fmi3ValueReference[], size_t, const fmi3Float64[],
+                        size_t, fmi3Float64[], size_t)
 
-fmi3Status fmi3GetAdjointDerivative(fmi3Instance instance,
-                                    const fmi3ValueReference[], size_t,
-                                    const fmi3ValueReference[], size_t,
-                                    const fmi3Float64[], size_t, fmi3Float64[],
-                                    size_t)
-{
-    return unsupported3(instance, "fmi3GetAdjointDerivative",
-                        "providesAdjointDerivatives is false");
-}
+FMU_EXPORT_UNSUPPORTED3(GetAdjointDerivative,
+                        "providesAdjointDerivatives is false",
+                        const fmi3ValueReference[], size_t,
+                        const fmi3ValueReference[], size_t, const fmi3Float64[],
+                        size_t, fmi3Float64[], size_t)
 
-fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance,
-                                    const fmi3ValueReference[], size_t,
-                                    const fmi3Int32[], fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetOutputDerivatives",
-                        "maxOutputDerivativeOrder is 0");
-}
+FMU_EXPORT_UNSUPPORTED3(GetOutputDerivatives, "maxOutputDerivativeOrder is 0",
+                        const fmi3ValueReference[], size_t, const fmi3Int32[],
+                        fmi3Float64[], size_t)
 
 fmi3Status fmi3EnterConfigurationMode(fmi3Instance instance)
 {
@@ -189,69 +174,36 @@ fmi3Status fmi3ExitConfigurationMode(fmi3Instance instance)
                         "the FMU has no structural parameters");
 }
 
-fmi3Status fmi3GetIntervalDecimal(fmi3Instance instance,
-                                  const fmi3ValueReference[], size_t,
-                                  fmi3Float64[], fmi3IntervalQualifier[])
-{
-    return unsupported3(instance, "fmi3GetIntervalDecimal", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(GetIntervalDecimal, noClocks,
+                        const fmi3ValueReference[], size_t, fmi3Float64[],
+                        fmi3IntervalQualifier[])
 
-fmi3Status fmi3GetIntervalFraction(fmi3Instance instance,
-                                   const fmi3ValueReference[], size_t,
-                                   fmi3UInt64[], fmi3UInt64[],
-                                   fmi3IntervalQualifier[])
-{
-    return unsupported3(instance, "fmi3GetIntervalFraction", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(GetIntervalFraction, noClocks,
+                        const fmi3ValueReference[], size_t, fmi3UInt64[],
+                        fmi3UInt64[], fmi3IntervalQualifier[])
 
-fmi3Status fmi3GetShiftDecimal(fmi3Instance instance,
-                               const fmi3ValueReference[], size_t,
-                               fmi3Float64[])
-{
-    return unsupported3(instance, "fmi3GetShiftDecimal", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(GetShiftDecimal, noClocks, const fmi3ValueReference[],
+                        size_t, fmi3Float64[])
 
-fmi3Status fmi3GetShiftFraction(fmi3Instance instance,
-                                const fmi3ValueReference[], size_t,
-                                fmi3UInt64[], fmi3UInt64[])
-{
-    return unsupported3(instance, "fmi3GetShiftFraction", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(GetShiftFraction, noClocks, const fmi3ValueReference[],
+                        size_t, fmi3UInt64[], fmi3UInt64[])
 
-fmi3Status fmi3SetIntervalDecimal(fmi3Instance instance,
-                                  const fmi3ValueReference[], size_t,
-                                  const fmi3Float64[])
-{
-    return unsupported3(instance, "fmi3SetIntervalDecimal", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(SetIntervalDecimal, noClocks,
+                        const fmi3ValueReference[], size_t, const fmi3Float64[])
 
-fmi3Status fmi3SetIntervalFraction(fmi3Instance instance,
-                                   const fmi3ValueReference[], size_t,
-                                   const fmi3UInt64[], const fmi3UInt64[])
-{
-    return unsupported3(instance, "fmi3SetIntervalFraction", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(SetIntervalFraction, noClocks,
+                        const fmi3ValueReference[], size_t, const fmi3UInt64[],
+                        const fmi3UInt64[])
 
-fmi3Status fmi3SetShiftDecimal(fmi3Instance instance,
-                               const fmi3ValueReference[], size_t,
-                               const fmi3Float64[])
-{
-    return unsupported3(instance, "fmi3SetShiftDecimal", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(SetShiftDecimal, noClocks, const fmi3ValueReference[],
+                        size_t, const fmi3Float64[])
 
-fmi3Status fmi3SetShiftFraction(fmi3Instance instance,
-                                const fmi3ValueReference[], size_t,
-                                const fmi3UInt64[], const fmi3UInt64[])
-{
-    return unsupported3(instance, "fmi3SetShiftFraction", noClocks);
-}
+FMU_EXPORT_UNSUPPORTED3(SetShiftFraction, noClocks, const fmi3ValueReference[],
+                        size_t, const fmi3UInt64[], const fmi3UInt64[])
 
-fmi3Status fmi3ActivateModelPartition(fmi3Instance instance, fmi3ValueReference,
-                                      fmi3Float64)
-{
-    return unsupported3(instance, "fmi3ActivateModelPartition",
-                        "scheduled execution is not supported");
-}
+FMU_EXPORT_UNSUPPORTED3(ActivateModelPartition,
+                        "scheduled execution is not supported",
+                        fmi3ValueReference, fmi3Float64)
 
 fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance)
 {
@@ -259,58 +211,16 @@ fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance)
                         modelExchangeOnly);
 }
 
-fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean,
-                                       fmi3Boolean*, fmi3Boolean*)
-{
-    return unsupported3(instance, "fmi3CompletedIntegratorStep",
-                        modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED3(CompletedIntegratorStep, modelExchangeOnly, fmi3Boolean,
+                        fmi3Boolean*, fmi3Boolean*)
 
-fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64)
-{
-    return unsupported3(instance, "fmi3SetTime", modelExchangeOnly);
-}
+FMU_EXPORT_MODEL_EXCHANGE(FMU_EXPORT_UNSUPPORTED3, fmi3Float64)
 
-fmi3Status fmi3SetContinuousStates(fmi3Instance instance, const fmi3Float64[],
-                                   size_t)
-{
-    return unsupported3(instance, "fmi3SetContinuousStates", modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED3(GetContinuousStateDerivatives, modelExchangeOnly,
+                        fmi3Float64[], size_t)
 
-fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance,
-                                             fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetContinuousStateDerivatives",
-                        modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED3(GetNumberOfEventIndicators, modelExchangeOnly, size_t*)
 
-fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetEventIndicators", modelExchangeOnly);
-}
-
-fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetContinuousStates", modelExchangeOnly);
-}
-
-fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance,
-                                             fmi3Float64[], size_t)
-{
-    return unsupported3(instance, "fmi3GetNominalsOfContinuousStates",
-                        modelExchangeOnly);
-}
-
-fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t*)
-{
-    return unsupported3(instance, "fmi3GetNumberOfEventIndicators",
-                        modelExchangeOnly);
-}
-
-fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance, size_t*)
-{
-    return unsupported3(instance, "fmi3GetNumberOfContinuousStates",
-                        modelExchangeOnly);
-}
+FMU_EXPORT_UNSUPPORTED3(GetNumberOfContinuousStates, modelExchangeOnly, size_t*)
 
 } // extern "C"

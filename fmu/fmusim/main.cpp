@@ -1,8 +1,6 @@
 // fmusim: run, check and couple FMI 2.0 co-simulation FMUs without CFD.
-#include "check/Check.hpp"
 #include "Errors.hpp"
-#include "run/Run.hpp"
-#include "twobody/TwoBody.hpp"
+#include "Subcommands.hpp"
 
 #include "fmuImport/fmuImport.hpp"
 
@@ -49,26 +47,22 @@ bool wantsHelp(const std::vector<std::string>& args)
 
 int dispatch(const std::string& command, const std::vector<std::string>& args)
 {
-    if (command == "run") {
+    struct Subcommand {
+        const char* name;
+        const char* (*usage)();
+        int (*run)(const std::vector<std::string>&);
+    };
+    static const Subcommand subcommands[] = {
+        {"run", fmusim::runUsage, fmusim::runCommand},
+        {"check", fmusim::checkUsage, fmusim::checkCommand},
+        {"twobody", fmusim::twoBodyUsage, fmusim::twoBodyCommand},
+    };
+    for (const Subcommand& s : subcommands) {
+        if (command != s.name)
+            continue;
         if (wantsHelp(args))
-            return std::cout << fmusim::runUsage() << '\n'
-                             << exitCodes,
-                   fmusim::exitOk;
-        return fmusim::runCommand(args);
-    }
-    if (command == "check") {
-        if (wantsHelp(args))
-            return std::cout << fmusim::checkUsage() << '\n'
-                             << exitCodes,
-                   fmusim::exitOk;
-        return fmusim::checkCommand(args);
-    }
-    if (command == "twobody") {
-        if (wantsHelp(args))
-            return std::cout << fmusim::twoBodyUsage() << '\n'
-                             << exitCodes,
-                   fmusim::exitOk;
-        return fmusim::twoBodyCommand(args);
+            return std::cout << s.usage() << '\n' << exitCodes, fmusim::exitOk;
+        return s.run(args);
     }
     throw fmusim::UsageError("unknown subcommand '" + command
                              + "' (run, check or twobody)");

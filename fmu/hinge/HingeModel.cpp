@@ -6,7 +6,7 @@
 // unwraps the new angle against it, so the angle stays continuous through
 // any number of turns and is saved, restored and serialized with the FMU
 // state (rollback of repeated steps, restart).
-#include "ConnectorFmuModel.hpp"
+#include "LawFmuModel.hpp"
 #include "hinge/Hinge.hpp"
 
 namespace {
@@ -59,14 +59,12 @@ fmuExport::ConnectorWording hingeWording()
     return w;
 }
 
-class HingeModel final : public fmuExport::ConnectorFmuModel {
+using Parameters = connectors::HingeParameters;
+
+class HingeModel final
+    : public fmuExport::LawFmuModel<connectors::Hinge, Parameters> {
 public:
     HingeModel();
-
-    void setParameters(const double* values) override
-    {
-        law_.build(parameters(values));
-    }
 
 protected:
     fmuExport::ConnectorOutputs
@@ -74,7 +72,6 @@ protected:
              const connectors::BodyKinematics& B) const override;
 
 private:
-    connectors::HingeParameters parameters(const double* values) const;
     void declareHingeOutputs();
 
     Block A_axis_, B_axis_, A_ref_, B_ref_;
@@ -82,52 +79,49 @@ private:
     Block ptoStiffness_, ptoDamping_, ptoRestAngle_;
     //- The `angle` output (the unwrapping state)
     Block angle_;
-    fmuExport::BuiltLaw<connectors::Hinge> law_;
 };
 
 HingeModel::HingeModel()
-    : ConnectorFmuModel({"hinge",
-                         "Hinge (revolute joint) between two bodies as a "
-                         "penalty force element, with a rotary power take-off "
-                         "about its axis",
-                         "1.0.0", lawHtml},
-                        hingeWording())
+    : LawFmuModel({"hinge",
+                   "Hinge (revolute joint) between two bodies as a "
+                   "penalty force element, with a rotary power take-off "
+                   "about its axis",
+                   "1.0.0", lawHtml},
+                  hingeWording())
 {
-    fmuExport::VariableTable& t = table();
-    A_axis_ = t.parameter("A.axis", Shape::vector3, "1",
-                          "hinge axis in A's frame, non-zero (normalised)",
-                          {0, 0, 1});
-    B_axis_ = t.parameter("B.axis", Shape::vector3, "1",
-                          "hinge axis in B's frame, non-zero (normalised)",
-                          {0, 0, 1});
-    A_ref_ = t.parameter("A.ref", Shape::vector3, "1",
-                         "angle reference direction in A's frame, off the "
-                         "axis; (0,0,0): the frame axis least aligned with "
-                         "A.axis",
-                         {0, 0, 0});
-    B_ref_ = t.parameter("B.ref", Shape::vector3, "1",
-                         "angle reference direction in B's frame, off the "
-                         "axis; (0,0,0): the frame axis least aligned with "
-                         "B.axis",
-                         {0, 0, 0});
-    stiffness_ = t.parameter("stiffness", Shape::scalar, "N/m",
-                             "translational penalty stiffness, >= 0", {1e5});
-    damping_ = t.parameter("damping", Shape::scalar, "N.s/m",
-                           "translational penalty damping, >= 0", {100.0});
+    A_axis_ = parameter(&Parameters::axis_A, "A.axis", "1",
+                        "hinge axis in A's frame, non-zero (normalised)",
+                        {0, 0, 1});
+    B_axis_ = parameter(&Parameters::axis_B, "B.axis", "1",
+                        "hinge axis in B's frame, non-zero (normalised)",
+                        {0, 0, 1});
+    A_ref_ = parameter(&Parameters::ref_A, "A.ref", "1",
+                       "angle reference direction in A's frame, off the "
+                       "axis; (0,0,0): the frame axis least aligned with "
+                       "A.axis",
+                       {0, 0, 0});
+    B_ref_ = parameter(&Parameters::ref_B, "B.ref", "1",
+                       "angle reference direction in B's frame, off the "
+                       "axis; (0,0,0): the frame axis least aligned with "
+                       "B.axis",
+                       {0, 0, 0});
+    stiffness_ = parameter(&Parameters::stiffness, "stiffness", "N/m",
+                           "translational penalty stiffness, >= 0", 1e5);
+    damping_ = parameter(&Parameters::damping, "damping", "N.s/m",
+                         "translational penalty damping, >= 0", 100.0);
     rotationalStiffness_
-        = t.parameter("rotationalStiffness", Shape::scalar, "N.m/rad",
-                      "axis alignment penalty stiffness, >= 0", {1e3});
+        = parameter(&Parameters::rotationalStiffness, "rotationalStiffness",
+                    "N.m/rad", "axis alignment penalty stiffness, >= 0", 1e3);
     rotationalDamping_
-        = t.parameter("rotationalDamping", Shape::scalar, "N.m.s/rad",
-                      "axis alignment penalty damping, >= 0", {1.0});
+        = parameter(&Parameters::rotationalDamping, "rotationalDamping",
+                    "N.m.s/rad", "axis alignment penalty damping, >= 0", 1.0);
     ptoStiffness_
-        = t.parameter("ptoStiffness", Shape::scalar, "N.m/rad",
-                      "PTO rotary stiffness about the axis, >= 0", {0.0});
-    ptoDamping_ = t.parameter("ptoDamping", Shape::scalar, "N.m.s/rad",
-                              "PTO rotary damping about the axis, >= 0", {0.0});
-    ptoRestAngle_
-        = t.parameter("ptoRestAngle", Shape::scalar, "rad",
-                      "angle at which the PTO spring is unloaded", {0.0});
+        = parameter(&Parameters::ptoStiffness, "ptoStiffness", "N.m/rad",
+                    "PTO rotary stiffness about the axis, >= 0", 0.0);
+    ptoDamping_ = parameter(&Parameters::ptoDamping, "ptoDamping", "N.m.s/rad",
+                            "PTO rotary damping about the axis, >= 0", 0.0);
+    ptoRestAngle_ = parameter(&Parameters::ptoRestAngle, "ptoRestAngle", "rad",
+                              "angle at which the PTO spring is unloaded", 0.0);
     // Both bodies at the origin with the default hinge points: no load
     declareBodies({0, 0, 0});
     declareStartAtRest();
@@ -182,31 +176,12 @@ void HingeModel::declareHingeOutputs()
                 "power absorbed by the PTO from the bodies", pto);
 }
 
-connectors::HingeParameters HingeModel::parameters(const double* values) const
-{
-    connectors::HingeParameters p;
-    p.p_AoP_A = vector3(values, A_p);
-    p.p_BoQ_B = vector3(values, B_p);
-    p.axis_A = vector3(values, A_axis_);
-    p.axis_B = vector3(values, B_axis_);
-    p.ref_A = vector3(values, A_ref_);
-    p.ref_B = vector3(values, B_ref_);
-    p.stiffness = scalar(values, stiffness_);
-    p.damping = scalar(values, damping_);
-    p.rotationalStiffness = scalar(values, rotationalStiffness_);
-    p.rotationalDamping = scalar(values, rotationalDamping_);
-    p.ptoStiffness = scalar(values, ptoStiffness_);
-    p.ptoDamping = scalar(values, ptoDamping_);
-    p.ptoRestAngle = scalar(values, ptoRestAngle_);
-    return p;
-}
-
 fmuExport::ConnectorOutputs
 HingeModel::evaluate(const double* values, const connectors::BodyKinematics& A,
                      const connectors::BodyKinematics& B) const
 {
     const connectors::HingeResult h
-        = law_.get().evaluate(A, B, scalar(values, angle_));
+        = law().evaluate(A, B, scalar(values, angle_));
     return {
         h.loads,
         {h.angle, h.angleRate, h.gap, h.misalignment, h.ptoTorque, h.ptoPower}};

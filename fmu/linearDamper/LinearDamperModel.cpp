@@ -1,6 +1,6 @@
 // linearDamper.fmu: connectors::LinearDamper behind the connector FMU
 // interface. The variable table below is the only list of its variables.
-#include "ConnectorFmuModel.hpp"
+#include "LawFmuModel.hpp"
 #include "linearDamper/LinearDamper.hpp"
 
 namespace {
@@ -22,55 +22,26 @@ potentialEnergy = 0,  dissipatedPower = damping lengthRate^2 [W]
 damping must be finite and &ge; 0 (checked in
 fmi2ExitInitializationMode).</p>)";
 
-class LinearDamperModel final : public fmuExport::ConnectorFmuModel {
+class LinearDamperModel final
+    : public fmuExport::LawFmuModel<connectors::LinearDamper,
+                                    connectors::LinearDamperParameters> {
 public:
     LinearDamperModel()
-        : ConnectorFmuModel({"linearDamper",
-                             "Linear damper along the line between two "
-                             "attachment points",
-                             "1.0.0", lawHtml})
+        : LawFmuModel({"linearDamper",
+                       "Linear damper along the line between two "
+                       "attachment points",
+                       "1.0.0", lawHtml})
     {
         declareBodies({1, 0, 0});
-        damping_ = table().parameter("damping", Shape::scalar, "N.s/m",
-                                     "damping coefficient c, >= 0", {100.0});
-        const std::vector<Block> positions = positionBlocks();
-        const std::vector<Block> motion = join(positions, velocityBlocks());
-        OutputDependencies d;
-        d.loads = join(motion, {damping_});
-        d.length = positions;
-        d.lengthRate = motion;
-        d.tension = d.loads;
-        d.potentialEnergy = {};
-        d.dissipatedPower = d.loads;
-        declareOutputs(d);
+        damping_
+            = parameter(&connectors::LinearDamperParameters::damping, "damping",
+                        "N.s/m", "damping coefficient c, >= 0", 100.0);
+        declareOutputs(pointToPointDependencies({damping_}));
         declareStartAtRest();
     }
 
-    void setParameters(const double* values) override
-    {
-        law_.build(parameters(values));
-    }
-
-protected:
-    fmuExport::ConnectorOutputs
-    evaluate(const double*, const connectors::BodyKinematics& A,
-             const connectors::BodyKinematics& B) const override
-    {
-        return law_.get().evaluate(A, B);
-    }
-
 private:
-    connectors::LinearDamperParameters parameters(const double* values) const
-    {
-        connectors::LinearDamperParameters p;
-        p.p_AoP_A = vector3(values, A_p);
-        p.p_BoQ_B = vector3(values, B_p);
-        p.damping = scalar(values, damping_);
-        return p;
-    }
-
     Block damping_;
-    fmuExport::BuiltLaw<connectors::LinearDamper> law_;
 };
 
 } // namespace

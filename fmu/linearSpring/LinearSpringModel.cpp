@@ -1,6 +1,6 @@
 // linearSpring.fmu: connectors::LinearSpring behind the connector FMU
 // interface. The variable table below is the only list of its variables.
-#include "ConnectorFmuModel.hpp"
+#include "LawFmuModel.hpp"
 #include "linearSpring/LinearSpring.hpp"
 
 namespace {
@@ -25,63 +25,34 @@ restLength &gt; 0 and stiffness &gt; 0 the FMU returns fmi2Error; the damping
 force is zero there. stiffness, restLength and damping must be finite and
 &ge; 0 (checked in fmi2ExitInitializationMode).</p>)";
 
-class LinearSpringModel final : public fmuExport::ConnectorFmuModel {
+using Parameters = connectors::LinearSpringParameters;
+
+class LinearSpringModel final
+    : public fmuExport::LawFmuModel<connectors::LinearSpring, Parameters> {
 public:
     LinearSpringModel()
-        : ConnectorFmuModel(
-            {"linearSpring",
-             "Linear spring with optional axial damping between "
-             "two bodies",
-             "1.0.0", lawHtml})
+        : LawFmuModel({"linearSpring",
+                       "Linear spring with optional axial damping between "
+                       "two bodies",
+                       "1.0.0", lawHtml})
     {
         declareBodies({1, 0, 0});
-        stiffness_ = table().parameter("stiffness", Shape::scalar, "N/m",
-                                       "spring stiffness k, >= 0", {1000.0});
-        restLength_ = table().parameter("restLength", Shape::scalar, "m",
-                                        "rest length L0, >= 0", {1.0});
-        damping_
-            = table().parameter("damping", Shape::scalar, "N.s/m",
-                                "axial damping coefficient c, >= 0", {0.0});
-        const std::vector<Block> positions = positionBlocks();
-        const std::vector<Block> motion = join(positions, velocityBlocks());
-        OutputDependencies d;
-        d.loads = join(motion, {stiffness_, restLength_, damping_});
-        d.length = positions;
-        d.lengthRate = motion;
-        d.tension = d.loads;
-        d.potentialEnergy = join(positions, {stiffness_, restLength_});
-        d.dissipatedPower = join(motion, {damping_});
+        stiffness_ = parameter(&Parameters::stiffness, "stiffness", "N/m",
+                               "spring stiffness k, >= 0", 1000.0);
+        restLength_ = parameter(&Parameters::restLength, "restLength", "m",
+                                "rest length L0, >= 0", 1.0);
+        damping_ = parameter(&Parameters::damping, "damping", "N.s/m",
+                             "axial damping coefficient c, >= 0", 0.0);
+        OutputDependencies d
+            = pointToPointDependencies({stiffness_, restLength_, damping_});
+        d.potentialEnergy = join(positionBlocks(), {stiffness_, restLength_});
+        d.dissipatedPower = join(d.lengthRate, {damping_});
         declareOutputs(d);
         declareStartAtRest();
     }
 
-    void setParameters(const double* values) override
-    {
-        law_.build(parameters(values));
-    }
-
-protected:
-    fmuExport::ConnectorOutputs
-    evaluate(const double*, const connectors::BodyKinematics& A,
-             const connectors::BodyKinematics& B) const override
-    {
-        return law_.get().evaluate(A, B);
-    }
-
 private:
-    connectors::LinearSpringParameters parameters(const double* values) const
-    {
-        connectors::LinearSpringParameters p;
-        p.p_AoP_A = vector3(values, A_p);
-        p.p_BoQ_B = vector3(values, B_p);
-        p.stiffness = scalar(values, stiffness_);
-        p.restLength = scalar(values, restLength_);
-        p.damping = scalar(values, damping_);
-        return p;
-    }
-
     Block stiffness_, restLength_, damping_;
-    fmuExport::BuiltLaw<connectors::LinearSpring> law_;
 };
 
 } // namespace

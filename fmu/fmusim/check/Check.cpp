@@ -1,5 +1,7 @@
 #include "check/Check.hpp"
 
+#include "Subcommands.hpp"
+
 #include "io/Args.hpp"
 #include "check/CheckProbes.hpp"
 #include "Errors.hpp"

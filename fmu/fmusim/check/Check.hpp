@@ -1,5 +1,4 @@
-// `fmusim check`: validate a connector FMU against
-// docs/connector-fmu-interface.md and probe its behaviour.
+// `fmusim check` (Subcommands.hpp): the result of one of its checks.
 #ifndef FMUSIM_CHECK_CHECK_HPP
 #define FMUSIM_CHECK_CHECK_HPP
 
@@ -7,11 +6,6 @@
 #include <vector>
 
 namespace fmusim {
-
-const char* checkUsage();
-
-// args: everything after "check". Returns exitOk or exitCheckFailed.
-int checkCommand(const std::vector<std::string>& args);
 
 struct CheckResult {
     enum Outcome { pass, fail, skip };

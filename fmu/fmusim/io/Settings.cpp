@@ -62,6 +62,19 @@ std::vector<Setting> parseSetOptions(const std::vector<std::string>& options)
     return settings;
 }
 
+std::vector<Setting> fmuSettings(const Args& args)
+{
+    std::vector<Setting> settings;
+    if (const auto file = args.last("parameters"))
+        settings = readSettingsFile(*file);
+    if (args.options.count("set")) {
+        const std::vector<Setting> set
+            = parseSetOptions(args.options.at("set"));
+        settings.insert(settings.end(), set.begin(), set.end());
+    }
+    return settings;
+}
+
 bool isSettable(const fmuImport::Variable& v)
 {
     using fmuImport::Causality;

@@ -24,6 +24,12 @@ std::vector<Setting> readSettingsFile(const std::string& path);
 // Parses --set options "name=value"; UsageError otherwise.
 std::vector<Setting> parseSetOptions(const std::vector<std::string>& options);
 
+struct Args;
+
+// The FMU settings of a command line: those of the --parameters file (the
+// last one given), then the --set options in order.
+std::vector<Setting> fmuSettings(const Args& args);
+
 // The variable may be given a value before initialization (FMI 2.0, 3.2.3
 // and 4.2.4): a parameter or an input, any tunable variable, and any
 // variable that is not constant and has a start value, as an output or

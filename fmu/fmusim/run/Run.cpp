@@ -1,4 +1,4 @@
-#include "run/Run.hpp"
+#include "Subcommands.hpp"
 
 #include "io/Args.hpp"
 #include "io/Csv.hpp"
@@ -77,13 +77,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& arguments)
     o.stepSize = args.number("step-size");
     if (o.stepSize && !(*o.stepSize > 0))
         throw UsageError("--step-size must be positive");
-    if (const auto file = args.last("parameters"))
-        o.settings = readSettingsFile(*file);
-    if (args.options.count("set")) {
-        const std::vector<Setting> set
-            = parseSetOptions(args.options.at("set"));
-        o.settings.insert(o.settings.end(), set.begin(), set.end());
-    }
+    o.settings = fmuSettings(args);
     o.inputFile = args.last("input-file").value_or("");
     o.outputFile = args.last("output-file").value_or("");
     o.outputVariables = args.last("output-variables");

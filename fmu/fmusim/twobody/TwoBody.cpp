@@ -1,4 +1,4 @@
-#include "twobody/TwoBody.hpp"
+#include "Subcommands.hpp"
 
 #include "io/Csv.hpp"
 #include "io/Values.hpp"

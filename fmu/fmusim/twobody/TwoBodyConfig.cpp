@@ -224,13 +224,7 @@ TwoBodyConfig parseTwoBodyConfig(const std::vector<std::string>& arguments)
     for (const Setting& s : settings)
         apply(c, s);
 
-    if (const auto file = args.last("parameters"))
-        c.fmuSettings = readSettingsFile(*file);
-    if (args.options.count("set")) {
-        const std::vector<Setting> set
-            = parseSetOptions(args.options.at("set"));
-        c.fmuSettings.insert(c.fmuSettings.end(), set.begin(), set.end());
-    }
+    c.fmuSettings = fmuSettings(args);
 
     if (!(c.stepSize > 0))
         throw UsageError("step-size must be positive");

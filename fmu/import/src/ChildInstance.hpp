@@ -99,6 +99,15 @@ private:
     // is over, sent with the next call that returns something.
     bool deferred() const { return initialized_; }
 
+    // A set of values of one type: a request of op, deferred or answered
+    template <class T>
+    void setValues(protocol::Op op, const std::vector<unsigned int>& vrs,
+                   const std::vector<T>& values);
+
+    // A get of values: the reply of a request of op for vrs
+    protocol::FrameReader getValues(protocol::Op op,
+                                    const std::vector<unsigned int>& vrs);
+
     // Throws the LostCall of a child that is gone.
     void checkAlive() const;
 

@@ -3,6 +3,7 @@
 #include <pugixml.hpp>
 
 #include <cctype>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <set>
@@ -28,38 +29,33 @@ bool isCIdentifier(const std::string& s)
     return true;
 }
 
+// The enumerator named s, from the names in the enumeration's order; Error
+// naming the attribute and the value otherwise
+template <class Enum, std::size_t N>
+Enum parseName(const char* const (&names)[N], const std::string& s,
+               const char* attribute, const std::string& where)
+{
+    for (std::size_t i = 0; i < N; ++i)
+        if (s == names[i])
+            return static_cast<Enum>(i);
+    throw Error(where + ": unknown " + attribute + " '" + s + "'");
+}
+
 Causality parseCausality(const std::string& s, const std::string& where)
 {
-    if (s.empty() || s == "local")
-        return Causality::local;
-    if (s == "parameter")
-        return Causality::parameter;
-    if (s == "calculatedParameter")
-        return Causality::calculatedParameter;
-    if (s == "input")
-        return Causality::input;
-    if (s == "output")
-        return Causality::output;
-    if (s == "independent")
-        return Causality::independent;
-    if (s == "structuralParameter")
-        return Causality::structuralParameter;
-    throw Error(where + ": unknown causality '" + s + "'");
+    static const char* const names[]
+        = {"parameter",   "calculatedParameter", "input", "output", "local",
+           "independent", "structuralParameter"};
+    return s.empty() ? Causality::local
+                     : parseName<Causality>(names, s, "causality", where);
 }
 
 Variability parseVariability(const std::string& s, const std::string& where)
 {
-    if (s.empty() || s == "continuous")
-        return Variability::continuous;
-    if (s == "constant")
-        return Variability::constant;
-    if (s == "fixed")
-        return Variability::fixed;
-    if (s == "tunable")
-        return Variability::tunable;
-    if (s == "discrete")
-        return Variability::discrete;
-    throw Error(where + ": unknown variability '" + s + "'");
+    static const char* const names[]
+        = {"constant", "fixed", "tunable", "discrete", "continuous"};
+    return s.empty() ? Variability::continuous
+                     : parseName<Variability>(names, s, "variability", where);
 }
 
 double parseNumber(const std::string& s, Type type, const std::string& where)

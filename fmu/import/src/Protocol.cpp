@@ -11,109 +11,66 @@
 namespace fmuImport {
 namespace protocol {
 
+namespace {
+
+// The function each request calls, in FMI 2.0 and in FMI 3.0
+struct OpFunctions {
+    Op op;
+    const char* fmi2;
+    const char* fmi3;
+};
+
+const OpFunctions opFunctions[] = {
+    {Op::load, "dlopen", "dlopen"},
+    {Op::instantiate, "fmi2Instantiate", "fmi3InstantiateCoSimulation"},
+    {Op::setupExperiment, "fmi2SetupExperiment", "fmi3EnterInitializationMode"},
+    {Op::enterInitializationMode, "fmi2EnterInitializationMode",
+     "fmi3EnterInitializationMode"},
+    {Op::exitInitializationMode, "fmi2ExitInitializationMode",
+     "fmi3ExitInitializationMode"},
+    {Op::terminate, "fmi2Terminate", "fmi3Terminate"},
+    {Op::reset, "fmi2Reset", "fmi3Reset"},
+    {Op::setReal, "fmi2SetReal", "fmi3SetFloat64"},
+    {Op::getReal, "fmi2GetReal", "fmi3GetFloat64"},
+    {Op::setInteger, "fmi2SetInteger", "fmi3SetInt32"},
+    {Op::getInteger, "fmi2GetInteger", "fmi3GetInt32"},
+    {Op::setBoolean, "fmi2SetBoolean", "fmi3SetBoolean"},
+    {Op::getBoolean, "fmi2GetBoolean", "fmi3GetBoolean"},
+    {Op::setString, "fmi2SetString", "fmi3SetString"},
+    {Op::getString, "fmi2GetString", "fmi3GetString"},
+    {Op::doStep, "fmi2DoStep", "fmi3DoStep"},
+    {Op::lastSuccessfulTime, "fmi2GetRealStatus", "fmi3DoStep"},
+    {Op::getState, "fmi2GetFMUstate", "fmi3GetFMUState"},
+    {Op::setState, "fmi2SetFMUstate", "fmi3SetFMUState"},
+    {Op::freeState, "fmi2FreeFMUstate", "fmi3FreeFMUState"},
+    {Op::serializeState, "fmi2SerializeFMUstate", "fmi3SerializeFMUState"},
+    {Op::deserializeState, "fmi2DeSerializeFMUstate",
+     "fmi3DeserializeFMUState"},
+    {Op::freeInstance, "fmi2FreeInstance", "fmi3FreeInstance"},
+};
+
+const OpFunctions* functionsOf(Op op)
+{
+    for (const OpFunctions& f : opFunctions)
+        if (f.op == op)
+            return &f;
+    return nullptr;
+}
+
+} // namespace
+
 const char* functionOf(Op op)
 {
-    switch (op) {
-    case Op::load:
-        return "dlopen";
-    case Op::instantiate:
-        return "fmi2Instantiate";
-    case Op::setupExperiment:
-        return "fmi2SetupExperiment";
-    case Op::enterInitializationMode:
-        return "fmi2EnterInitializationMode";
-    case Op::exitInitializationMode:
-        return "fmi2ExitInitializationMode";
-    case Op::terminate:
-        return "fmi2Terminate";
-    case Op::reset:
-        return "fmi2Reset";
-    case Op::setReal:
-        return "fmi2SetReal";
-    case Op::getReal:
-        return "fmi2GetReal";
-    case Op::setInteger:
-        return "fmi2SetInteger";
-    case Op::getInteger:
-        return "fmi2GetInteger";
-    case Op::setBoolean:
-        return "fmi2SetBoolean";
-    case Op::getBoolean:
-        return "fmi2GetBoolean";
-    case Op::setString:
-        return "fmi2SetString";
-    case Op::getString:
-        return "fmi2GetString";
-    case Op::doStep:
-        return "fmi2DoStep";
-    case Op::lastSuccessfulTime:
-        return "fmi2GetRealStatus";
-    case Op::getState:
-        return "fmi2GetFMUstate";
-    case Op::setState:
-        return "fmi2SetFMUstate";
-    case Op::freeState:
-        return "fmi2FreeFMUstate";
-    case Op::serializeState:
-        return "fmi2SerializeFMUstate";
-    case Op::deserializeState:
-        return "fmi2DeSerializeFMUstate";
-    case Op::freeInstance:
-        return "fmi2FreeInstance";
-    }
-    return "an fmi2 function";
+    const OpFunctions* f = functionsOf(op);
+    return f ? f->fmi2 : "an fmi2 function";
 }
 
 const char* functionOf(Op op, int fmiMajorVersion)
 {
-    if (fmiMajorVersion != 3)
+    const OpFunctions* f = functionsOf(op);
+    if (fmiMajorVersion != 3 || !f)
         return functionOf(op);
-    switch (op) {
-    case Op::instantiate:
-        return "fmi3InstantiateCoSimulation";
-    case Op::setupExperiment:
-    case Op::enterInitializationMode:
-        return "fmi3EnterInitializationMode";
-    case Op::exitInitializationMode:
-        return "fmi3ExitInitializationMode";
-    case Op::terminate:
-        return "fmi3Terminate";
-    case Op::reset:
-        return "fmi3Reset";
-    case Op::setReal:
-        return "fmi3SetFloat64";
-    case Op::getReal:
-        return "fmi3GetFloat64";
-    case Op::setInteger:
-        return "fmi3SetInt32";
-    case Op::getInteger:
-        return "fmi3GetInt32";
-    case Op::setBoolean:
-        return "fmi3SetBoolean";
-    case Op::getBoolean:
-        return "fmi3GetBoolean";
-    case Op::setString:
-        return "fmi3SetString";
-    case Op::getString:
-        return "fmi3GetString";
-    case Op::doStep:
-    case Op::lastSuccessfulTime:
-        return "fmi3DoStep";
-    case Op::getState:
-        return "fmi3GetFMUState";
-    case Op::setState:
-        return "fmi3SetFMUState";
-    case Op::freeState:
-        return "fmi3FreeFMUState";
-    case Op::serializeState:
-        return "fmi3SerializeFMUState";
-    case Op::deserializeState:
-        return "fmi3DeserializeFMUState";
-    case Op::freeInstance:
-        return "fmi3FreeInstance";
-    default:
-        return functionOf(op);
-    }
+    return f->fmi3;
 }
 
 bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,

@@ -149,6 +149,9 @@ private:
             return;
         }
         Instance& i = *instance_;
+        // A get's reply: the instance's last message, then the values
+        const auto reply
+            = [&](const auto& values) { out.put(i.lastMessage()).put(values); };
         switch (op) {
         case Op::setupExperiment: {
             const double start = in.get<double>();
@@ -188,26 +191,14 @@ private:
             i.setString(vrs, in.getStrings());
             break;
         }
-        case Op::getReal: {
-            const auto values = i.getReal(in.getVector<unsigned int>());
-            out.put(i.lastMessage()).put(values);
-            return;
-        }
-        case Op::getInteger: {
-            const auto values = i.getInteger(in.getVector<unsigned int>());
-            out.put(i.lastMessage()).put(values);
-            return;
-        }
-        case Op::getBoolean: {
-            const auto values = i.getBoolean(in.getVector<unsigned int>());
-            out.put(i.lastMessage()).put(values);
-            return;
-        }
-        case Op::getString: {
-            const auto values = i.getString(in.getVector<unsigned int>());
-            out.put(i.lastMessage()).put(values);
-            return;
-        }
+        case Op::getReal:
+            return reply(i.getReal(in.getVector<unsigned int>()));
+        case Op::getInteger:
+            return reply(i.getInteger(in.getVector<unsigned int>()));
+        case Op::getBoolean:
+            return reply(i.getBoolean(in.getVector<unsigned int>()));
+        case Op::getString:
+            return reply(i.getString(in.getVector<unsigned int>()));
         case Op::doStep: {
             const double t = in.get<double>(), h = in.get<double>();
             const bool noSet = in.get<std::uint8_t>() != 0;

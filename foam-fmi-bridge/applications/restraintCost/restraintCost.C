@@ -40,6 +40,7 @@ Usage
 #include "fmuConnector.H"
 #include "fmuConnectorOutput.H"
 #include "fmuImport/fmuImport.hpp"
+#include "bodySim.H"
 
 #include <chrono>
 
@@ -95,6 +96,17 @@ scalar timeCalls(const label n, const Call& f)
 }
 
 
+//- The restraint's FMU and parameters, the FMU run in this process with
+//  no time limit
+fmuConnectorCore::restraintEntries coreEntries(const dictionary& dict)
+{
+    fmuConnectorCore::restraintEntries entries;
+    entries.fmu = dict.get<fileName>("fmu");
+    entries.parameters = dict.subOrEmptyDict("parameters");
+    return entries;
+}
+
+
 //- The parts of an fmuConnector's new-step evaluation, each on its own
 class fmuConnectorParts
 {
@@ -115,19 +127,7 @@ public:
         const Time& runTime
     )
     :
-        fmu_
-        (
-            runTime,
-            dict.get<fileName>("fmu").expand(),
-            name,
-            dict,
-            dict.subOrEmptyDict("parameters"),
-            0,
-            fmuConnectorCore::runSettings
-            {
-                fmuConnectorCore::isolationMode::none, 0, string()
-            }
-        ),
+        fmu_(runTime, name, dict, coreEntries(dict), 0),
         output_("cost." + name, runTime, fmu_, "restraintCost " + name),
         rawFmu_(fmu_.file()),
         rawInstance_(rawFmu_, name),
@@ -196,15 +196,7 @@ int main(int argc, char *argv[])
 
     const IOdictionary dynamicMeshDict
     (
-        IOobject
-        (
-            "dynamicMeshDict",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        bodySim::constantIO(runTime, "dynamicMeshDict")
     );
     const dictionary& dict = dynamicMeshDict.subDict("rigidBodyMotionCoeffs");
     RBD::rigidBodyMotion motion(runTime, dict);

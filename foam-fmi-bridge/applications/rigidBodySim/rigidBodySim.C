@@ -70,15 +70,7 @@ dictionary modelDict(const argList& args, const Time& runTime)
 
     const IOdictionary dynamicMeshDict
     (
-        IOobject
-        (
-            "dynamicMeshDict",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        bodySim::constantIO(runTime, "dynamicMeshDict")
     );
     return dynamicMeshDict.subDict("rigidBodyMotionCoeffs");
 }

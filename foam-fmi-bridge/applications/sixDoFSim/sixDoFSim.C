@@ -80,15 +80,7 @@ IOobject bodiesIO(const Time& runTime)
     {
         return restart;
     }
-    return IOobject
-    (
-        "sixDoFBodies",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
+    return bodySim::constantIO(runTime, "sixDoFBodies");
 }
 
 

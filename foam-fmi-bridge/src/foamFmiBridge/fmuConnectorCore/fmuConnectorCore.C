@@ -17,93 +17,6 @@ namespace Foam
     defineTypeNameAndDebug(fmuConnectorCore, 0);
 }
 
-const Foam::Enum<Foam::fmuConnectorCore::restartMode>
-Foam::fmuConnectorCore::restartModeNames
-({
-    { restartMode::exact, "exact" },
-    { restartMode::fresh, "fresh" },
-});
-
-const Foam::Enum<Foam::fmuConnectorCore::isolationMode>
-Foam::fmuConnectorCore::isolationModeNames
-({
-    { isolationMode::none, "none" },
-    { isolationMode::process, "process" },
-});
-
-
-// * * * * * * * * * * * * * * * * Run settings  * * * * * * * * * * * * * * //
-
-Foam::fmuConnectorCore::runSettings Foam::fmuConnectorCore::runSettings::read
-(
-    const word& restraintName,
-    const dictionary& dict
-)
-{
-    runSettings run;
-    run.isolation = isolationModeNames.getOrDefault
-    (
-        "isolation",
-        dict,
-        isolationMode::none
-    );
-
-    run.timeout = dict.getOrDefault<scalar>("timeout", 0);
-    if (!(run.timeout >= 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "restraint " << restraintName << ": entry timeout is "
-            << run.timeout << "; expected the longest one call into the FMU"
-            << " may take, in seconds, >= 0 (0: no limit)"
-            << exit(FatalIOError);
-    }
-
-    // A quoted string: unquoted, OpenFOAM reads hexadecimal digits that
-    // start with a digit as a number
-    if (dict.found("sha256", keyType::LITERAL))
-    {
-        const ITstream& is = dict.lookup("sha256");
-        const bool one =
-            is.size() == 1 && (is[0].isWord() || is[0].isString());
-        run.sha256 =
-            !one ? string()
-          : is[0].isWord() ? string(is[0].wordToken())
-          : is[0].stringToken();
-        bool hex = run.sha256.size() == 64;
-        for (char& c : run.sha256)
-        {
-            c = std::tolower(static_cast<unsigned char>(c));
-            hex = hex && std::isxdigit(static_cast<unsigned char>(c));
-        }
-        if (!hex)
-        {
-            FatalIOErrorInFunction(dict)
-                << "restraint " << restraintName << ": entry sha256 must be"
-                << " the 64 hexadecimal digits of the .fmu file's SHA-256"
-                << " in double quotes, as sha256sum prints them:"
-                << " sha256 \"<digits>\";" << exit(FatalIOError);
-        }
-    }
-    return run;
-}
-
-
-void Foam::fmuConnectorCore::runSettings::write(Ostream& os) const
-{
-    if (isolation != isolationMode::none)
-    {
-        os.writeEntry("isolation", isolationModeNames[isolation]);
-    }
-    if (timeout > 0)
-    {
-        os.writeEntry("timeout", timeout);
-    }
-    if (!sha256.empty())
-    {
-        os.writeEntry("sha256", sha256);
-    }
-}
-
 // * * * * * * * * * * * * * * * * * Kinematics  * * * * * * * * * * * * * * //
 
 Foam::fmuConnectorCore::kinematics Foam::fmuConnectorCore::kinematics::world()
@@ -189,62 +102,27 @@ void Foam::fmuConnectorCore::doStep(const scalar t, const scalar deltaT)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
-void Foam::fmuConnectorCore::checkEntries
-(
-    const word& restraintName,
-    const dictionary& dict,
-    const word& typeKeyword
-)
-{
-    const wordList keywords
-    ({
-        typeKeyword, "body", "bodyB", "fmu", "parameters", "report",
-        "restart", "isolation", "timeout", "sha256"
-    });
-    for (const entry& e : dict)
-    {
-        if (!keywords.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "restraint " << restraintName << ": unknown entry '"
-                << e.keyword() << "'; the entries of an fmuConnector"
-                << " restraint are " << listed(keywords).c_str()
-                << exit(FatalIOError);
-        }
-    }
-
-    if (dict.found("parameters") && !dict.isDict("parameters"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "restraint " << restraintName << ": entry 'parameters' must"
-            << " be a dictionary of the FMU's parameters, e.g."
-            << " parameters { stiffness 100; }" << exit(FatalIOError);
-    }
-
-    const word bodyB(dict.getOrDefault<word>("bodyB", word::null));
-    if (!bodyB.empty() && bodyB == dict.getOrDefault<word>("body", word::null))
-    {
-        FatalIOErrorInFunction(dict)
-            << "restraint " << restraintName << ": body and bodyB are the"
-            << " same body " << bodyB << exit(FatalIOError);
-    }
-}
-
-
-Foam::string Foam::fmuConnectorCore::listed(const wordList& words)
-{
-    string text;
-    forAll(words, i)
-    {
-        text += (i ? ", " : "") + words[i];
-    }
-    return text;
-}
-
-
 Foam::word Foam::fmuConnectorCore::registryName(const word& restraintName)
 {
     return typeName + '.' + restraintName;
+}
+
+
+Foam::IOobject Foam::fmuConnectorCore::registryIO
+(
+    const Time& runTime,
+    const word& restraintName
+)
+{
+    return IOobject
+    (
+        registryName(restraintName),
+        runTime.timeName(),
+        runTime,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
 }
 
 
@@ -272,48 +150,19 @@ Foam::wordList Foam::fmuConnectorCore::names(const objectRegistry& obr)
 }
 
 
-Foam::fileName Foam::fmuConnectorCore::caseFile
-(
-    const fileName& fmuFile,
-    const Time& runTime
-)
-{
-    fileName file(fmuFile);
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file = runTime.globalPath()/file;
-    }
-    return file;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fmuConnectorCore::fmuConnectorCore
 (
     const Time& runTime,
-    const fileName& file,
     const word& restraintName,
     const dictionary& restraintDict,
-    const dictionary& parameters,
-    const scalar startTime,
-    const runSettings& run
+    const restraintEntries& entries,
+    const scalar startTime
 )
 :
-    regIOobject
-    (
-        IOobject
-        (
-            registryName(restraintName),
-            runTime.timeName(),
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    ),
-    file_(file),
+    regIOobject(registryIO(runTime, restraintName)),
+    file_(caseFile(entries.fmu, runTime)),
     restraintName_(restraintName),
     canRollback_(false),
     initialised_(false),
@@ -321,7 +170,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
     stepEndTime_(startTime - 1),
     stepIndex_(-1),
     warnedNoRollback_(false),
-    parameters_(parameters),
+    parameters_(entries.parameters),
     restoreTime_(startTime)
 {
     file_.expand();
@@ -338,15 +187,15 @@ Foam::fmuConnectorCore::fmuConnectorCore
 
     try
     {
-        if (!run.sha256.empty())
+        if (!entries.run.sha256.empty())
         {
             const std::string actual(fmuImport::fileSha256(file_));
-            if (actual != run.sha256)
+            if (actual != entries.run.sha256)
             {
                 FatalIOErrorInFunction(restraintDict)
                     << "restraint " << restraintName_ << ": FMU " << file_
                     << " has SHA-256 " << actual.c_str() << ", but entry"
-                    << " sha256 expects " << run.sha256.c_str() << ": it is"
+                    << " sha256 expects " << entries.run.sha256.c_str() << ": it is"
                     << " not the file the case was set up with. An FMU is"
                     << " native code run with the solver's rights: check"
                     << " where this file came from before changing sha256"
@@ -356,10 +205,10 @@ Foam::fmuConnectorCore::fmuConnectorCore
 
         fmuImport::FmuOptions options;
         options.isolation =
-            run.isolation == isolationMode::process
+            entries.run.isolation == isolationMode::process
           ? fmuImport::Isolation::process
           : fmuImport::Isolation::none;
-        options.timeout = run.timeout;
+        options.timeout = entries.run.timeout;
         options.owner = "restraint " + restraintName_;
         fmu_.reset(new fmuImport::Fmu(file_, options));
 
@@ -376,7 +225,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
 
         lookupVariables();
 
-        checkParameters(parameters, restraintDict, startTime);
+        checkParameters(parameters_, restraintDict, startTime);
 
         const word instanceName(restraintName_);
         instance_.reset
@@ -413,7 +262,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
 
         instance_->setupExperiment(startTime);
         instance_->enterInitializationMode();
-        setParameters(*instance_, parameters);
+        setParameters(*instance_, parameters_);
     }
     catch (const fmuImport::Error& err)
     {

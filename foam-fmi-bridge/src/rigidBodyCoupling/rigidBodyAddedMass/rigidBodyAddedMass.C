@@ -55,6 +55,20 @@ Foam::wordList Foam::rigidBodyAddedMass::patchTypes() const
 }
 
 
+Foam::IOobject Foam::rigidBodyAddedMass::fieldIO(const word& name) const
+{
+    return IOobject
+    (
+        name,
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
 Foam::tmp<Foam::surfaceScalarField>
 Foam::rigidBodyAddedMass::faceDensity() const
 {
@@ -68,15 +82,7 @@ Foam::rigidBodyAddedMass::faceDensity() const
 
     return tmp<surfaceScalarField>::New
     (
-        IOobject
-        (
-            "rigidBodyAddedMass.rhof",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
+        fieldIO("rigidBodyAddedMass.rhof"),
         mesh_,
         dimensionedScalar("rhoInf", dimDensity, rhoInf_)
     );
@@ -192,15 +198,7 @@ Foam::scalarSquareMatrix Foam::rigidBodyAddedMass::matrix
                 i,
                 new volScalarField
                 (
-                    IOobject
-                    (
-                        "rigidBodyAddedMass.p" + Foam::name(i),
-                        mesh_.time().timeName(),
-                        mesh_,
-                        IOobject::NO_READ,
-                        IOobject::NO_WRITE,
-                        false
-                    ),
+                    fieldIO("rigidBodyAddedMass.p" + Foam::name(i)),
                     mesh_,
                     dimensionedScalar("zero", dimMass/sqr(dimLength), Zero),
                     types

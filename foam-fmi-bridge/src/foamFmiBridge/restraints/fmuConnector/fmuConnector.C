@@ -122,20 +122,9 @@ Foam::RBD::restraints::fmuConnector::massProperties(const label bodyID) const
 void Foam::RBD::restraints::fmuConnector::load()
 {
     const Time& runTime = model_.time();
-    const fileName file(fmuConnectorCore::caseFile(fmuFile_, runTime));
-
     fmu_.reset
     (
-        new fmuConnectorCore
-        (
-            runTime,
-            file,
-            name_,
-            coeffs_,
-            parameters_,
-            runTime.value(),
-            run_
-        )
+        new fmuConnectorCore(runTime, name_, coeffs_, entries_, runTime.value())
     );
     fmu_->checkBodyB(bodyBName_, coeffs_);
 
@@ -171,7 +160,7 @@ void Foam::RBD::restraints::fmuConnector::load()
             name_,
             runTime,
             *fmu_,
-            restart_ == fmuConnectorCore::restartMode::fresh,
+            entries_.restart == fmuConnectorCore::restartMode::fresh,
             coeffs_
         )
     );
@@ -180,7 +169,7 @@ void Foam::RBD::restraints::fmuConnector::load()
 
     OStringStream description;
     description
-        << "Connector " << name_ << ": FMU " << file << ", body A "
+        << "Connector " << name_ << ": FMU " << fmu_->file() << ", body A "
         << model_.name(bodyID_) << ", body B " << bodyB;
 
     fmu_->record
@@ -192,7 +181,7 @@ void Foam::RBD::restraints::fmuConnector::load()
             *fmu_,
             description.str(),
             word::null,
-            report_ ? wordList({model_.name(bodyID_), bodyB}) : wordList()
+            entries_.report ? wordList({model_.name(bodyID_), bodyB}) : wordList()
         )
     );
 }
@@ -209,8 +198,7 @@ Foam::RBD::restraints::fmuConnector::fmuConnector
 :
     restraint(name, checkBody(name, dict, model, "body"), model),
     bodyBID_(-1),
-    bodyBIndex_(-1),
-    restart_(fmuConnectorCore::restartMode::exact)
+    bodyBIndex_(-1)
 {
     read(dict);
 
@@ -273,16 +261,7 @@ bool Foam::RBD::restraints::fmuConnector::read
 
     fmuConnectorCore::checkEntries(name_, coeffs_, "type");
 
-    coeffs_.readEntry("fmu", fmuFile_);
-    parameters_ = coeffs_.subOrEmptyDict("parameters");
-    report_ = coeffs_.lookupOrDefault<Switch>("report", false);
-    restart_ = fmuConnectorCore::restartModeNames.getOrDefault
-    (
-        "restart",
-        coeffs_,
-        fmuConnectorCore::restartMode::exact
-    );
-    run_ = fmuConnectorCore::runSettings::read(name_, coeffs_);
+    entries_.read(name_, coeffs_);
 
     bodyBName_ = coeffs_.lookupOrDefault<word>("bodyB", word::null);
     bodyBID_ = -1;
@@ -306,17 +285,12 @@ void Foam::RBD::restraints::fmuConnector::write
 {
     restraint::write(os);
 
-    os.writeEntry("fmu", fmuFile_);
+    os.writeEntry("fmu", entries_.fmu);
     if (!bodyBName_.empty())
     {
         os.writeEntry("bodyB", bodyBName_);
     }
-    os.writeEntry("report", report_);
-    os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
-    run_.write(os);
-    os.beginBlock("parameters");
-    parameters_.write(os, false);
-    os.endBlock();
+    entries_.write(os);
 }
 
 

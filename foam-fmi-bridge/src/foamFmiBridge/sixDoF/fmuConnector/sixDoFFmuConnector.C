@@ -135,8 +135,6 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
 )
 :
     sixDoFRigidBodyMotionRestraint(name, sDoFRBMRDict),
-    report_(false),
-    restart_(fmuConnectorCore::restartMode::exact),
     side_(0)
 {
     read(sDoFRBMRDict);
@@ -316,18 +314,9 @@ bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
         "sixDoFRigidBodyMotionRestraint"
     );
 
-    sDoFRBMRCoeffs_.readEntry("fmu", fmuFile_);
+    entries_.read(name_, sDoFRBMRCoeffs_);
     sDoFRBMRCoeffs_.readEntry("body", body_);
     bodyB_ = sDoFRBMRCoeffs_.lookupOrDefault<word>("bodyB", word::null);
-    parameters_ = sDoFRBMRCoeffs_.subOrEmptyDict("parameters");
-    report_ = sDoFRBMRCoeffs_.lookupOrDefault<Switch>("report", false);
-    restart_ = fmuConnectorCore::restartModeNames.getOrDefault
-    (
-        "restart",
-        sDoFRBMRCoeffs_,
-        fmuConnectorCore::restartMode::exact
-    );
-    run_ = fmuConnectorCore::runSettings::read(name_, sDoFRBMRCoeffs_);
 
     return true;
 }
@@ -338,18 +327,13 @@ void Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::write
     Ostream& os
 ) const
 {
-    os.writeEntry("fmu", fmuFile_);
+    os.writeEntry("fmu", entries_.fmu);
     os.writeEntry("body", body_);
     if (!bodyB_.empty())
     {
         os.writeEntry("bodyB", bodyB_);
     }
-    os.writeEntry("report", report_);
-    os.writeEntry("restart", fmuConnectorCore::restartModeNames[restart_]);
-    run_.write(os);
-    os.beginBlock("parameters");
-    parameters_.write(os, false);
-    os.endBlock();
+    entries_.write(os);
 }
 
 

@@ -157,18 +157,12 @@ Foam::sixDoFConnector::sixDoFConnector
         return;
     }
 
+    fmuConnectorCore::restraintEntries entries;
+    entries.read(name_, dict_);
+
     fmu_.reset
     (
-        new fmuConnectorCore
-        (
-            runTime,
-            fmuConnectorCore::caseFile(dict_.get<fileName>("fmu"), runTime),
-            name_,
-            dict_,
-            dict_.subOrEmptyDict("parameters"),
-            stepTime_,
-            fmuConnectorCore::runSettings::read(name_, dict_)
-        )
+        new fmuConnectorCore(runTime, name_, dict_, entries, stepTime_)
     );
     fmu_->checkBodyB(bodyB_, dict_);
 
@@ -187,13 +181,7 @@ Foam::sixDoFConnector::sixDoFConnector
     );
 
     const bool fresh =
-        fmuConnectorCore::restartModeNames.getOrDefault
-        (
-            "restart",
-            dict_,
-            fmuConnectorCore::restartMode::exact
-        )
-     == fmuConnectorCore::restartMode::fresh;
+        entries.restart == fmuConnectorCore::restartMode::fresh;
 
     stateIO_.reset
     (
