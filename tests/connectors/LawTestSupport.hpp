@@ -21,6 +21,8 @@ using connectors::ConnectorResult;
 using connectors::Matrix3;
 using connectors::Vector3;
 
+inline constexpr double pi = 3.14159265358979323846;
+
 inline Matrix3 rotation(double angle, const Vector3& axis)
 {
     return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
@@ -159,6 +161,15 @@ void expectRefusal(Call&& call, const std::string& message,
             << message;
         EXPECT_EQ(e.parameter(), parameter) << message;
     }
+}
+
+//- `message` starts with `start` and contains `part`
+inline void expectStartsWithAndContains(const std::string& message,
+                                        const std::string& start,
+                                        const std::string& part)
+{
+    EXPECT_EQ(message.rfind(start, 0), 0u) << message;
+    EXPECT_NE(message.find(part), std::string::npos) << message;
 }
 
 } // namespace lawTest

@@ -59,6 +59,16 @@ inline MooringLineParameters lineOf(const LineType& type, double length,
     return p;
 }
 
+//- A section after the first, of `type` and `length` [m] in `segments`
+//  segments, with the point `joint` at its joint with the section before
+inline LineSection sectionOf(const LineType& type, double length, int segments,
+                             const LinePoint& joint)
+{
+    LineSection s = lineOf(type, length, false, segments).section(0);
+    s.joint = joint;
+    return s;
+}
+
 //- `p` with the seabed's penalty stiffness [Pa/m] and damping [Pa.s/m]
 inline MooringLineParameters onSeabed(MooringLineParameters p, double stiffness,
                                       double damping)

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "LawTestSupport.hpp"
+#include "MooringLineReferences.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineLayout.hpp"
@@ -24,24 +25,29 @@ using connectors::MooringLineState;
 using connectors::NodeForces;
 using connectors::WaterMotion;
 
-constexpr double pi = 3.14159265358979323846;
-
 //- A 100 m line of 10 segments, d = 0.1 m, straight along x under a
 //  pretension (weightless: gravity 0), no drag
 MooringLineParameters straightLine()
 {
-    MooringLineParameters p;
-    p.length = 100.0;
-    p.EA = 1e8;
-    p.axialDamping = 1e6;
-    p.massPerLength = 50.0;
-    p.diameter = 0.1;
+    // d, w, EA, axial damping, Cn, Ct, Can, Cat
+    MooringLineParameters p = connectors::references::lineOf(
+        {0.1, 50.0, 1e8, 1e6, 0.0, 0.0, 1.0, 0.5}, 100.0, false, 10);
     p.gravity = 0.0;
-    p.normalAddedMass = 1.0;
-    p.tangentialAddedMass = 0.5;
-    p.segments = 10;
     return p;
 }
+
+//- straightLine() under gravity (9.81 m/s2)
+MooringLineParameters hangingLine()
+{
+    MooringLineParameters p = straightLine();
+    p.gravity = 9.81;
+    return p;
+}
+
+//- The line's ends [m]: A 60 m along x and 80.5 m above B at the origin,
+//  100.4 m apart (the 100 m line stretched)
+const BodyKinematics endA = body(Vector3(60.0, 0.0, 80.5));
+const BodyKinematics endB = body(Vector3::Zero());
 
 //- Nodes 0..N on the straight line from the origin to (x, 0, 0), at rest
 void straightNodes(int N, double x, std::vector<Vector3>& r,
@@ -112,18 +118,10 @@ TEST(MooringLineFlowInertia, ScaledBySubmergedFractionAndAddsThePoint)
     MooringLineParameters p = straightLine();
     p.segments = 4;
     p.length = 40.0;
-    connectors::LineSection upper;
-    upper.length = 60.0;
-    upper.EA = 1e8;
-    upper.massPerLength = 20.0;
-    upper.diameter = 0.2;
-    upper.normalAddedMass = 0.8;
-    upper.tangentialAddedMass = 0.1;
-    upper.segments = 6;
-    upper.joint.mass = 100.0;
-    upper.joint.volume = 0.5;
-    upper.joint.addedMass = 0.6;
-    p.sections = {upper};
+    // d, w, EA, axial damping, Cn, Ct, Can, Cat; the buoy's m, V, CdA, Ca
+    p.sections = {connectors::references::sectionOf(
+        {0.2, 20.0, 1e8, 0.0, 0.0, 0.0, 0.8, 0.1}, 60.0, 6,
+        {100.0, 0.5, 0.0, 0.6})};
     p.freeSurface = true;
     p.waterLevel = 0.0;
     const connectors::LineLayout L = connectors::lineLayout(p, p.weight());
@@ -165,11 +163,9 @@ TEST(MooringLineFlowInertia, BodiesTakeTheEndsHalfSegments)
     // (given at two points: uniform): the loads on A and B change by the
     // end nodes' half segments' rho A l/2 ((1 + Can) a_n + (1 + Cat) a_t)
     // about their end segments, and nothing else
-    MooringLineParameters p = straightLine();
-    p.gravity = 9.81;
+    const MooringLineParameters p = hangingLine();
     MooringLine law(p);
-    const BodyKinematics B = body(Vector3::Zero());
-    const BodyKinematics A = body(Vector3(60.0, 0.0, 80.5));
+    const BodyKinematics A = endA, B = endB;
     const MooringLineState s = law.initialState(A, B, 0.0);
     const Vector3 a(0.5, 0.2, -0.3);
     const std::vector<Vector3> flow
@@ -269,11 +265,8 @@ TEST(MooringLineFlowInertia, NoAccelerationChangesNothing)
 {
     // an empty and a zero acceleration: the run of no acceleration, bit
     // for bit (the force adds exact zeros)
-    MooringLineParameters p = straightLine();
-    p.gravity = 9.81;
-    MooringLine law(p);
-    const BodyKinematics B = body(Vector3::Zero());
-    const BodyKinematics A = body(Vector3(60.0, 0.0, 80.5));
+    MooringLine law(hangingLine());
+    const BodyKinematics A = endA, B = endB;
     MooringLineState s0 = law.initialState(A, B, 0.0), s1 = s0;
     const std::vector<Vector3> flow(11, Vector3(0.3, 0.1, 0.0));
     for (int k = 0; k < 20; ++k) {
@@ -287,8 +280,7 @@ TEST(MooringLineFlowInertia, NoAccelerationChangesNothing)
 TEST(MooringLineFlowInertia, AccelerationPointsAreChecked)
 {
     MooringLine law(straightLine());
-    const BodyKinematics B = body(Vector3::Zero());
-    const BodyKinematics A = body(Vector3(60.0, 0.0, 80.5));
+    const BodyKinematics A = endA, B = endB;
     MooringLineState s = law.initialState(A, B, 0.0);
     const std::vector<Vector3> flow(11, Vector3::Zero());
     EXPECT_THROW(law.advance(s, A, B, 0.1, flow,

@@ -23,8 +23,6 @@ using connectors::LineSection;
 using connectors::MooringLine;
 using connectors::MooringLineParameters;
 
-constexpr double pi = 3.14159265358979323846;
-
 //- A chain (from the anchor) of 45 m and a rope of 35 m, N/2 segments
 //  each, a clump weight of 1500 kg and 0.2 m3 between them, under water
 MooringLineParameters chainAndRope(int N, bool seabed)

@@ -24,7 +24,6 @@ using connectors::MooringLine;
 using connectors::MooringLineParameters;
 using connectors::MooringLineState;
 
-constexpr double pi = 3.14159265358979323846;
 using connectors::references::lab;
 using connectors::references::oc4;
 using connectors::references::ReferenceLine;

@@ -18,8 +18,6 @@ namespace {
 using namespace lawTest;
 using namespace connectors;
 
-constexpr double pi = 3.14159265358979323846;
-
 //- A chain of 100 m in 40 m of water with Morison drag and axial damping
 MooringLineParameters chain(int segments)
 {

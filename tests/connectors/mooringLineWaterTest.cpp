@@ -23,10 +23,6 @@ using namespace lawTest;
 using connectors::MooringLine;
 using connectors::MooringLineParameters;
 using connectors::MooringLineState;
-using connectors::NodeForces;
-using connectors::WaterMotion;
-
-constexpr double pi = 3.14159265358979323846;
 
 //- A 100 m line of 50 kg/m, d = 0.1 m, between two bodies (no seabed)
 MooringLineParameters line(int segments)
@@ -141,7 +137,8 @@ TEST(MooringLineWater, EndNodeOnTheSeabedCarriesItsPenalty)
         v[std::size_t(i)].setZero();
     }
     r[std::size_t(N)][2] = -delta;
-    const NodeForces f = connectors::nodeForces(p, p.weight(), r, v, 0.0);
+    const connectors::NodeForces f
+        = connectors::nodeForces(p, p.weight(), r, v, 0.0);
     const double expected = -p.weight() * 0.5 * l
         + p.seabedStiffness * delta * p.diameter * 0.5 * l;
     // one product of exact inputs: round-off of the 1.2e3 N penalty
@@ -168,9 +165,9 @@ TEST(MooringLineWater, DragActsOnTheStretchedLength)
         r[std::size_t(i)] = Vector3(i * s, 0.0, -50.0);
         v[std::size_t(i)].setZero();
     }
-    WaterMotion water;
+    connectors::WaterMotion water;
     water.current = true;
-    const NodeForces f
+    const connectors::NodeForces f
         = connectors::nodeForces(p, p.weight(), r, v, -100.0, &water);
     const double drag
         = 0.5 * p.waterDensity * p.diameter * p.normalDrag * s * U * U;
