@@ -135,6 +135,29 @@ inline void expectOutputs(Instance& in, const std::vector<std::string>& names,
     }
 }
 
+//- `parameters` with `changes` set over them
+inline std::map<std::string, double>
+changed(std::map<std::string, double> parameters,
+        const std::map<std::string, double>& changes)
+{
+    for (const auto& [name, value] : changes) {
+        parameters[name] = value;
+    }
+    return parameters;
+}
+
+//- A new instance of `fmu` initialised with `parameters` fails with
+//  fmi2Error and `message`
+inline void
+expectInitializationRefused(const LoadedFmu& fmu,
+                            const std::map<std::string, double>& parameters,
+                            const std::string& message)
+{
+    Instance in(fmu);
+    EXPECT_EQ(in.initialize(parameters), fmi2Error);
+    EXPECT_EQ(in.lastMessage(), message);
+}
+
 //- The FMU's interface outputs equal the law's result
 inline void expectOutputs(Instance& in,
                           const connectors::ConnectorResult& expected)

@@ -140,24 +140,14 @@ TEST(CatenaryFmu, RepeatedStepAfterRestoreIsIdentical)
 TEST(CatenaryFmu, ErrorsAreNamed)
 {
     LoadedFmu fmu("catenary");
-    {
-        Instance in(fmu);
-        std::map<std::string, double> p = mooringParameters;
-        p["seabedContact"] = 0.5;
-        EXPECT_EQ(in.initialize(p), fmi2Error);
-        EXPECT_EQ(in.lastMessage(),
-                  "fmi2ExitInitializationMode: catenary: parameter "
-                  "seabedContact = 0.5 is out of range (allowed: 0 or 1)");
-    }
-    {
-        Instance in(fmu);
-        std::map<std::string, double> p = mooringParameters;
-        p["EA"] = -1.0;
-        EXPECT_EQ(in.initialize(p), fmi2Error);
-        EXPECT_EQ(in.lastMessage(),
-                  "fmi2ExitInitializationMode: catenary: parameter "
-                  "EA = -1 N is out of range (allowed: finite and > 0)");
-    }
+    expectInitializationRefused(
+        fmu, changed(mooringParameters, {{"seabedContact", 0.5}}),
+        "fmi2ExitInitializationMode: catenary: parameter seabedContact = "
+        "0.5 is out of range (allowed: 0 or 1)");
+    expectInitializationRefused(
+        fmu, changed(mooringParameters, {{"EA", -1.0}}),
+        "fmi2ExitInitializationMode: catenary: parameter EA = -1 N is out "
+        "of range (allowed: finite and > 0)");
     Instance in(fmu);
     ASSERT_EQ(in.initialize(mooringParameters), fmi2OK);
     BodyKinematics sunk = floater(0.0);

@@ -54,31 +54,21 @@ TEST(CoulombFrictionFmu, OutputsEqualTheLaw)
 TEST(CoulombFrictionFmu, BadParametersAreNamedAtExitInitializationMode)
 {
     LoadedFmu fmu("coulombFriction");
-    {
-        Instance in(fmu);
-        EXPECT_EQ(in.initialize({{"regularisationVelocity", 0.0}}), fmi2Error);
-        EXPECT_EQ(in.lastMessage(),
-                  "fmi2ExitInitializationMode: coulombFriction: parameter "
-                  "regularisationVelocity = 0 m/s is out of range (allowed: "
-                  "finite and > 0)");
-    }
-    {
-        Instance in(fmu);
-        EXPECT_EQ(in.initialize({{"frictionForce", -0.3}}), fmi2Error);
-        EXPECT_EQ(in.lastMessage(),
-                  "fmi2ExitInitializationMode: coulombFriction: parameter "
-                  "frictionForce = -0.3 N is out of range (allowed: finite "
-                  "and >= 0)");
-    }
-    {
-        Instance in(fmu);
-        EXPECT_EQ(in.initialize({{"B.axis[3]", 1e-13}}), fmi2Error);
-        EXPECT_EQ(in.lastMessage(),
-                  "fmi2ExitInitializationMode: coulombFriction: parameter "
-                  "B.axis = (0, 0, 1e-13) has no direction (allowed: (0, 0, "
-                  "0) for friction in every direction, or a finite vector of "
-                  "length >= 1e-12, normalised by the law)");
-    }
+    expectInitializationRefused(
+        fmu, {{"regularisationVelocity", 0.0}},
+        "fmi2ExitInitializationMode: coulombFriction: parameter "
+        "regularisationVelocity = 0 m/s is out of range (allowed: finite and "
+        "> 0)");
+    expectInitializationRefused(
+        fmu, {{"frictionForce", -0.3}},
+        "fmi2ExitInitializationMode: coulombFriction: parameter frictionForce "
+        "= -0.3 N is out of range (allowed: finite and >= 0)");
+    expectInitializationRefused(
+        fmu, {{"B.axis[3]", 1e-13}},
+        "fmi2ExitInitializationMode: coulombFriction: parameter B.axis = (0, "
+        "0, 1e-13) has no direction (allowed: (0, 0, 0) for friction in every "
+        "direction, or a finite vector of length >= 1e-12, normalised by the "
+        "law)");
 }
 
 } // namespace

@@ -67,6 +67,55 @@ inline fmi2Status initialise(const fmuTest::LoadedFmu& fmu,
     return s == fmi2OK ? fmu.api.ExitInitializationMode(in.c) : s;
 }
 
+//- The law's state at the start of the FMU's run: the floater at t = 0,
+//  the anchor at the origin
+inline connectors::MooringLineState
+startState(const connectors::MooringLine& law)
+{
+    return law.initialState(floater(0.0), BodyKinematics(), 0.0);
+}
+
+//- The force on the floater `got[0..2]` equals the law's `want` at step
+//  `k`: the same code on the same doubles compiled into two binaries, so
+//  only instruction selection (FMA contraction) may differ, and CVODE
+//  amplifies such round-off at most to its tolerance (1e-6): 1e-5 of the
+//  fairlead tension is ample
+template <class Result>
+void expectFloaterForceNear(const std::vector<double>& got, const Result& want,
+                            int k)
+{
+    const double T = want.fairleadTension;
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(got[std::size_t(i)], want.loads.A.f_W[i], 1e-5 * T) << k;
+    }
+}
+
+//- `steps` coupling steps of `h` from t = 0 of `once` and of `repeated`,
+//  each of `repeated`'s after two outer correctors (save the state, set
+//  the corrector's inputs with `setCorrectorInputs(t, corrector)`, step,
+//  restore): `step(in, t)` gives the outputs of both bit for bit
+template <class Step, class SetCorrectorInputs>
+void expectRepeatedStepsEqual(const fmuTest::LoadedFmu& fmu,
+                              fmuTest::Instance& once,
+                              fmuTest::Instance& repeated, int steps, double h,
+                              Step&& step,
+                              SetCorrectorInputs&& setCorrectorInputs)
+{
+    fmi2FMUstate saved = nullptr;
+    for (int k = 0; k < steps; ++k) {
+        const double t = k * h;
+        const std::vector<double> reference = step(once, t);
+        ASSERT_EQ(fmu.api.GetFMUstate(repeated.c, &saved), fmi2OK);
+        for (int corrector = 0; corrector < 2; ++corrector) {
+            ASSERT_NO_FATAL_FAILURE(setCorrectorInputs(t, corrector));
+            ASSERT_EQ(fmu.api.DoStep(repeated.c, t, h, fmi2True), fmi2OK);
+            ASSERT_EQ(fmu.api.SetFMUstate(repeated.c, saved), fmi2OK);
+        }
+        EXPECT_EQ(step(repeated, t), reference) << "step " << k;
+    }
+    EXPECT_EQ(fmu.api.FreeFMUstate(repeated.c, &saved), fmi2OK);
+}
+
 //- Water velocities at the 11 shape points, point 1 at the fairlead, as
 //  the inputs shape.Ux/Uy/Uz[k]
 inline std::map<std::string, double>
