@@ -11,6 +11,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "bodyMorphing.H"
+#include "unregisteredIO.H"
 #include "uniformDimensionedFields.H"
 #include "forces.H"
 #include "OneConstant.H"
@@ -48,7 +49,7 @@ Foam::addedMassRigidBodyMeshMotion::bodyMesh::bodyMesh
     do_(dict.get<scalar>("outerDistance")),
     weight_
     (
-        bodyMorphing::scaleIO(mesh, name_ + ".motionScale"),
+        unregisteredIO(mesh, name_ + ".motionScale"),
         pointMesh::New(mesh),
         dimensionedScalar(dimless, Zero)
     )

@@ -12,6 +12,7 @@
 #include "polyMesh.H"
 #include "fvMesh.H"
 #include "bodyMorphing.H"
+#include "unregisteredIO.H"
 #include "uniformDimensionedFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -111,7 +112,7 @@ addedMassSixDoFRigidBodyMotionSolver
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
     scale_
     (
-        bodyMorphing::scaleIO(mesh, "motionScale"),
+        unregisteredIO(mesh, "motionScale"),
         pointMesh::New(mesh),
         dimensionedScalar(dimless, Zero)
     ),
