@@ -135,8 +135,51 @@ def run(case):
     return result.returncode, result.stdout
 
 
+def refused(code, log, expected):
+    """(ok, detail): a FatalIOError with every expected phrase."""
+    missing = [e for e in expected if e not in log]
+    ok = code != 0 and "FOAM FATAL IO ERROR" in log and not missing
+    return ok, f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if not ok else "")
+
+
+def ran(code, log):
+    return code == 0, f"exit code {code}" + ("" if code == 0 else "\n" + log[-2500:])
+
+
+def run_cases(cases, make):
+    """(name, ok, detail) of each (name, text, expected phrases or None:
+    must run) case, make(name, text) writing the case."""
+    results = []
+    for name, text, expected in cases:
+        code, log = run(make(name, text))
+        results.append((name, *(ran(code, log) if expected is None
+                                else refused(code, log, expected))))
+    return results
+
+
+def report(results):
+    """Prints each (name, ok, detail) and the count; 1 if any failed."""
+    failures = 0
+    for name, ok, detail in results:
+        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
+        failures += 0 if ok else 1
+    print(f"{len(results) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+def run_checks(prefix, checks):
+    """report() of checks(work), work a new temporary directory (kept with
+    KEEP_CASES=1)."""
+    work = tempfile.mkdtemp(prefix=prefix)
+    try:
+        results = checks(work)
+    finally:
+        if os.environ.get("KEEP_CASES") != "1":
+            shutil.rmtree(work, ignore_errors=True)
+    return report(results)
+
+
 def main():
-    work = tempfile.mkdtemp(prefix="addedMassEntries.")
     valid_coupling = "addedMass, pressure, residual, addedMassInterval, maxIter, tolerance"
     cases = [
         # name, dynamicMeshDict, expected phrases (None: must run)
@@ -171,25 +214,8 @@ def main():
          + "\naddedMassInteval 0;\n",
          ["unknown entry 'addedMassInteval'"]),
     ]
-    failures = 0
-    try:
-        for name, text, expected in cases:
-            case = make_case(work, name, text)
-            code, log = run(case)
-            if expected is None:
-                ok = code == 0
-                detail = f"exit code {code}" + ("" if ok else "\n" + log[-2500:])
-            else:
-                missing = [e for e in expected if e not in log]
-                ok = code != 0 and "FOAM FATAL IO ERROR" in log and not missing
-                detail = f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if not ok else "")
-            print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
-            failures += 0 if ok else 1
-    finally:
-        if os.environ.get("KEEP_CASES") != "1":
-            shutil.rmtree(work, ignore_errors=True)
-    print(f"{len(cases) - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return run_checks("addedMassEntries.", lambda work: run_cases(
+        cases, lambda name, text: make_case(work, name, text)))
 
 
 if __name__ == "__main__":

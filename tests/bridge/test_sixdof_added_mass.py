@@ -26,10 +26,9 @@ import os
 import re
 import shutil
 import sys
-import tempfile
 
 from foamfmi.bridgecase import foam_file
-from test_added_mass_entries import make_case, run
+from test_added_mass_entries import make_case, ran, refused, run, run_cases, run_checks
 
 SOLVER = "addedMassSixDoFRigidBodyMotion"
 STATE = os.path.join("uniform", "sixDoFRigidBodyMotionState")
@@ -94,17 +93,6 @@ boundaryField
     walls {{ type fixedValue; value uniform (0 0 0); }}
 }}
 """
-
-
-def refused(code, log, expected):
-    """(ok, detail): a FatalIOError with every expected phrase."""
-    missing = [e for e in expected if e not in log]
-    ok = code != 0 and "FOAM FATAL IO ERROR" in log and not missing
-    return ok, f"exit code {code}" + (f", missing {missing}:\n{log[-2500:]}" if not ok else "")
-
-
-def ran(code, log):
-    return code == 0, f"exit code {code}" + ("" if code == 0 else "\n" + log[-2500:])
 
 
 def matrix(n, scale):
@@ -182,7 +170,6 @@ def restart_checks(work):
 
 
 def main():
-    work = tempfile.mkdtemp(prefix="sixDoFAddedMass.")
     libs = 'libs ("libfoamFmiRigidBodyCoupling.so");\n'
     solver_cases = [
         ("valid", solver_dict(), None),
@@ -215,28 +202,16 @@ def main():
         ("patchTolerance", patch_displacement("coupling { tolerance 2; }"),
          ["tolerance = 2", "must be in (0, 1)"]),
     ]
-    results = []
-    try:
-        for name, text, expected in solver_cases:
-            code, log = run(make_case(work, name, text))
-            results.append((name, *(ran(code, log) if expected is None
-                                    else refused(code, log, expected))))
-        for name, text, expected in patch_cases:
-            # no time step: the condition is built, and moves only with a fluid
-            code, log = run(make_case(work, name, PATCH_MESH_DICT, text, end_time="0",
-                                      libs=libs))
-            results.append((name, *(ran(code, log) if expected is None
-                                    else refused(code, log, expected))))
-        results.extend(restart_checks(work))
-    finally:
-        if os.environ.get("KEEP_CASES") != "1":
-            shutil.rmtree(work, ignore_errors=True)
-    failures = 0
-    for name, ok, detail in results:
-        print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}", flush=True)
-        failures += 0 if ok else 1
-    print(f"{len(results) - failures} passed, {failures} failed")
-    return 1 if failures else 0
+
+    def checks(work):
+        # patch cases without a time step: the condition is built, and moves
+        # only with a fluid
+        return (run_cases(solver_cases, lambda name, text: make_case(work, name, text))
+                + run_cases(patch_cases, lambda name, text: make_case(
+                    work, name, PATCH_MESH_DICT, text, end_time="0", libs=libs))
+                + restart_checks(work))
+
+    return run_checks("sixDoFAddedMass.", checks)
 
 
 if __name__ == "__main__":

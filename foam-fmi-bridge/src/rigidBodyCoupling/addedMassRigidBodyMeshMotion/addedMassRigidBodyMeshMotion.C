@@ -11,7 +11,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "polyMesh.H"
 #include "bodyMorphing.H"
-#include "pointConstraints.H"
+#include "unregisteredIO.H"
 #include "uniformDimensionedFields.H"
 #include "forces.H"
 #include "OneConstant.H"
@@ -29,31 +29,6 @@ namespace Foam
         dictionary
     );
 }
-
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The state file of a time, uniform/rigidBodyMotionState, read if present
-Foam::IOobject stateIO(const Foam::polyMesh& mesh)
-{
-    return Foam::IOobject
-    (
-        "rigidBodyMotionState",
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        Foam::IOobject::READ_IF_PRESENT,
-        Foam::IOobject::NO_WRITE,
-        false
-    );
-}
-
-
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -74,15 +49,7 @@ Foam::addedMassRigidBodyMeshMotion::bodyMesh::bodyMesh
     do_(dict.get<scalar>("outerDistance")),
     weight_
     (
-        IOobject
-        (
-            name_ + ".motionScale",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
+        unregisteredIO(mesh, name_ + ".motionScale"),
         pointMesh::New(mesh),
         dimensionedScalar(dimless, Zero)
     )
@@ -95,28 +62,25 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
     const IOdictionary& dict
 )
 :
-    displacementMotionSolver(mesh, dict, typeName),
+    addedMassMotionSolver
+    (
+        mesh, dict, typeName, "rigidBodyMotionState", "rigid-body state"
+    ),
     model_
     (
         mesh.time(),
-        addedMassCoupling::checkedRestart
+        restartCoeffs
         (
-            mesh.time(),
-            coeffDict(),
-            fileName("uniform")/"rigidBodyMotionState",
             {"q", "qDot", "qDdot", "t", "deltaT"},
             "the rigid-body state of addedMassRigidBodyMotion"
         ),
-        stateIO(mesh).typeHeaderOk<IOdictionary>(true)
-      ? IOdictionary(stateIO(mesh))
-      : coeffDict()
+        initialState()
     ),
     test_(coeffDict().lookupOrDefault("test", false)),
     rhoInf_(1.0),
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
     ramp_(nullptr),
     curTimeIndex_(-1),
-    coupling_(typeName, refCast<const fvMesh>(mesh)),
     start_(model_.state())
 {
     readCoupling();
@@ -173,14 +137,7 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
         }
     }
 
-    if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
-    {
-        coupling_.readState
-        (
-            IOdictionary(stateIO(mesh)),
-            bodyMeshes_.size()
-        );
-    }
+    readCouplingState(bodyMeshes_.size());
 
     List<labelHashSet> bodyPatches(bodyMeshes_.size());
     forAll(bodyMeshes_, bi)
@@ -217,14 +174,7 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
 {
     const Time& t = mesh().time();
 
-    if (mesh().nPoints() != points0().size())
-    {
-        FatalErrorInFunction
-            << "The number of points in the mesh seems to have changed." << endl
-            << "In constant/polyMesh there are " << points0().size()
-            << " points; in the current mesh there are " << mesh().nPoints()
-            << " points." << exit(FatalError);
-    }
+    checkPoints();
 
     // Store the motion state at the beginning of the time-step
     if (curTimeIndex_ != this->db().time().timeIndex())
@@ -305,53 +255,22 @@ void Foam::addedMassRigidBodyMeshMotion::solve()
     }
 
     // Displacement has changed. Update boundary conditions
-    pointConstraints::New
-    (
-        pointDisplacement_.mesh()
-    ).constrainDisplacement(pointDisplacement_);
+    constrainDisplacement();
 }
 
 
-#if OPENFOAM >= 2006
-bool Foam::addedMassRigidBodyMeshMotion::writeObject
-(
-    IOstreamOption streamOpt,
-    const bool valid
-) const
-#else
-bool Foam::addedMassRigidBodyMeshMotion::writeObject
-(
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
-) const
-#endif
+void Foam::addedMassRigidBodyMeshMotion::readMotion()
 {
-    dictionary state;
+    model_.read(coeffDict());
+}
+
+
+void Foam::addedMassRigidBodyMeshMotion::writeMotionState
+(
+    dictionary& state
+) const
+{
     model_.state().write(state);
-    coupling_.writeStateFile
-    (
-        "rigidBodyMotionState",
-        state,
-        "rigid-body state"
-    );
-
-    return true;
-}
-
-
-bool Foam::addedMassRigidBodyMeshMotion::read()
-{
-    if (displacementMotionSolver::read())
-    {
-        model_.read(coeffDict());
-        readCoupling();
-
-        return true;
-    }
-
-    return false;
 }
 
 

@@ -12,7 +12,7 @@
 #include "polyMesh.H"
 #include "fvMesh.H"
 #include "bodyMorphing.H"
-#include "pointConstraints.H"
+#include "unregisteredIO.H"
 #include "uniformDimensionedFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -52,22 +52,6 @@ const Foam::wordList openFoamEntries
     "angularMomentum", "torque"
 });
 
-//- The state file of a time, uniform/sixDoFRigidBodyMotionState
-Foam::IOobject stateIO(const Foam::polyMesh& mesh)
-{
-    return Foam::IOobject
-    (
-        "sixDoFRigidBodyMotionState",
-        mesh.time().timeName(),
-        "uniform",
-        mesh,
-        Foam::IOobject::READ_IF_PRESENT,
-        Foam::IOobject::NO_WRITE,
-        false
-    );
-}
-
-
 //- The entries of the motion's state file
 const Foam::wordList stateEntries
 ({
@@ -101,20 +85,22 @@ addedMassSixDoFRigidBodyMotionSolver
     const IOdictionary& dict
 )
 :
-    displacementMotionSolver(mesh, dict, typeName),
+    addedMassMotionSolver
+    (
+        mesh,
+        dict,
+        typeName,
+        "sixDoFRigidBodyMotionState",
+        "six-DoF state"
+    ),
     motion_
     (
-        addedMassCoupling::checkedRestart
+        restartCoeffs
         (
-            mesh.time(),
-            coeffDict(),
-            fileName("uniform")/"sixDoFRigidBodyMotionState",
             stateEntries,
             "the six-DoF state of addedMassSixDoFRigidBodyMotion"
         ),
-        stateIO(mesh).typeHeaderOk<IOdictionary>(true)
-      ? IOdictionary(stateIO(mesh))
-      : coeffDict(),
+        initialState(),
         mesh.time()
     ),
     patches_(coeffDict().get<wordRes>("patches")),
@@ -126,22 +112,13 @@ addedMassSixDoFRigidBodyMotionSolver
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
     scale_
     (
-        IOobject
-        (
-            "motionScale",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
+        unregisteredIO(mesh, "motionScale"),
         pointMesh::New(mesh),
         dimensionedScalar(dimless, Zero)
     ),
     curTimeIndex_(-1),
     CofGvelocity_(coeffDict().lookupOrDefault<word>("CofGvelocity", "none")),
-    body_(motion_, typeName),
-    coupling_(typeName, refCast<const fvMesh>(mesh))
+    body_(motion_, typeName)
 {
     readCoupling();
 
@@ -150,10 +127,7 @@ addedMassSixDoFRigidBodyMotionSolver
         coeffDict().readEntry("rhoInf", rhoInf_);
     }
 
-    if (stateIO(mesh).typeHeaderOk<IOdictionary>(true))
-    {
-        coupling_.readState(IOdictionary(stateIO(mesh)), 1);
-    }
+    readCouplingState(1);
     coupling_.setPatches
     (
         List<labelHashSet>(1, patchSet_),
@@ -194,14 +168,7 @@ void Foam::addedMassSixDoFRigidBodyMotionSolver::solve()
 {
     const Time& t = mesh().time();
 
-    if (mesh().nPoints() != points0().size())
-    {
-        FatalErrorInFunction
-            << "The number of points in the mesh seems to have changed." << endl
-            << "In constant/polyMesh there are " << points0().size()
-            << " points; in the current mesh there are " << mesh().nPoints()
-            << " points." << exit(FatalError);
-    }
+    checkPoints();
 
     // Store the motion state at the beginning of the time-step
     bool firstIter = false;
@@ -263,53 +230,22 @@ void Foam::addedMassSixDoFRigidBodyMotionSolver::solve()
         motion_.transform(points0(), scale_) - points0();
 
     // Displacement has changed. Update boundary conditions
-    pointConstraints::New
-    (
-        pointDisplacement_.mesh()
-    ).constrainDisplacement(pointDisplacement_);
+    constrainDisplacement();
 }
 
 
-#if OPENFOAM >= 2006
-bool Foam::addedMassSixDoFRigidBodyMotionSolver::writeObject
+void Foam::addedMassSixDoFRigidBodyMotionSolver::writeMotionState
 (
-    IOstreamOption streamOpt,
-    const bool valid
+    dictionary& state
 ) const
-#else
-bool Foam::addedMassSixDoFRigidBodyMotionSolver::writeObject
-(
-    IOstream::streamFormat fmt,
-    IOstream::versionNumber ver,
-    IOstream::compressionType cmp,
-    const bool valid
-) const
-#endif
 {
-    dictionary state;
     motion_.state().write(state);
-    coupling_.writeStateFile
-    (
-        "sixDoFRigidBodyMotionState",
-        state,
-        "six-DoF state"
-    );
-
-    return true;
 }
 
 
-bool Foam::addedMassSixDoFRigidBodyMotionSolver::read()
+void Foam::addedMassSixDoFRigidBodyMotionSolver::readMotion()
 {
-    if (displacementMotionSolver::read())
-    {
-        motion_.read(coeffDict());
-        readCoupling();
-
-        return true;
-    }
-
-    return false;
+    motion_.read(coeffDict());
 }
 
 

@@ -9,6 +9,7 @@
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "spatialVector.H"
+#include "unregisteredIO.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -57,15 +58,7 @@ Foam::wordList Foam::rigidBodyAddedMass::patchTypes() const
 
 Foam::IOobject Foam::rigidBodyAddedMass::fieldIO(const word& name) const
 {
-    return IOobject
-    (
-        name,
-        mesh_.time().timeName(),
-        mesh_,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    );
+    return unregisteredIO(mesh_, name);
 }
 
 
