@@ -41,6 +41,7 @@ import sys
 import tempfile
 
 from foamfmi import cli
+from foamfmi.floatingobject import LOCK, run
 from foamfmi.dictionary import substitute
 
 DENSITY = 10
@@ -50,21 +51,12 @@ END_TIME = 0.2
 TOLERANCE = 1e-2
 MAX_ANGLE = 10.0
 BODIES = ("floatingObject1", "floatingObject2")
-LOCK = "/tmp/foamfmi-cfd.lock"
 TIMEOUT = 150  # s, a run; a blown-up run can crawl on with tiny steps
 
 
 def fail(message):
     print(f"FAIL [sixDoFLightCubes]: {message}")
     sys.exit(1)
-
-
-def run(case, *command):
-    """Run a command in case, its output in log.<name>; the exit code."""
-    log = os.path.join(case, "log." + os.path.basename(command[0]))
-    with open(log, "w") as out:
-        return subprocess.run(command, cwd=case, stdout=out,
-                              stderr=subprocess.STDOUT).returncode
 
 
 def mesh(base):
