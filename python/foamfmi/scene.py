@@ -114,6 +114,7 @@ class VtkLines:
             if near(t, time):
                 reader = vtkPolyDataReader()
                 reader.SetFileName(path)
+                reader.ReadAllScalarsOn()   # tension and section
                 reader.Update()
                 if reader.GetOutput().GetNumberOfPoints() < 2:
                     fail("%s: no line in it (legacy VTK polydata with at"

@@ -2,8 +2,9 @@
 VTK's OpenFOAM reader (its processor folders when not reconstructed; the
 holes of an overset mesh left out) and drawn: the water (an iso-surface
 shaded by height in 3D, filled on the mid plane in 2D), the tank's outline,
-the bodies, the mooring lines, the springs, dampers and hinges, the case
-name, time and legend. The camera and the picture: foamfmi.sceneview.
+the bodies, the mooring lines (a line of sections in a colour per section,
+its joints as balls), the springs, dampers and hinges, the case name, time
+and legend. The camera and the picture: foamfmi.sceneview.
 Runs under ParaView's pvbatch.
 """
 
@@ -19,6 +20,11 @@ WATER_TROUGH, WATER_CREST = (0.04, 0.22, 0.62), (0.42, 0.66, 0.98)
 WATER_OPACITY = 0.65
 BODY = (0.96, 0.47, 0.08)
 LINE = (0.12, 0.12, 0.12)
+# A line's sections from the anchor (B.p; the VTK field `section`, 0 at
+# B.p), repeated past the fourth: the first is LINE, so a uniform line keeps
+# its colour; the joints' balls
+SECTION = (LINE, (0.95, 0.7, 0.0), (0.0, 0.6, 0.6), (0.55, 0.35, 0.15))
+JOINT = (0.85, 0.1, 0.1)
 # Springs, dampers (cylinder, rod), hinges, other connectors, fixed anchors
 CONNECTOR = {"spring": (0.05, 0.6, 0.2), "damper": (0.5, 0.2, 0.8),
              "rod": (0.75, 0.65, 0.9), "hinge": (0.85, 0.05, 0.45),
@@ -26,6 +32,62 @@ CONNECTOR = {"spring": (0.05, 0.6, 0.2), "damper": (0.5, 0.2, 0.8),
 TANK_2D = (0.93, 0.93, 0.93)
 OUTLINE = (0.0, 0.0, 0.0)
 
+
+def section_colour(k):
+    return SECTION[k % len(SECTION)]
+
+
+def line_parts(line):
+    """A connector line's polydata (VTK/fmuConnectors/): the points of its
+    polyline in order, each point's section (the point field `section`; None
+    without it) and the joints (its vertices, from B.p on)."""
+    points = line.GetPoints()
+    ids = []
+    cells = line.GetLines()
+    if cells is not None and cells.GetNumberOfCells():
+        from vtkmodules.vtkCommonCore import vtkIdList
+        cell = vtkIdList()
+        cells.InitTraversal()
+        cells.GetNextCell(cell)
+        ids = [cell.GetId(i) for i in range(cell.GetNumberOfIds())]
+    field = line.GetPointData().GetArray("section")
+    sections = ([int(field.GetTuple1(i)) for i in ids]
+                if field is not None else None)
+    joints = []
+    verts = line.GetVerts()
+    if verts is not None:
+        data = verts.GetData()
+        values = [int(data.GetTuple1(i))
+                  for i in range(data.GetNumberOfTuples())]
+        while values:           # (count, id, ...) per vertex cell
+            count = values[0]
+            joints += [points.GetPoint(i) for i in values[1:1 + count]]
+            values = values[1 + count:]
+    return [points.GetPoint(i) for i in ids], sections, joints
+
+
+def section_pieces(points, sections, joints=()):
+    """[(section, points)]: the polyline cut where its points' sections
+    change. The segment across a change holds the joint(s) between them:
+    cut there when `joints` has them (joint k between sections k - 1 and k,
+    k from 1), else at equal parts of the segment (the joint lies somewhere
+    on it)."""
+    pieces = [(sections[0], [list(points[0])])]
+    for i in range(1, len(points)):
+        a, b = sections[i - 1], sections[i]
+        p, q = points[i - 1], points[i]
+        step = 1 if b > a else -1
+        for m, k in enumerate(range(a, b, step), start=1):
+            joint = max(k, k + step)        # the joint between k and k + step
+            if joint - 1 < len(joints):
+                cut = list(joints[joint - 1])
+            else:
+                f = m/(abs(b - a) + 1)
+                cut = [(1 - f)*u + f*v for u, v in zip(p, q)]
+            pieces[-1][1].append(cut)
+            pieces.append((k + step, [cut]))
+        pieces[-1][1].append(list(q))
+    return pieces
 
 
 def latest_time(folder):
@@ -224,28 +286,71 @@ class Scene(SceneView):
                 self.add(self.tube(points, radius, 20), CONNECTOR[colour],
                          offset=offset)
             if fixed:
-                ball = self.vtk.vtkSphereSource()
-                ball.SetCenter(Q)
-                ball.SetRadius(0.006*self.diagonal)
-                ball.SetThetaResolution(16)
-                ball.SetPhiResolution(12)
-                ball.Update()
-                self.add(ball.GetOutput(), CONNECTOR["anchor"], offset=offset)
+                self.add(self.ball(Q), CONNECTOR["anchor"], offset=offset)
 
-    def add_legend(self, connectors, font):
-        """The kinds of connectors drawn, each in its colour, below the
-        case name."""
-        x = font//2
+    def ball(self, centre):
+        """A ball at centre, of radius 0.006 of the tank's diagonal."""
+        ball = self.vtk.vtkSphereSource()
+        ball.SetCenter(centre)
+        ball.SetRadius(0.006*self.diagonal)
+        ball.SetThetaResolution(16)
+        ball.SetPhiResolution(12)
+        ball.Update()
+        return ball.GetOutput()
+
+    def add_lines(self, lines):
+        """The connector lines in LINE's colour; a line of sections in a
+        colour per section, a ball at each joint. Returns the sections and
+        the number of joints drawn."""
+        drawn, n = set(), 0
+        for line in lines:
+            points, sections, joints = line_parts(line)
+            if not sections or (len(set(sections)) == 1 and not joints):
+                self.draw_line(line, LINE)
+                continue
+            for k, piece in section_pieces(points, sections, joints):
+                self.draw_line(polyline(piece), section_colour(k))
+            for joint in joints:
+                self.add(self.ball(joint), JOINT,
+                         offset=0.0025 if self.two_d else 0.0)
+            drawn |= set(sections)
+            n += len(joints)
+        return drawn, n
+
+    def draw_line(self, data, colour):
+        """A polyline: 3 pixels wide in 2D, a tube in 3D."""
+        if self.two_d:
+            self.add(data, colour, width=3, offset=0.002)
+            return
+        tube = self.vtk.vtkTubeFilter()
+        tube.SetInputData(data)
+        tube.SetRadius(0.003*self.diagonal)
+        tube.SetNumberOfSides(10)
+        tube.CappingOn()
+        tube.Update()
+        self.add(tube.GetOutput(), colour)
+
+    def add_legend(self, connectors, font, sections=(), joints=0):
+        """The kinds of connectors drawn, each in its colour, then the lines'
+        sections (numbered from the anchor, as the FMUs' section<k>) and
+        joints, below the case name."""
+        items = []
         for kind in connectorscene.ORDER:
             n = sum(1 for c in connectors if c[0] == kind)
-            if not n:
-                continue
-            label = "%s%s" % (kind, "s" if n > 1 else "")
+            if n:
+                items.append((("%d " % n if n > 1 else "") + kind
+                              + ("s" if n > 1 else ""), CONNECTOR[kind]))
+        items += [("section %d" % (k + 1), section_colour(k))
+                  for k in sorted(sections)]
+        if joints:
+            items.append(("joint%s" % ("s" if joints > 1 else ""), JOINT))
+        x = font//2
+        for label, colour in items:
             text = self.vtk.vtkTextActor()
-            text.SetInput(("%d " % n if n > 1 else "") + label)
+            text.SetInput(label)
             prop = text.GetTextProperty()
             prop.SetFontSize(int(0.8*font))
-            prop.SetColor(CONNECTOR[kind])
+            prop.SetColor(colour)
             prop.BoldOn()
             text.SetDisplayPosition(x, self.size[1] - 2*font - font)
             self.renderer.AddActor2D(text)
@@ -277,8 +382,7 @@ class Scene(SceneView):
                 fill.Update()
                 self.add(fill.GetOutput(), BODY, offset=0.001)
                 self.add(loop, [0.6*c for c in BODY], width=2, offset=0.0015)
-            for line in lines:
-                self.add(line, LINE, width=3, offset=0.002)
+            sections, joints = self.add_lines(lines)
             self.add_connectors(connectors)
         else:
             contour = vtk.vtkContourFilter()
@@ -302,14 +406,7 @@ class Scene(SceneView):
             self.add(outline.GetOutput(), OUTLINE, width=2)
             for body in bodies:
                 self.add(body, BODY)
-            for line in lines:
-                tube = vtk.vtkTubeFilter()
-                tube.SetInputData(line)
-                tube.SetRadius(0.003*self.diagonal)
-                tube.SetNumberOfSides(10)
-                tube.CappingOn()
-                tube.Update()
-                self.add(tube.GetOutput(), LINE)
+            sections, joints = self.add_lines(lines)
             self.add_connectors(connectors)
         text = vtk.vtkTextActor()
         text.SetInput("%s    t = %g s" % (self.case_name, time))
@@ -318,7 +415,7 @@ class Scene(SceneView):
         text.GetTextProperty().SetColor(0.0, 0.0, 0.0)
         text.SetDisplayPosition(font//2, self.size[1] - font - font//2)
         self.renderer.AddActor2D(text)
-        self.add_legend(connectors, font)
+        self.add_legend(connectors, font, sections, joints)
 
     def elevation(self, surface):
         """The surface with its height as scalars, 0 to 1 from trough to

@@ -14,6 +14,13 @@ anchor) lie in the rope (index 1) and points 6 to 11 (arcs 60 to 0 m) in
 the chain (index 0); computed here from the lengths, not from the FMU.
 The uniform line's file has no `section` field (its VTK is what it was
 before sections), and every file keeps its `tension` point data.
+
+mooringLine.fmu reports its joint as outputs (joint.x/y/z[1],
+section.lowerTension[2]): its file has the joint as a 12th point, a vertex,
+where the row of the connector's .dat at the written time has it (the same
+doubles), with the rope's lower-end tension and the rope's index (1).
+catenary.fmu's joints are local variables, which the bridge does not read:
+its file has the 11 shape points only.
 """
 import math
 import os
@@ -110,11 +117,15 @@ MODEL = f"""
 """
 
 
-def read_vtk(path):
-    """Points and point data fields of a legacy ASCII VTK polydata file."""
+def read_vtk(path, coordinates=None):
+    """Points and point data fields of a legacy ASCII VTK polydata file;
+    the points' coordinates (text) into the list coordinates when given."""
     with open(path) as f:
         words = f.read().split()
     points = int(words[words.index("POINTS") + 1])
+    if coordinates is not None:
+        start = words.index("POINTS") + 3
+        coordinates += [words[start + 3 * i:start + 3 * i + 3] for i in range(points)]
     fields = {}
     i = 0
     while i < len(words):
@@ -128,6 +139,12 @@ def read_vtk(path):
     return points, fields
 
 
+def xyz_of(folder, name):
+    coordinates = []
+    read_vtk(os.path.join(folder, f"{name}_5.vtk"), coordinates)
+    return coordinates
+
+
 def main():
     case = Case("lineSections", MODEL, 0.1, 0.02)
     case.run()
@@ -136,9 +153,10 @@ def main():
     failures = checks = 0
     for name in ("sections", "dynamic", "uniform"):
         points, fields = read_vtk(os.path.join(folder, f"{name}_5.vtk"))
+        n = POINTS + (1 if name == "dynamic" else 0)
         checks += 1
-        failures += check(f"{name}: {POINTS} points with their tension",
-                          points == POINTS and len(fields.get("tension", [])) == POINTS,
+        failures += check(f"{name}: {n} points with their tension",
+                          points == n and len(fields.get("tension", [])) == n,
                           f"{points} points, fields {sorted(fields)}")
         section = fields.get("section")
         checks += 1
@@ -147,8 +165,22 @@ def main():
                               f"fields {sorted(fields)}")
         else:
             failures += check(f"{name}: each point's section",
-                              section == expected,
-                              f"{section}, expected {expected}")
+                              section == expected + [1] * (n - POINTS),
+                              f"{section}, expected {expected} and 1 at a joint")
+    # The joint of the dynamic line: the connector's outputs at the written
+    # time, the same doubles (the VTK file at the case's writePrecision 17,
+    # the .dat row in the shortest form that reads back: both exact)
+    row = case.connector("dynamic")
+    last = len(row["Time"]) - 1
+    joint = [float(v) for v in xyz_of(folder, "dynamic")[POINTS]]
+    outputs = [row[f"joint.{c}[1]"][last] for c in "xyz"]
+    tension = read_vtk(os.path.join(folder, "dynamic_5.vtk"))[1]["tension"][POINTS]
+    checks += 1
+    failures += check("dynamic: the joint at joint.x/y/z[1], its tension section.lowerTension[2]",
+                      row["Time"][last] == 0.1 and joint == outputs
+                      and tension == row["section.lowerTension[2]"][last],
+                      f"joint {joint}, outputs {outputs}; tension {tension}, "
+                      f"section.lowerTension[2] {row['section.lowerTension[2]'][last]}")
     if not failures:
         case.cleanup()
     return summary(checks, failures)

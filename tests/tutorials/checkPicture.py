@@ -420,18 +420,22 @@ def make_vtk(case):
         print("ok: %s: %d VTK files" % (name, len(files)))
 
 
-args = sys.argv[1:]
-if args[:1] == ["--"]:
-    args = args[1:]
-if args[0] == "make_vtk":
-    make_vtk(args[1])
-elif args[0] == "3d":
-    check_3d(*args[1:6], float(args[6]), int(args[7]), int(args[8]))
-elif args[0] == "add_connectors":
-    add_connectors(args[1])
-elif args[0] == "connectors":
-    check_connectors(args[1], args[2], args[3], float(args[4]))
-elif args[0] == "2d":
-    check_2d(args[1], args[2], args[3], float(args[4]))
-else:
-    fail("unknown check " + args[0])
+def main(args):
+    if args[:1] == ["--"]:
+        args = args[1:]
+    if args[0] == "make_vtk":
+        make_vtk(args[1])
+    elif args[0] == "3d":
+        check_3d(*args[1:6], float(args[6]), int(args[7]), int(args[8]))
+    elif args[0] == "add_connectors":
+        add_connectors(args[1])
+    elif args[0] == "connectors":
+        check_connectors(args[1], args[2], args[3], float(args[4]))
+    elif args[0] == "2d":
+        check_2d(args[1], args[2], args[3], float(args[4]))
+    else:
+        fail("unknown check " + args[0])
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

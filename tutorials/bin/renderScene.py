@@ -19,7 +19,9 @@ written time, as PNG, or at every written time as an animation.
             restraints) or, for a time it does not have, the line shapes
             (shape.x[i], shape.y[i], shape.z[i]) in
             postProcessing/fmuConnectors/<startTime>/<name>.dat at the row of
-            the rendered time
+            the rendered time; a line of sections (the VTK file's point data
+            `section`) in a colour per section from the anchor (dark grey,
+            gold, teal, brown), its joints (the file's vertices) as red balls
   connectors the fmuConnector restraints without a line shape, between
             their attachment points: a spring as a green coil (a zig-zag
             in 2D), a damper as a purple cylinder and a light rod, a hinge
