@@ -42,24 +42,6 @@ def row(name, density, r, end_time):
             f"| {per_step:>5.2f} | {cpu:>6} |")
 
 
-def compare(a, b):
-    """Largest difference of sway and pitch sine between two runs, at the
-    times of a (b linearly interpolated)."""
-    def at(r, key, t):
-        ts, vs = r["times"], r[key]
-        for i in range(1, len(ts)):
-            if ts[i] >= t:
-                w = (t - ts[i-1])/(ts[i] - ts[i-1])
-                return vs[i-1] + w*(vs[i] - vs[i-1])
-        return vs[-1]
-    dy = max(abs(y - at(b, "y", t)) for t, y in zip(a["times"], a["y"])
-             if y is not None)
-    dp = max(abs(p - at(b, "pitch", t)) for t, p in
-             zip(a["times"], a["pitch"]) if p is not None)
-    span = max(a["y"]) - min(a["y"])
-    return dy, dp, span
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("-end-time", type=float, default=1.5)
@@ -105,8 +87,8 @@ def main():
         relaxed = runs.get("hand") if "hand" in runs else runs.get("stock")
         for name in ("addedMass3", "addedMass"):
             if relaxed and relaxed["ended"] and runs[name]["ended"]:
-                comparisons.append((density, name) + compare(runs[name],
-                                                             relaxed))
+                comparisons.append((density, name) + foc.compare(runs[name],
+                                                                 relaxed))
     print()
     print("| density (kg/m^3) | run against the relaxed one"
           " | max sway difference (m) | max pitch-sine difference"

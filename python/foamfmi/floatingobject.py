@@ -164,3 +164,21 @@ def parse(log):
             "pitch": pitches, "residuals": residuals, "converged": converged,
             "newton": newton,
             "times": times}
+
+
+def compare(a, b):
+    """Largest difference of sway and pitch sine between two runs, at the
+    times of a (b linearly interpolated)."""
+    def at(r, key, t):
+        ts, vs = r["times"], r[key]
+        for i in range(1, len(ts)):
+            if ts[i] >= t:
+                w = (t - ts[i-1])/(ts[i] - ts[i-1])
+                return vs[i-1] + w*(vs[i] - vs[i-1])
+        return vs[-1]
+    dy = max(abs(y - at(b, "y", t)) for t, y in zip(a["times"], a["y"])
+             if y is not None)
+    dp = max(abs(p - at(b, "pitch", t)) for t, p in
+             zip(a["times"], a["pitch"]) if p is not None)
+    span = max(a["y"]) - min(a["y"])
+    return dy, dp, span
