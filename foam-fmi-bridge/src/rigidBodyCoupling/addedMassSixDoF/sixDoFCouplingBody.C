@@ -8,13 +8,34 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::vector Foam::sixDoFCouplingBody::omega
+Foam::vector Foam::sixDoFCouplingBody::rotationVector(const tensor& R)
+{
+    // sin(angle) times the axis, from the antisymmetric part
+    const vector s
+    (
+        0.5*(R.zy() - R.yz()),
+        0.5*(R.xz() - R.zx()),
+        0.5*(R.yx() - R.xy())
+    );
+    const scalar sinAngle = mag(s);
+    if (sinAngle < SMALL)
+    {
+        return s;
+    }
+    return atan2(sinAngle, 0.5*(tr(R) - 1))/sinAngle*s;
+}
+
+
+void Foam::sixDoFCouplingBody::meanVelocities
 (
-    const sixDoFRigidBodyMotionState& s
+    const sixDoFRigidBodyMotionState& s,
+    const scalar dt,
+    vector& omega,
+    vector& v
 ) const
 {
-    // As sixDoFRigidBodyMotion::omega, for any state
-    return s.Q() & (inv(motion_.momentOfInertia()) & s.pi());
+    omega = rotationVector(s.Q() & state0_.Q().T())/dt;
+    v = (s.centreOfRotation() - state0_.centreOfRotation())/dt;
 }
 
 
@@ -58,6 +79,8 @@ Foam::sixDoFCouplingBody::sixDoFCouplingBody
     solved_(false),
     alphaPrev_(Zero),
     aPrev_(Zero),
+    omegaMean0_(Zero),
+    vMean0_(Zero),
     momentAdd_(Zero),
     forceAdd_(Zero),
     originAdd_(Zero)
@@ -68,12 +91,22 @@ Foam::sixDoFCouplingBody::sixDoFCouplingBody
 
 void Foam::sixDoFCouplingBody::newTime()
 {
+    const sixDoFRigidBodyMotionState& s = motion_.state();
     if (solved_)
     {
         const scalar dt = motion_.time().deltaT0Value();
-        const sixDoFRigidBodyMotionState& s = motion_.state();
-        alphaPrev_ = (omega(s) - omega(state0_))/dt;
-        aPrev_ = (s.v() - state0_.v())/dt;
+        vector omegaMean, vMean;
+        meanVelocities(s, dt, omegaMean, vMean);
+        alphaPrev_ = (omegaMean - omegaMean0_)/dt;
+        aPrev_ = (vMean - vMean0_)/dt;
+        omegaMean0_ = omegaMean;
+        vMean0_ = vMean;
+    }
+    else
+    {
+        // No step before: the velocities of the state
+        omegaMean0_ = s.Q() & (inv(motion_.momentOfInertia()) & s.pi());
+        vMean0_ = s.v();
     }
 
     motion_.newTime();
@@ -221,8 +254,10 @@ Foam::scalarField Foam::sixDoFCouplingBody::accelerations
     if (solved_)
     {
         const scalar dt = motion_.time().deltaTValue();
-        alpha = (omega(s) - omega(state0_))/dt;
-        a = (s.v() - state0_.v())/dt;
+        vector omegaMean, vMean;
+        meanVelocities(s, dt, omegaMean, vMean);
+        alpha = (omegaMean - omegaMean0_)/dt;
+        a = (vMean - vMean0_)/dt;
     }
 
     // Linear acceleration at the origin, rigidly with the body
