@@ -9,6 +9,7 @@ solver log.
 
 import os
 import re
+import subprocess
 
 
 class PostProcessingError(ValueError):
@@ -195,3 +196,59 @@ def solver_log(path):
             if m:
                 newmark = tuple(int(g) for g in m.groups())
     return {"timeSteps": steps, "executionTime": execution, "implicitNewmark": newmark}
+
+
+def run_settings(case):
+    """The settings an Allrun wrote to CASE/log.runSettings ("meshFactor
+    0.5; endTime 12; ..."): {'meshFactor': '0.5', ...}."""
+    path = os.path.join(case, "log.runSettings")
+    if not os.path.isfile(path):
+        raise PostProcessingError("no %s (written by Allrun)" % path)
+    settings = {}
+    with open(path) as f:
+        for item in f.read().split(";"):
+            words = item.split()
+            if len(words) == 2:
+                settings[words[0]] = words[1]
+    return settings
+
+
+def mesh_cells(path):
+    """The cell count of a checkMesh log (None without one)."""
+    if os.path.isfile(path):
+        with open(path) as f:
+            for line in f:
+                if line.strip().startswith("cells:"):
+                    return int(line.split()[1])
+    return None
+
+
+def project_commit():
+    """The project's commit: FOAMFMI_COMMIT, else git describe of
+    FOAMFMI_DIR, else 'unknown'."""
+    if os.environ.get("FOAMFMI_COMMIT"):
+        return os.environ["FOAMFMI_COMMIT"]
+    top = os.environ.get("FOAMFMI_DIR", ".")
+    try:
+        out = subprocess.run(["git", "-C", top, "describe", "--always", "--dirty"],
+                             capture_output=True, text=True, check=True)
+        return out.stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def read_key_values(path):
+    """The "key value" lines of a file ('#' lines skipped): {key: value},
+    the value a float where it reads as one, else the text."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            key, value = line.split(None, 1)
+            value = value.strip()
+            try:
+                values[key] = float(value)
+            except ValueError:
+                values[key] = value
+    return values

@@ -29,7 +29,6 @@ load's share.
 
 import math
 import os
-import subprocess
 
 import numpy as np
 
@@ -61,51 +60,13 @@ class SectionWavesError(ValueError):
 
 # ---------------------------------------------------------------- a run --
 
-def _log_settings(case):
-    """log.runSettings (Allrun): {'meshFactor': '0.5', ...}."""
-    path = os.path.join(case, "log.runSettings")
-    if not os.path.isfile(path):
-        raise SectionWavesError("no %s (written by Allrun)" % path)
-    settings = {}
-    with open(path) as f:
-        for item in f.read().split(";"):
-            words = item.split()
-            if len(words) == 2:
-                settings[words[0]] = words[1]
-    return settings
-
-
-def _cells(case):
-    path = os.path.join(case, "log.checkMesh")
-    if os.path.isfile(path):
-        with open(path) as f:
-            for line in f:
-                if line.strip().startswith("cells:"):
-                    return int(line.split()[1])
-    return None
-
-
-def _commit():
-    """The project's commit: FOAMFMI_COMMIT, else git describe of
-    FOAMFMI_DIR, else 'unknown'."""
-    if os.environ.get("FOAMFMI_COMMIT"):
-        return os.environ["FOAMFMI_COMMIT"]
-    top = os.environ.get("FOAMFMI_DIR", ".")
-    try:
-        out = subprocess.run(["git", "-C", top, "describe", "--always", "--dirty"],
-                             capture_output=True, text=True, check=True)
-        return out.stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
 def read_case(case):
     """A finished (or stopped) run of the tutorial: (run, series) as
     write_run writes them."""
     settings_path = os.path.join(case, "constant", "runSettings")
     if not os.path.isfile(settings_path):
         raise SectionWavesError("no %s (written by Allrun)" % settings_path)
-    logged = _log_settings(case)
+    logged = postprocessing.run_settings(case)
     run = {"period": dictionary.read_scalar(settings_path, "wavePeriod"),
            "height": dictionary.read_scalar(settings_path, "waveHeight"),
            "rampTime": dictionary.read_scalar(settings_path, "rampTime"),
@@ -115,12 +76,12 @@ def read_case(case):
     run["guideFriction"] = float(logged.get("guideFriction", 0))
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
-    run["cells"] = _cells(case)
+    run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
     app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
     run["timeSteps"] = log["timeSteps"]
     run["executionTime"] = log["executionTime"]
-    run["commit"] = _commit()
+    run["commit"] = postprocessing.project_commit()
     run["openfoam"] = os.environ.get("WM_PROJECT_VERSION", "unknown")
     T = run["period"]
     run["sampleInterval"] = T / SAMPLES_PER_PERIOD
@@ -174,18 +135,8 @@ def write_run(folder, run, series):
 
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
-    run = {}
     path = os.path.join(folder, "run.dat")
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            key, value = line.split(None, 1)
-            value = value.strip()
-            try:
-                run[key] = float(value)
-            except ValueError:
-                run[key] = value
+    run = postprocessing.read_key_values(path)
     for key in ("period", "height", "rampTime", "xIn"):
         if key not in run:
             raise SectionWavesError("%s: no %s" % (path, key))
