@@ -226,6 +226,7 @@ def compare(series, curves, periods=WINDOW_PERIODS):
         for q in QUANTITIES:
             r["%s.%s.amplitude" % (name, q)] = abs(fits[q][2])
             r["%s.%s.drift" % (name, q)] = fits[q][1]
+            r["%s.%s.mean" % (name, q)] = fits[q][0]
         r["%s.surge.rao" % name] = abs(fits["surge"][2]) / a
         r["%s.heave.rao" % name] = abs(fits["heave"][2]) / a
         r["%s.pitch.rao" % name] = math.radians(abs(fits["pitch"][2])) / (k * a)
@@ -273,7 +274,9 @@ def write_comparison(path, r):
 def plot_overlay(plot_dir, name, run, r, experiment_dir):
     """plot_dir/name.png: the run (plot_dir/series.dat) and the measured
     curves on the run's clock (shifted by the heave's phase), the window
-    shaded: the elevation at x = 1 m, surge, heave, pitch."""
+    shaded: the elevation at x = 1 m, surge, heave, pitch. The measured
+    surge, from the box's position when the curves start, is offset to the
+    run's mean over the window."""
     stem = os.path.join(experiment_dir, experiment_name(run["height"]))
     own = os.path.join(plot_dir, "series.dat")
     col = {c: i + 1 for i, c in enumerate(SERIES_COLUMNS)}
@@ -290,13 +293,15 @@ def plot_overlay(plot_dir, name, run, r, experiment_dir):
              "set xrange [%g:%g]" % (max(0.0, s - PERIOD), s + 6 * PERIOD),
              plots.shade(r["windowStart"], r["windowEnd"])]
     for q, label, c in panels:
+        offset = r["cfd.surge.mean"] - r["experiment.surge.mean"] if q == "surge" else 0.0
         if q == "pitch":
             lines.append("set xlabel 't after the generator starts (s)'")
         lines += ['set ylabel "%s"' % label,
                   "plot '%s' u 1:%d w l lw 1.6 lc rgb '#1f5fbf' t 'CFD', "
-                  "'%s%s' u ($1*%.9g+%.9g):($2*%.9g) w lp pt 7 ps 0.5 lc rgb 'black' "
-                  "t 'experiment'" % (own, c, stem, QUANTITIES[q][0], PERIOD, s,
-                                      QUANTITIES[q][2])]
+                  "'%s%s' u ($1*%.9g+%.9g):($2*%.9g+%.9g) w lp pt 7 ps 0.5 lc rgb 'black' "
+                  "t 'experiment%s'" % (own, c, stem, QUANTITIES[q][0], PERIOD, s,
+                                        QUANTITIES[q][2], offset,
+                                        " + %.3g m" % offset if offset else "")]
     lines.append("unset multiplot")
     plots.gnuplot(os.path.join(plot_dir, name + ".gp"), lines)
 
