@@ -61,6 +61,10 @@ QUANTITIES = {
 }
 SERIES_COLUMNS = ("Time", "surge", "heave", "pitch") + tuple("eta.%g" % x for x in GAUGES)
 RUN_KEYS = ("height", "meshFactor", "endTime", "coupling", "nProcs")
+# The header lines of run.dat and series.dat
+RUN_TITLE = "freeBoxWaves run (python/foamfmi/freeboxwaves.py): key value"
+SERIES_TITLE = ("freeBoxWaves response every T/%d: surge, heave (m), pitch (deg), "
+                "elevation at the gauges (m)" % SAMPLES_PER_PERIOD)
 
 
 class FreeBoxError(ValueError):
@@ -141,32 +145,12 @@ def read_case(case):
 
 def write_run(folder, run, series):
     """folder/run.dat and folder/series.dat (module docstring)."""
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "run.dat"), "w") as f:
-        f.write("# freeBoxWaves run (python/foamfmi/freeboxwaves.py): key value\n")
-        for key in sorted(run):
-            v = run[key]
-            f.write("%s %s\n" % (key, "%.9g" % v if isinstance(v, float) else v))
-    with open(os.path.join(folder, "series.dat"), "w") as f:
-        f.write("# freeBoxWaves response every T/%d: surge, heave (m), pitch (deg), "
-                "elevation at the gauges (m)\n# %s\n"
-                % (SAMPLES_PER_PERIOD, " ".join(SERIES_COLUMNS)))
-        for j in range(len(series["Time"])):
-            f.write(" ".join("%.7g" % series[c][j] for c in SERIES_COLUMNS) + "\n")
+    postprocessing.write_kept_run(folder, run, series, SERIES_COLUMNS, RUN_TITLE, SERIES_TITLE)
 
 
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
-    run = postprocessing.read_key_values(os.path.join(folder, "run.dat"))
-    missing = [k for k in RUN_KEYS if k not in run]
-    if missing:
-        raise FreeBoxError("%s/run.dat: no %s" % (folder, ", ".join(missing)))
-    names, rows = postprocessing.read_named_table(os.path.join(folder, "series.dat"))
-    missing = [c for c in SERIES_COLUMNS if c not in names]
-    if missing:
-        raise FreeBoxError("%s/series.dat: no column %s" % (folder, ", ".join(missing)))
-    table = np.array(rows)
-    return run, {c: table[:, names.index(c)] for c in SERIES_COLUMNS}
+    return postprocessing.read_kept_run(folder, SERIES_COLUMNS, RUN_KEYS)
 
 
 # ------------------------------------------------------------ analysis --

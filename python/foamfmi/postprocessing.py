@@ -252,3 +252,40 @@ def read_key_values(path):
             except ValueError:
                 values[key] = value
     return values
+
+
+def write_kept_run(folder, run, series, columns, run_title, series_title):
+    """What a case's analysis keeps of a run: folder/run.dat, one "key
+    value" a line under '# run_title' (floats with 9 digits), and
+    folder/series.dat, the series' columns (7 digits) under
+    '# series_title' and '# <columns>'."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "run.dat"), "w") as f:
+        f.write("# %s\n" % run_title)
+        for key in sorted(run):
+            value = run[key]
+            f.write("%s %s\n" % (key, "%.9g" % value if isinstance(value, float) else value))
+    with open(os.path.join(folder, "series.dat"), "w") as f:
+        f.write("# %s\n" % series_title)
+        f.write("# " + " ".join(columns) + "\n")
+        for j in range(len(series[columns[0]])):
+            f.write(" ".join("%.7g" % series[c][j] for c in columns) + "\n")
+
+
+def read_kept_run(folder, columns, keys):
+    """(run, series) of a folder written by write_kept_run: run the
+    {key: value} of run.dat, which must have every one of keys, series
+    {column: array} of series.dat, which must have every one of columns."""
+    import numpy as np  # only here: the rest of the module reads tables without it
+
+    path = os.path.join(folder, "run.dat")
+    run = read_key_values(path)
+    missing = [k for k in keys if k not in run]
+    if missing:
+        raise PostProcessingError("%s: no %s" % (path, ", ".join(missing)))
+    names, rows = read_named_table(os.path.join(folder, "series.dat"))
+    missing = [c for c in columns if c not in names]
+    if missing:
+        raise PostProcessingError("%s/series.dat: no column %s" % (folder, ", ".join(missing)))
+    table = np.array(rows)
+    return run, {c: table[:, names.index(c)] for c in columns}

@@ -118,34 +118,17 @@ SERIES_COLUMNS = (["Time", "sway", "heave", "roll"] + list(SPRINGS)
 
 def write_run(folder, run, series):
     """folder/run.dat and folder/series.dat (module docstring)."""
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "run.dat"), "w") as f:
-        f.write("# mooredSectionWaves run (python/foamfmi/sectionwaves.py): key value\n")
-        for key in sorted(run):
-            value = run[key]
-            f.write("%s %s\n" % (key, "%.9g" % value if isinstance(value, float) else value))
-    with open(os.path.join(folder, "series.dat"), "w") as f:
-        f.write("# mooredSectionWaves response every T/%d: sway, heave (m), roll (deg), "
-                "spring tensions (N), elevation at the gauges (m; x in run.dat)\n"
-                % SAMPLES_PER_PERIOD)
-        f.write("# " + " ".join(SERIES_COLUMNS) + "\n")
-        for j in range(len(series["Time"])):
-            f.write(" ".join("%.7g" % series[c][j] for c in SERIES_COLUMNS) + "\n")
+    postprocessing.write_kept_run(
+        folder, run, series, SERIES_COLUMNS,
+        "mooredSectionWaves run (python/foamfmi/sectionwaves.py): key value",
+        "mooredSectionWaves response every T/%d: sway, heave (m), roll (deg), "
+        "spring tensions (N), elevation at the gauges (m; x in run.dat)" % SAMPLES_PER_PERIOD)
 
 
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
-    path = os.path.join(folder, "run.dat")
-    run = postprocessing.read_key_values(path)
-    for key in ("period", "height", "rampTime", "xIn"):
-        if key not in run:
-            raise SectionWavesError("%s: no %s" % (path, key))
-    names, rows = postprocessing.read_named_table(os.path.join(folder, "series.dat"))
-    missing = [c for c in SERIES_COLUMNS if c not in names]
-    if missing:
-        raise SectionWavesError("%s/series.dat: no column %s" % (folder, ", ".join(missing)))
-    table = np.array(rows)
-    return run, {c: table[:, names.index(c)] for c in SERIES_COLUMNS}
+    return postprocessing.read_kept_run(folder, SERIES_COLUMNS,
+                                        ("period", "height", "rampTime", "xIn"))
 
 
 # ------------------------------------------------------- the experiment --

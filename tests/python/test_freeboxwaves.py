@@ -13,7 +13,7 @@ import unittest
 import numpy as np
 
 from foamfmi import freeboxwaves as fb
-from foamfmi import harmonics
+from foamfmi import harmonics, postprocessing
 
 EXPERIMENT = os.path.join(os.environ.get("FOAMFMI_DIR", "."), "tutorials", "freeBoxWaves",
                           "experiment", "Ren2015data")
@@ -158,7 +158,7 @@ class RunFilesTest(unittest.TestCase):
                 f.write("height 0.04\nmeshFactor 1\nendTime 9\ncoupling stock\nnProcs 1\n")
             with open(os.path.join(d, "series.dat"), "w") as f:
                 f.write("# Time surge heave\n0 0 0\n")
-            with self.assertRaisesRegex(fb.FreeBoxError, "no column pitch"):
+            with self.assertRaisesRegex(postprocessing.PostProcessingError, "no column pitch"):
                 fb.read_run(d)
 
 
