@@ -304,6 +304,9 @@ def mesh_study(rows):
     out = {}
     for q in QUANTITIES:
         phi = [rr[1]["cfd.%s.amplitude" % q] for rr in rows]
+        if max(phi) == min(phi):
+            out[q] = (0.0, "the same on all three", phi, factors)
+            continue
         u, _, how = uncertainty.numerical_uncertainty(phi, [1 / f for f in factors])
         out[q] = (u, how, phi, factors)
     return out

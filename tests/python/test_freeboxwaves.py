@@ -7,6 +7,9 @@ the experiment's period and wave amplitude; a run written and read back."""
 import cmath
 import math
 import os
+import shutil
+import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -160,6 +163,53 @@ class RunFilesTest(unittest.TestCase):
                 f.write("# Time surge heave\n0 0 0\n")
             with self.assertRaisesRegex(postprocessing.PostProcessingError, "no column pitch"):
                 fb.read_run(d)
+
+
+class KeptRunsTest(unittest.TestCase):
+    def test_mesh_study(self):
+        # Heave amplitudes converging as h^2 on F = 2, 1.414, 1 (h = 1/F):
+        # the GCI with p = 2 (Celik et al.: 1.25 |phi1 - phi2|/(r^2 - 1))
+        rows = []
+        for f in (1.0, 2.0, 1.414):
+            a = 0.026 + 0.004 / f ** 2
+            rows.append(({"meshFactor": f}, {"cfd.%s.amplitude" % q: a for q in fb.QUANTITIES}))
+        u, how, phi, factors = fb.mesh_study(rows)["heave"]
+        self.assertEqual(how, "GCI")
+        self.assertEqual(factors, [2.0, 1.414, 1.0])
+        r = 2.0 / 1.414
+        self.assertAlmostEqual(u, 1.25 * abs(phi[0] - phi[1]) / (r ** 2 - 1), delta=1e-9)
+        self.assertEqual(fb.mesh_study(rows[:2]), {})
+
+    def test_report(self):
+        # boxResponse -report on three kept synthetic runs (the script and
+        # the committed curves copied beside them): every run compared,
+        # the heave's 10 % error in each table, and the mesh study
+        top = os.environ.get("FOAMFMI_DIR", ".")
+        with tempfile.TemporaryDirectory() as d:
+            shutil.copy(os.path.join(top, "tutorials", "freeBoxWaves", "boxResponse"), d)
+            shutil.copytree(EXPERIMENT, os.path.join(d, "experiment", "Ren2015data"))
+            for f in (1.0, 1.414, 2.0):
+                series, _ = synthetic(5.3, 1.1)
+                for q in ("surge", "heave", "pitch"):
+                    series[q] = series[q] * (1 + 0.01 / f)
+                run = {"height": 0.04, "meshFactor": f, "endTime": 11.0,
+                       "coupling": "addedMass", "nProcs": 1.0, "commit": "test"}
+                fb.write_run(os.path.join(d, "results", "F%g" % f), run, series)
+            out = subprocess.run([sys.executable, os.path.join(d, "boxResponse"), "-report",
+                                  "-no-plot"], capture_output=True, text=True)
+            self.assertEqual(out.returncode, 0, out.stderr)
+            with open(os.path.join(d, "results", "report.md")) as f:
+                report = f.read()
+            self.assertTrue(os.path.isfile(os.path.join(d, "results", "F2", "boxResponse.dat")))
+        self.assertEqual(report.count("| heave amplitude (m) |"), 3)
+        self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling", report)
+        self.assertIn("| heave (m) | 2 / 1.414 / 1 |", report)
+        # The wave, the same on the three (to series.dat's 7 digits): its
+        # U_num below 1e-6 of it
+        wave = [line for line in report.splitlines() if line.startswith("| wave (m) | 2 /")]
+        self.assertEqual(len(wave), 1)
+        self.assertIn("| 0.02 / 0.02 / 0.02 |", wave[0])
+        self.assertLess(float(wave[0].split("|")[4].split()[0]), 2e-8)
 
 
 if __name__ == "__main__":
