@@ -9,6 +9,7 @@ solver log.
 
 import os
 import re
+import subprocess
 
 
 class PostProcessingError(ValueError):
@@ -195,3 +196,96 @@ def solver_log(path):
             if m:
                 newmark = tuple(int(g) for g in m.groups())
     return {"timeSteps": steps, "executionTime": execution, "implicitNewmark": newmark}
+
+
+def run_settings(case):
+    """The settings an Allrun wrote to CASE/log.runSettings ("meshFactor
+    0.5; endTime 12; ..."): {'meshFactor': '0.5', ...}."""
+    path = os.path.join(case, "log.runSettings")
+    if not os.path.isfile(path):
+        raise PostProcessingError("no %s (written by Allrun)" % path)
+    settings = {}
+    with open(path) as f:
+        for item in f.read().split(";"):
+            words = item.split()
+            if len(words) == 2:
+                settings[words[0]] = words[1]
+    return settings
+
+
+def mesh_cells(path):
+    """The cell count of a checkMesh log (None without one)."""
+    if os.path.isfile(path):
+        with open(path) as f:
+            for line in f:
+                if line.strip().startswith("cells:"):
+                    return int(line.split()[1])
+    return None
+
+
+def project_commit():
+    """The project's commit: FOAMFMI_COMMIT, else git describe of
+    FOAMFMI_DIR, else 'unknown'."""
+    if os.environ.get("FOAMFMI_COMMIT"):
+        return os.environ["FOAMFMI_COMMIT"]
+    top = os.environ.get("FOAMFMI_DIR", ".")
+    try:
+        out = subprocess.run(["git", "-C", top, "describe", "--always", "--dirty"],
+                             capture_output=True, text=True, check=True)
+        return out.stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def read_key_values(path):
+    """The "key value" lines of a file ('#' lines skipped): {key: value},
+    the value a float where it reads as one, else the text."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            key, value = line.split(None, 1)
+            value = value.strip()
+            try:
+                values[key] = float(value)
+            except ValueError:
+                values[key] = value
+    return values
+
+
+def write_kept_run(folder, run, series, columns, run_title, series_title):
+    """What a case's analysis keeps of a run: folder/run.dat, one "key
+    value" a line under '# run_title' (floats with 9 digits), and
+    folder/series.dat, the series' columns (7 digits) under
+    '# series_title' and '# <columns>'."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "run.dat"), "w") as f:
+        f.write("# %s\n" % run_title)
+        for key in sorted(run):
+            value = run[key]
+            f.write("%s %s\n" % (key, "%.9g" % value if isinstance(value, float) else value))
+    with open(os.path.join(folder, "series.dat"), "w") as f:
+        f.write("# %s\n" % series_title)
+        f.write("# " + " ".join(columns) + "\n")
+        for j in range(len(series[columns[0]])):
+            f.write(" ".join("%.7g" % series[c][j] for c in columns) + "\n")
+
+
+def read_kept_run(folder, columns, keys):
+    """(run, series) of a folder written by write_kept_run: run the
+    {key: value} of run.dat, which must have every one of keys, series
+    {column: array} of series.dat, which must have every one of columns."""
+    import numpy as np  # only here: the rest of the module reads tables without it
+
+    path = os.path.join(folder, "run.dat")
+    run = read_key_values(path)
+    missing = [k for k in keys if k not in run]
+    if missing:
+        raise PostProcessingError("%s: no %s" % (path, ", ".join(missing)))
+    names, rows = read_named_table(os.path.join(folder, "series.dat"))
+    missing = [c for c in columns if c not in names]
+    if missing:
+        raise PostProcessingError("%s/series.dat: no column %s" % (folder, ", ".join(missing)))
+    table = np.array(rows)
+    return run, {c: table[:, names.index(c)] for c in columns}

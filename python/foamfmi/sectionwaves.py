@@ -29,7 +29,6 @@ load's share.
 
 import math
 import os
-import subprocess
 
 import numpy as np
 
@@ -61,51 +60,13 @@ class SectionWavesError(ValueError):
 
 # ---------------------------------------------------------------- a run --
 
-def _log_settings(case):
-    """log.runSettings (Allrun): {'meshFactor': '0.5', ...}."""
-    path = os.path.join(case, "log.runSettings")
-    if not os.path.isfile(path):
-        raise SectionWavesError("no %s (written by Allrun)" % path)
-    settings = {}
-    with open(path) as f:
-        for item in f.read().split(";"):
-            words = item.split()
-            if len(words) == 2:
-                settings[words[0]] = words[1]
-    return settings
-
-
-def _cells(case):
-    path = os.path.join(case, "log.checkMesh")
-    if os.path.isfile(path):
-        with open(path) as f:
-            for line in f:
-                if line.strip().startswith("cells:"):
-                    return int(line.split()[1])
-    return None
-
-
-def _commit():
-    """The project's commit: FOAMFMI_COMMIT, else git describe of
-    FOAMFMI_DIR, else 'unknown'."""
-    if os.environ.get("FOAMFMI_COMMIT"):
-        return os.environ["FOAMFMI_COMMIT"]
-    top = os.environ.get("FOAMFMI_DIR", ".")
-    try:
-        out = subprocess.run(["git", "-C", top, "describe", "--always", "--dirty"],
-                             capture_output=True, text=True, check=True)
-        return out.stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
 def read_case(case):
     """A finished (or stopped) run of the tutorial: (run, series) as
     write_run writes them."""
     settings_path = os.path.join(case, "constant", "runSettings")
     if not os.path.isfile(settings_path):
         raise SectionWavesError("no %s (written by Allrun)" % settings_path)
-    logged = _log_settings(case)
+    logged = postprocessing.run_settings(case)
     run = {"period": dictionary.read_scalar(settings_path, "wavePeriod"),
            "height": dictionary.read_scalar(settings_path, "waveHeight"),
            "rampTime": dictionary.read_scalar(settings_path, "rampTime"),
@@ -115,12 +76,12 @@ def read_case(case):
     run["guideFriction"] = float(logged.get("guideFriction", 0))
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
-    run["cells"] = _cells(case)
+    run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
     app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
     run["timeSteps"] = log["timeSteps"]
     run["executionTime"] = log["executionTime"]
-    run["commit"] = _commit()
+    run["commit"] = postprocessing.project_commit()
     run["openfoam"] = os.environ.get("WM_PROJECT_VERSION", "unknown")
     T = run["period"]
     run["sampleInterval"] = T / SAMPLES_PER_PERIOD
@@ -157,44 +118,17 @@ SERIES_COLUMNS = (["Time", "sway", "heave", "roll"] + list(SPRINGS)
 
 def write_run(folder, run, series):
     """folder/run.dat and folder/series.dat (module docstring)."""
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "run.dat"), "w") as f:
-        f.write("# mooredSectionWaves run (python/foamfmi/sectionwaves.py): key value\n")
-        for key in sorted(run):
-            value = run[key]
-            f.write("%s %s\n" % (key, "%.9g" % value if isinstance(value, float) else value))
-    with open(os.path.join(folder, "series.dat"), "w") as f:
-        f.write("# mooredSectionWaves response every T/%d: sway, heave (m), roll (deg), "
-                "spring tensions (N), elevation at the gauges (m; x in run.dat)\n"
-                % SAMPLES_PER_PERIOD)
-        f.write("# " + " ".join(SERIES_COLUMNS) + "\n")
-        for j in range(len(series["Time"])):
-            f.write(" ".join("%.7g" % series[c][j] for c in SERIES_COLUMNS) + "\n")
+    postprocessing.write_kept_run(
+        folder, run, series, SERIES_COLUMNS,
+        "mooredSectionWaves run (python/foamfmi/sectionwaves.py): key value",
+        "mooredSectionWaves response every T/%d: sway, heave (m), roll (deg), "
+        "spring tensions (N), elevation at the gauges (m; x in run.dat)" % SAMPLES_PER_PERIOD)
 
 
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
-    run = {}
-    path = os.path.join(folder, "run.dat")
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            key, value = line.split(None, 1)
-            value = value.strip()
-            try:
-                run[key] = float(value)
-            except ValueError:
-                run[key] = value
-    for key in ("period", "height", "rampTime", "xIn"):
-        if key not in run:
-            raise SectionWavesError("%s: no %s" % (path, key))
-    names, rows = postprocessing.read_named_table(os.path.join(folder, "series.dat"))
-    missing = [c for c in SERIES_COLUMNS if c not in names]
-    if missing:
-        raise SectionWavesError("%s/series.dat: no column %s" % (folder, ", ".join(missing)))
-    table = np.array(rows)
-    return run, {c: table[:, names.index(c)] for c in SERIES_COLUMNS}
+    return postprocessing.read_kept_run(folder, SERIES_COLUMNS,
+                                        ("period", "height", "rampTime", "xIn"))
 
 
 # ------------------------------------------------------- the experiment --

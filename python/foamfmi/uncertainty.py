@@ -61,6 +61,9 @@ def grid_convergence(phi, h):
         p = p_next
     else:
         raise ConvergenceError("apparent order not converged for %g, %g, %g" % (phi1, phi2, phi3))
+    if r21 ** p == 1:
+        raise ConvergenceError("solutions %g, %g, %g: apparent order 0, no extrapolation"
+                               % (phi1, phi2, phi3))
     extrapolated = (r21 ** p * phi1 - phi2) / (r21 ** p - 1)
     e_a = abs((phi1 - phi2) / phi1)
     e_ext = abs((extrapolated - phi1) / extrapolated)

@@ -36,6 +36,10 @@ class GridConvergenceTest(unittest.TestCase):
             uncertainty.grid_convergence((1, 2, 3), (0.2, 0.1, 0.3))
         with self.assertRaises(uncertainty.ConvergenceError):
             uncertainty.grid_convergence((1, 1, 3), (0.1, 0.2, 0.3))
+        # Differences equal and opposite: an apparent order of 0, from
+        # which nothing extrapolates (was a division by zero)
+        with self.assertRaisesRegex(uncertainty.ConvergenceError, "apparent order 0"):
+            uncertainty.grid_convergence((1.0, 1.1, 1.0), (1, 2 ** 0.5, 2))
 
     def test_numerical_uncertainty(self):
         h = [n ** -0.5 for n in (18000, 8000, 4500)]
