@@ -20,7 +20,8 @@ test_added_mass_entries (2 x 2 x 2 cells, the bottom the body's patch):
 addedMassSixDoFRigidBodyDisplacement (the point-patch condition of
 0/pointDisplacement, mesh moved by displacementLaplacian) is built by
 moveDynamicMesh with no time step (it needs the fluid's loads to move): its
-entries are accepted and the same bad entries stop it.
+entries are accepted, a written (nonuniform) value is read as a restart
+reads it, and the same bad entries stop it.
 """
 import os
 import re
@@ -201,6 +202,12 @@ def main():
          ["accelerationRelaxation 0.7 with the added-mass coupling"]),
         ("patchTolerance", patch_displacement("coupling { tolerance 2; }"),
          ["tolerance = 2", "must be in (0, 1)"]),
+        # a restart: the value as a written time holds it, one displacement
+        # per point of the patch (3 x 3), read once
+        ("patchWrittenValue", patch_displacement().replace(
+            "value uniform (0 0 0);",
+            "value nonuniform List<vector> 9(" + "".join(
+                f"(0 0 {0.001 * (i + 1)})" for i in range(9)) + ");", 1), None),
     ]
 
     def checks(work):

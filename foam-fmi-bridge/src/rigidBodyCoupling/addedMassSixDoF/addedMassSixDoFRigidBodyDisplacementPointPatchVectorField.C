@@ -127,13 +127,11 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
 
     coupling_ = newCoupling(dict);
 
-    // The displacement of the motion's state; OpenFOAM's condition solves
-    // the motion for it, which needs the fluid loads
-    if (dict.found("value"))
-    {
-        Field<vector>::operator=(vectorField("value", dict, p.size()));
-    }
-    else
+    // Without a value (fixedValuePointPatchField read it when given: a
+    // second read of a written, nonuniform value fails), the displacement
+    // of the motion's state; OpenFOAM's condition solves the motion for it,
+    // which needs the fluid loads
+    if (!dict.found("value"))
     {
         Field<vector>::operator=
         (
