@@ -94,6 +94,9 @@ struct Result {
     //- Force evaluations (the integrator's and the loads') and
     //  integrator steps per coupling step
     double forcesPerStep = 0.0, stepsPerStep = 0.0;
+    //- Newton matrices formed per coupling step (trapezoidal rule; a step
+    //  reuses the one before while it serves)
+    double matricesPerStep = 0.0;
 };
 
 //- First harmonic of the fairlead tension over the third period
@@ -136,6 +139,7 @@ Result run(const Case& c, int N, double h, double tolerance = 0.0)
     // + the loads' evaluation after each step
     r.forcesPerStep = double(st.rhsEvaluations) / (3 * perPeriod) + 1.0;
     r.stepsPerStep = double(st.steps) / (3 * perPeriod);
+    r.matricesPerStep = double(st.jacobianEvaluations) / (3 * perPeriod);
     return r;
 }
 
@@ -303,9 +307,9 @@ int main(int argc, char** argv)
         std::printf(
             "%s N = %s h = %s: amplitude %.9g N, wall %.4g s (CPU %.4g s) "
             "per simulated s, per coupling step %.3g steps, %.3g force "
-            "evaluations\n",
+            "evaluations, %.3g Newton matrices\n",
             c.line.name, argv[2], argv[3], r.amplitude, r.wallPerSecond,
-            r.cpuPerSecond, r.stepsPerStep, r.forcesPerStep);
+            r.cpuPerSecond, r.stepsPerStep, r.forcesPerStep, r.matricesPerStep);
         return 0;
     }
     if (argc == 2 && std::strcmp(argv[1], "precision") == 0) {

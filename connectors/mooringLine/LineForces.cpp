@@ -148,6 +148,15 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         wetHeight = manyWetHeights.data();
     }
     double pointEnergy = 0.0;
+    // the nodes' unit tangents first: a short loop whose square roots and
+    // divisions overlap from node to node
+    for (int i = 0; i <= N; ++i) {
+        Vector3 t = i == 0 ? f.q[0]
+            : i == N       ? f.q[N - 1]
+                           : Vector3(r[i + 1] - r[i - 1]);
+        const double tn = t.norm();
+        f.tangent[i] = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
+    }
     for (int i = 0; i <= N; ++i) {
         const LineLayout::Node& node = layout.nodes[std::size_t(i)];
         const double phi
@@ -220,12 +229,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 }
             }
         }
-        Vector3 t = i == 0 ? f.q[0]
-            : i == N       ? f.q[N - 1]
-                           : Vector3(r[i + 1] - r[i - 1]);
-        const double tn = t.norm();
-        t = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
-        f.tangent[i] = t;
+        const Vector3 t = f.tangent[i];
         Vector3 u = -v[i]; // water velocity relative to the node
         if (water) {
             if (water->current) {

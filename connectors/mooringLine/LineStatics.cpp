@@ -36,6 +36,15 @@ double surfaceStiffness(const MooringLineParameters& p,
 
 } // namespace
 
+double seabedTerms(const MooringLineParameters& p, const LineLayout::Node& node,
+                   double z, double zb, double h)
+{
+    const double depth = zb - z;
+    return node.contact(0.25 * h * h * p.seabedStiffness)
+        + node.contact(0.5 * h * p.seabedDamping
+                       * std::min(depth / node.restDepth, 1.0));
+}
+
 std::vector<Vector3>
 BlockTridiagonal::solve(const std::vector<Vector3>& b) const
 {
@@ -149,7 +158,12 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
     J.G.resize(n);
     J.a.assign(n, 0.0);
     J.b.assign(n, 0.0);
-    J.q.resize(n);
+    J.q.assign(n, Vector3::Zero());
+    J.h = h;
+    J.seabed.assign(n, 0.0);
+    J.mass.resize(n);
+    J.segmentQ.assign(std::size_t(N), Vector3::Zero());
+    J.alpha.assign(std::size_t(N), 0.0);
     // Segment j: h^2/4 times staticStiffness's k_j plus h/2 BA/l q q',
     // alpha q q' + beta I
     // section by section, its constants in locals
@@ -180,6 +194,8 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
             const double alpha
                 = stiffness * (axial - geometric) + damping * c.BA * c.inverseL;
             const double beta = stiffness * geometric;
+            J.segmentQ[std::size_t(j)] = q;
+            J.alpha[std::size_t(j)] = alpha;
             TrapezoidMatrix::Symmetric k;
             k.addOuter(alpha, q);
             k.addDiagonal(beta);
@@ -215,12 +231,11 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
         if (p.freeSurface) {
             b.zz += stiffness * surfaceStiffness(p, layout, i, r[k][2]);
         }
+        J.mass[k - 1] = mn;
         if (p.seabedContact && r[k][2] <= zb) {
             const LineLayout::Node& node = layout.nodes[k];
-            const double depth = zb - r[k][2];
-            b.zz += node.contact(stiffness * p.seabedStiffness)
-                + node.contact(damping * p.seabedDamping
-                               * std::min(depth / node.restDepth, 1.0));
+            J.seabed[k - 1] = seabedTerms(p, node, r[k][2], zb, h);
+            b.zz += J.seabed[k - 1];
             // friction: c v below the regularisation speed, of constant
             // magnitude above it (damping only across the sliding
             // direction e: c (I - e e') in the horizontal plane)
@@ -254,6 +269,73 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
         }
         J.pivotInverse[i] = d.inverse();
     }
+    if (n > 0) {
+        J.G[n - 1].setZero(); // no block beyond the last free node
+    }
+}
+
+void TrapezoidMatrix::save(const TrapezoidMatrix* J, int N,
+                           std::vector<double>& out)
+{
+    const std::size_t start = out.size();
+    out.resize(start + savedSize(N), 0.0);
+    if (!J) {
+        return;
+    }
+    double* data = out.data() + start;
+    *data++ = J->h;
+    for (std::size_t i = 0; i + 1 < std::size_t(N); ++i) {
+        for (int row = 0; row < 3; ++row) {
+            for (int column = 0; column < 3; ++column) {
+                data[3 * row + column] = J->pivotInverse[i](row, column);
+                data[9 + 3 * row + column] = J->G[i](row, column);
+            }
+        }
+        data[18] = J->seabed[i];
+        data[19] = J->mass[i];
+        data += 20;
+    }
+    for (std::size_t j = 0; j < std::size_t(N); ++j) {
+        for (int k = 0; k < 3; ++k) {
+            data[k] = J->segmentQ[j][k];
+        }
+        data[3] = J->alpha[j];
+        data += 4;
+    }
+}
+
+std::shared_ptr<const TrapezoidMatrix> TrapezoidMatrix::load(const double* data,
+                                                             int N)
+{
+    if (data[0] == 0.0) {
+        return nullptr;
+    }
+    auto J = std::make_shared<TrapezoidMatrix>();
+    const std::size_t n = std::size_t(N - 1);
+    J->h = *data++;
+    J->pivotInverse.resize(n);
+    J->G.resize(n);
+    J->seabed.resize(n);
+    J->mass.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int row = 0; row < 3; ++row) {
+            for (int column = 0; column < 3; ++column) {
+                J->pivotInverse[i](row, column) = data[3 * row + column];
+                J->G[i](row, column) = data[9 + 3 * row + column];
+            }
+        }
+        J->seabed[i] = data[18];
+        J->mass[i] = data[19];
+        data += 20;
+    }
+    J->segmentQ.resize(std::size_t(N));
+    J->alpha.resize(std::size_t(N));
+    for (std::size_t j = 0; j < std::size_t(N); ++j) {
+        J->segmentQ[j] = Vector3(data[0], data[1], data[2]);
+        J->alpha[j] = data[3];
+        data += 4;
+    }
+    return J;
 }
 
 bool solveStatics(const MooringLineParameters& p, const LineLayout& layout,

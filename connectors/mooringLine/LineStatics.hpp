@@ -15,15 +15,16 @@
 #ifndef CONNECTORS_MOORINGLINE_LINESTATICS_HPP
 #define CONNECTORS_MOORINGLINE_LINESTATICS_HPP
 
+#include <memory>
 #include <vector>
 
 #include "common/Kinematics.hpp"
+#include "mooringLine/LineLayout.hpp"
 
 namespace connectors {
 
 struct MooringLineParameters;
 struct NodeForces;
-struct LineLayout;
 
 //- Symmetric block tridiagonal matrix over the free nodes 1..N-1
 struct BlockTridiagonal {
@@ -116,9 +117,31 @@ struct TrapezoidMatrix {
     //  j's index j - 1)
     std::vector<double> a, b;
     std::vector<Vector3> q;
+    //- What the matrix was formed with, for telling whether it still
+    //  serves a later step: the step h [s]; per free node (at i - 1) the
+    //  seabed's stiffness and damping terms in its zz entry and its normal
+    //  mass [kg]; per segment j (at j) its unit vector and the stiffness
+    //  and damping along it, alpha [kg]
+    double h = 0.0;
+    std::vector<double> seabed, mass;
+    std::vector<Vector3> segmentQ;
+    std::vector<double> alpha;
 
     //- Solves J x = b in place (b given in x)
     void solve(std::vector<Vector3>& x) const;
+
+    //- Values of a saved matrix of a line of N segments: h, then per free
+    //  node the pivot's inverse and G (9 values each, row by row), seabed
+    //  and mass, then per segment segmentQ and alpha
+    static std::size_t savedSize(int N)
+    {
+        return 1 + 20 * std::size_t(N - 1) + 4 * std::size_t(N);
+    }
+    //- Appends J's savedSize(N) values to `out` (none: zeros)
+    static void save(const TrapezoidMatrix* J, int N, std::vector<double>& out);
+    //- The matrix saved at `data` (null where its h is 0: none saved)
+    static std::shared_ptr<const TrapezoidMatrix> load(const double* data,
+                                                       int N);
 };
 
 //- A segment at the start of a trapezoidal step: node j to j + 1 [m],
@@ -143,6 +166,12 @@ void trapezoidMatrix(const MooringLineParameters& p, const LineLayout& layout,
                      const std::vector<Vector3>& r, const NodeForces& f,
                      double zb, double h, TrapezoidMatrix& J,
                      const std::vector<StartSegment>& start);
+
+//- The seabed's terms in the zz entry of the Newton matrix of a step of h
+//  [s] of a free node at height z on (or below) the seabed at zb [m]:
+//  h^2/4 times its penalty stiffness, h/2 times its damping [kg]
+double seabedTerms(const MooringLineParameters& p, const LineLayout::Node& node,
+                   double z, double zb, double h);
 
 //- Damped Newton on the static forces of the free nodes (no velocities),
 //  from r (ends r[0], r[N] held). The forces are minus the gradient of the

@@ -108,19 +108,26 @@ int MooringLineParameters::totalSegments() const
     return N;
 }
 
+std::size_t MooringLineState::serializedSize(int segments)
+{
+    return 19 + 6 * std::size_t(segments - 1)
+        + TrapezoidMatrix::savedSize(segments);
+}
+
 std::vector<double> MooringLineState::serialize() const
 {
     std::vector<double> out
         = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],  vQ[0], vQ[1], vQ[2],
            vP[0], vP[1], vP[2], aQ[0], aQ[1], aQ[2], aP[0], aP[1], aP[2]};
     out.insert(out.end(), nodes.begin(), nodes.end());
+    TrapezoidMatrix::save(newton.get(), int(nodes.size() / 6) + 1, out);
     return out;
 }
 
 MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
                                                int segments)
 {
-    const std::size_t expected = 19 + 6 * std::size_t(segments - 1);
+    const std::size_t expected = serializedSize(segments);
     if (data.size() != expected) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(data.size())
@@ -135,7 +142,9 @@ MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
     s.vP = Vector3(data[10], data[11], data[12]);
     s.aQ = Vector3(data[13], data[14], data[15]);
     s.aP = Vector3(data[16], data[17], data[18]);
-    s.nodes.assign(data.begin() + 19, data.end());
+    const std::size_t nodes = 19 + 6 * std::size_t(segments - 1);
+    s.nodes.assign(data.begin() + 19, data.begin() + std::ptrdiff_t(nodes));
+    s.newton = TrapezoidMatrix::load(data.data() + nodes, segments);
     return s;
 }
 
@@ -519,7 +528,9 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
         // the last evaluation's accelerations are not this water's
         lastEvaluated_.r.clear();
     }
-    std::vector<double> y(state.nodes);
+    std::vector<double>& y = work_.nodes; // its storage kept
+    y = state.nodes;
+    std::shared_ptr<const TrapezoidMatrix> newton = state.newton;
     stepWork_ = 0.0;
     try {
         if (integrator_) {
@@ -533,7 +544,7 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
                 : 1;
             for (int k = 0; k < substeps; ++k) {
                 trapezoidInterval(y, double(k) / substeps,
-                                  double(k + 1) / substeps, 0);
+                                  double(k + 1) / substeps, 0, newton);
             }
         }
     } catch (const std::runtime_error& e) {
@@ -541,7 +552,8 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
                                   + formatValue(state.time) + " s by "
                                   + formatValue(h) + " s failed: " + e.what());
     }
-    state.nodes = std::move(y);
+    state.nodes.swap(y);
+    state.newton = std::move(newton);
     state.time += h;
     state.Q = ends_.Q1;
     state.P = ends_.P1;

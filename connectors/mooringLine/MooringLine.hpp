@@ -177,7 +177,16 @@ struct MooringLineState {
     Vector3 aQ = Vector3::Zero(), aP = Vector3::Zero();
     //- Free nodes 1..N-1: x, y, z, vx, vy, vz each [m, m/s]
     std::vector<double> nodes;
+    //- The trapezoidal rule's factorised Newton matrix, kept from step to
+    //  step while it serves (MooringLineTrapezoid.cpp); shared between
+    //  copies, never changed (a step that forms a new one replaces it);
+    //  null: none, the next step forms one
+    std::shared_ptr<const TrapezoidMatrix> newton;
 
+    //- Values of a saved state of a line of N segments: time, Q, P, vQ,
+    //  vP, aQ, aP, the nodes, the Newton matrix
+    //  (TrapezoidMatrix::savedSize)
+    static std::size_t serializedSize(int segments);
     std::vector<double> serialize() const;
     //- Throws std::invalid_argument unless `data` holds a state of N segments
     static MooringLineState deserialize(const std::vector<double>& data,
@@ -282,13 +291,16 @@ private:
     //- One trapezoidal step of `nodes` from the fraction s0 of the
     //  coupling step to s1; false (nodes unchanged) when Newton's first
     //  correction exceeds largestMiss segment lengths or Newton did not
-    //  converge
+    //  converge. `newton`: the Newton matrix kept from the steps before,
+    //  used where it serves, else replaced by the step's own (on success)
     bool trapezoidStep(std::vector<double>& nodes, double s0, double s1,
-                       double largestMiss);
+                       double largestMiss,
+                       std::shared_ptr<const TrapezoidMatrix>& newton);
     //- Trapezoidal steps over [s0, s1], halved where a step fails, down to
     //  1/1024 (depth: halvings so far); throws UndefinedStateError there
     void trapezoidInterval(std::vector<double>& nodes, double s0, double s1,
-                           int depth);
+                           int depth,
+                           std::shared_ptr<const TrapezoidMatrix>& newton);
     Vector3 attachment(const BodyKinematics& body, const Vector3& p) const;
     Vector3 attachmentVelocity(const BodyKinematics& body,
                                const Vector3& p) const;
@@ -322,8 +334,10 @@ private:
         WaterMotion water;
         NodeForces f;
     } lastEvaluated_;
-    //- Storage of trapezoidStep, overwritten by every step
+    //- Storage of advance and trapezoidStep, overwritten by every step
     struct Workspace {
+        //- the nodes over a coupling step (MooringLineState::nodes)
+        std::vector<double> nodes;
         std::vector<Vector3> r0, v0, r, v, b;
         //- the start's forces (when not those of the last `evaluate`)
         NodeForces f0, f;
@@ -331,7 +345,11 @@ private:
         //  the elastic forces at the start and the end of the step [N]
         std::vector<StartSegment> start;
         std::vector<Vector3> d0, d1;
-        TrapezoidMatrix J;
+        //- the correction by a kept Newton matrix
+        std::vector<Vector3> chord;
+        //- Newton matrices formed before, their storage reused by a step
+        //  that forms one where no state holds them any more
+        std::vector<std::shared_ptr<TrapezoidMatrix>> matrices;
     } work_;
 };
 

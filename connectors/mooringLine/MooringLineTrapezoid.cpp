@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -125,10 +126,71 @@ bool axialCorrections(const LineLayout& layout,
     return kink;
 }
 
+//- Whether a kept Newton matrix J serves a step of h [s] whose forces at
+//  the predictor r are f: formed for the same h, no segment going taut
+//  or slack within the step (kink), no node in the free surface's ramp or
+//  held by seabed friction, and the terms that change with the positions
+//  within maxChange of a node's mass: each segment's alpha q q' (its
+//  unit vector turned by dq changes it by about alpha |dq|) and each
+//  node's seabed terms. The kept matrix's correction then differs from
+//  the step's own by about maxChange of it (the mass carries the
+//  transverse directions; along a taut segment alpha is far larger)
+bool serves(const TrapezoidMatrix& J, double h, bool kink,
+            const MooringLineParameters& p, const LineLayout& layout,
+            const std::vector<Vector3>& r, const NodeForces& f, double zb)
+{
+    constexpr double maxChange = 1e-2;
+    if (J.h != h || kink) {
+        return false;
+    }
+    const std::size_t N = std::size_t(layout.N);
+    for (std::size_t i = 1; i < N; ++i) {
+        if (f.friction[i] != 0.0
+            || (f.submerged[i] > 0.0 && f.submerged[i] < 1.0)) {
+            return false;
+        }
+        const double seabed = p.seabedContact && r[i][2] <= zb
+            ? seabedTerms(p, layout.nodes[i], r[i][2], zb, h)
+            : 0.0;
+        if (std::abs(seabed - J.seabed[i - 1]) > maxChange * J.mass[i - 1]) {
+            return false;
+        }
+    }
+    // segment j between nodes j and j + 1: against the lighter free one
+    for (std::size_t j = 0; j < N; ++j) {
+        const double mass = j == 0 ? J.mass[0]
+            : j + 1 == N           ? J.mass[j - 1]
+                                   : std::min(J.mass[j - 1], J.mass[j]);
+        if (J.alpha[j] * (f.q[j] - J.segmentQ[j]).lpNorm<Eigen::Infinity>()
+            > maxChange * mass) {
+            return false;
+        }
+    }
+    return true;
+}
+
+//- A matrix of `matrices` no one else holds (its storage reused), else a
+//  new one (kept in `matrices` while they are few)
+std::shared_ptr<TrapezoidMatrix>
+spareMatrix(std::vector<std::shared_ptr<TrapezoidMatrix>>& matrices)
+{
+    for (const std::shared_ptr<TrapezoidMatrix>& m : matrices) {
+        if (m.use_count() == 1) {
+            return m;
+        }
+    }
+    auto m = std::make_shared<TrapezoidMatrix>();
+    if (matrices.size() < 4) {
+        matrices.push_back(m);
+    }
+    return m;
+}
+
 } // namespace
 
 bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
-                                double s1, double largestMiss)
+                                double s1, double largestMiss,
+                                std::shared_ptr<const TrapezoidMatrix>& newton)
 {
     const double h = (s1 - s0) * ends_.h;
     const int N = layout_.N;
@@ -174,14 +236,20 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // step, and the tension harmonic equals that of Newton iterated to
     // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
     // first correction above largestMiss segments rejects the step.
+    //
+    // A matrix kept from the steps before (chord Newton) replaces the
+    // step's own where it serves (`serves`) and its first correction is
+    // below chordMiss segments: the correction's error, the kept matrix's
+    // difference from the step's own times the correction, is then below
+    // the 1e-3 of a correction the step's own matrix leaves. Else the
+    // step forms its own at the predictor, and keeps it for the steps
+    // after it.
+    constexpr double chordMiss = 1e-6;
     const double inverseH = 1.0 / h;
+    const TrapezoidMatrix* J = nullptr;
+    std::shared_ptr<TrapezoidMatrix> formed;
     for (int iteration = 0; iteration < 10; ++iteration) {
         nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_, false);
-        if (iteration == 0) {
-            trapezoidMatrix(parameters_, layout_, w.r, w.f, zb, h, w.J,
-                            w.start);
-            ++trapezoidStatistics_.jacobianEvaluations;
-        }
         ++trapezoidStatistics_.rhsEvaluations;
         const bool kink
             = axialCorrections(layout_, w.start, w.r, w.f, w.d0, w.d1);
@@ -201,7 +269,29 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
             const double along = residual.dot(t);
             w.b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
         }
-        w.J.solve(w.b);
+        if (iteration == 0 && newton
+            && serves(*newton, h, kink, parameters_, layout_, w.r, w.f, zb)) {
+            w.chord = w.b;
+            newton->solve(w.chord);
+            bool small = true;
+            for (const Vector3& c : w.chord) {
+                small = small && c.lpNorm<Eigen::Infinity>() <= chordMiss * l;
+            }
+            if (small) { // (false for a NaN)
+                w.b.swap(w.chord);
+                J = newton.get();
+            }
+        }
+        if (!J) {
+            formed = spareMatrix(w.matrices);
+            trapezoidMatrix(parameters_, layout_, w.r, w.f, zb, h, *formed,
+                            w.start);
+            ++trapezoidStatistics_.jacobianEvaluations;
+            J = formed.get();
+            J->solve(w.b);
+        } else if (iteration > 0) {
+            J->solve(w.b);
+        }
         double largest = 0.0;
         bool finite = true;
         for (std::size_t i = 1; i < n; ++i) {
@@ -248,6 +338,9 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
                 }
             }
             ++trapezoidStatistics_.steps;
+            if (formed) {
+                newton = std::move(formed);
+            }
             return true;
         }
     }
@@ -255,8 +348,9 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     return false;
 }
 
-void MooringLine::trapezoidInterval(std::vector<double>& nodes, double s0,
-                                    double s1, int depth)
+void MooringLine::trapezoidInterval(
+    std::vector<double>& nodes, double s0, double s1, int depth,
+    std::shared_ptr<const TrapezoidMatrix>& newton)
 {
     // The predictor's miss (Newton's first correction) is about three
     // times the step's local error, h^3/12 times the third derivative of
@@ -270,9 +364,10 @@ void MooringLine::trapezoidInterval(std::vector<double>& nodes, double s0,
     // 0.1 ms steps throughout; bench/mooringLine). At the tenth halving
     // Newton iterates to 1e-5 of a segment, whatever the first correction.
     constexpr int deepest = 10;
-    if (trapezoidStep(
-            nodes, s0, s1,
-            depth < deepest ? 1e-5 : std::numeric_limits<double>::infinity())) {
+    if (trapezoidStep(nodes, s0, s1,
+                      depth < deepest ? 1e-5
+                                      : std::numeric_limits<double>::infinity(),
+                      newton)) {
         return;
     }
     if (depth == deepest) {
@@ -281,8 +376,8 @@ void MooringLine::trapezoidInterval(std::vector<double>& nodes, double s0,
             "1/1024 of the coupling step");
     }
     const double middle = 0.5 * (s0 + s1);
-    trapezoidInterval(nodes, s0, middle, depth + 1);
-    trapezoidInterval(nodes, middle, s1, depth + 1);
+    trapezoidInterval(nodes, s0, middle, depth + 1, newton);
+    trapezoidInterval(nodes, middle, s1, depth + 1, newton);
 }
 
 } // namespace connectors

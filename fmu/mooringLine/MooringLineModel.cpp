@@ -4,8 +4,9 @@
 // the only list of its variables.
 //
 // Internal state (Model::internalState): time, end positions, velocities
-// (the start of the next step's Hermite path) and accelerations, and the
-// position and velocity of every free node; then the start time of the
+// (the start of the next step's Hermite path) and accelerations, the
+// position and velocity of every free node, and the trapezoidal rule's
+// factorised Newton matrix kept from step to step; then the start time of the
 // last step and its flow inputs (the flow's acceleration over the next
 // step is their change). It is saved, restored and serialized with the FMU
 // state; each step starts the integrator from it, so a step repeated after
@@ -455,7 +456,8 @@ void MooringLineModel::setInternalState(const double*,
         return;
     }
     const connectors::MooringLineParameters& p = law_.get().parameters();
-    const std::size_t line = 19 + 6 * std::size_t(p.totalSegments() - 1);
+    const std::size_t line
+        = connectors::MooringLineState::serializedSize(p.totalSegments());
     const std::size_t withFlow = line + lastFlow_.size();
     if (state.size() != withFlow) {
         throw std::invalid_argument(
