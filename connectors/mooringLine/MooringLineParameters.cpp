@@ -1,6 +1,6 @@
-// MooringLine's parameters (MooringLine.hpp): their checks, a table of
-// bounds per group of properties in the order they are checked, the
-// sections, the saved state's layout, and the construction of the line.
+// MooringLine's parameters (MooringLine.hpp): their checks (a section's
+// and a joint's properties from tables of bounds), the sections, the saved
+// state's layout, and the construction of the line.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -24,13 +24,15 @@ template <class Properties> struct Bound {
     bool positive;
 };
 
-//- ParameterError naming <prefix><name> for the first property of `table`
-//  out of its bound
+//- ParameterError naming <prefix><name> for the first property of
+//  table[first, last) out of its bound
 template <class Properties, std::size_t n>
 void requireBounds(const std::string& prefix, const Properties& properties,
-                   const Bound<Properties> (&table)[n])
+                   const Bound<Properties> (&table)[n], std::size_t first = 0,
+                   std::size_t last = n)
 {
-    for (const Bound<Properties>& b : table) {
+    for (std::size_t k = first; k < last; ++k) {
+        const Bound<Properties>& b = table[k];
         const std::string name = prefix + b.name;
         if (b.positive) {
             requirePositive(lawName, name.c_str(), properties.*b.value, b.unit);
@@ -41,45 +43,26 @@ void requireBounds(const std::string& prefix, const Properties& properties,
     }
 }
 
-//- A section's line: length, stiffness, damping, mass, diameter
-const Bound<LineSection> lineBounds[] = {
+//- A section's properties: its line (length, stiffness, damping, mass,
+//  diameter), then from morisonFirst its Morison coefficients
+const Bound<LineSection> sectionBounds[] = {
     {"unstretchedLength", &LineSection::length, "m", true},
     {"EA", &LineSection::EA, "N", true},
     {"axialDamping", &LineSection::axialDamping, "N.s", false},
     {"massPerLength", &LineSection::massPerLength, "kg/m", true},
     {"diameter", &LineSection::diameter, "m", false},
-};
-//- A section's Morison coefficients
-const Bound<LineSection> morisonBounds[] = {
     {"normalDrag", &LineSection::normalDrag, "1", false},
     {"tangentialDrag", &LineSection::tangentialDrag, "1", false},
     {"normalAddedMass", &LineSection::normalAddedMass, "1", false},
     {"tangentialAddedMass", &LineSection::tangentialAddedMass, "1", false},
 };
+constexpr std::size_t morisonFirst = 5;
 //- The point at a joint
 const Bound<LinePoint> jointBounds[] = {
     {"mass", &LinePoint::mass, "kg", false},
     {"volume", &LinePoint::volume, "m3", false},
     {"dragArea", &LinePoint::dragArea, "m2", false},
     {"addedMass", &LinePoint::addedMass, "1", false},
-};
-using Parameters = MooringLineParameters;
-const Bound<Parameters> waterBounds[] = {
-    {"waterDensity", &Parameters::waterDensity, "kg/m3", false},
-    {"gravity", &Parameters::gravity, "m/s2", false},
-};
-const Bound<Parameters> seabedBounds[] = {
-    {"seabedStiffness", &Parameters::seabedStiffness, "Pa/m", false},
-    {"seabedDamping", &Parameters::seabedDamping, "Pa.s/m", false},
-};
-const Bound<Parameters> integratorBounds[] = {
-    {"relativeTolerance", &Parameters::relativeTolerance, "1", true},
-    {"absoluteTolerance", &Parameters::absoluteTolerance, "1", true},
-    {"maxStep", &Parameters::maxStep, "s", false},
-};
-const Bound<Parameters> frictionBounds[] = {
-    {"seabedFriction", &Parameters::seabedFriction, "1", false},
-    {"frictionVelocity", &Parameters::frictionVelocity, "m/s", true},
 };
 
 //- Sections 2, 3, ... and their joints' points (ParameterError naming the
@@ -91,7 +74,7 @@ void checkSections(const MooringLineParameters& p)
         const LineSection& s = p.sections[k];
         const std::string section = "section" + std::to_string(k + 2) + ".";
         const auto name = [&](const char* n) { return section + n; };
-        requireBounds(section, s, lineBounds);
+        requireBounds(section, s, sectionBounds, 0, morisonFirst);
         if (p.seabedContact && !(s.diameter > 0.0)) {
             throw ParameterError(
                 Refusal::inconsistent, lawName, name("diameter"), s.diameter,
@@ -99,7 +82,7 @@ void checkSections(const MooringLineParameters& p)
                 "> 0 with seabedContact = 1: the seabed carries the line "
                 "over its contact area, diameter times length");
         }
-        requireBounds(section, s, morisonBounds);
+        requireBounds(section, s, sectionBounds, morisonFirst);
         total += s.segments;
         if (s.segments < 1 || total > 1000) {
             throw ParameterError(
@@ -185,10 +168,12 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
 {
     requireFiniteAttachments(lawName, p.p_AoP_A, p.p_BoQ_B);
     const LineSection first = p.section(0);
-    requireBounds("", first, lineBounds);
-    requireBounds("", p, waterBounds);
-    requireBounds("", first, morisonBounds);
-    requireBounds("", p, seabedBounds);
+    requireBounds("", first, sectionBounds, 0, morisonFirst);
+    requireNonNegative(lawName, "waterDensity", p.waterDensity, "kg/m3");
+    requireNonNegative(lawName, "gravity", p.gravity, "m/s2");
+    requireBounds("", first, sectionBounds, morisonFirst);
+    requireNonNegative(lawName, "seabedStiffness", p.seabedStiffness, "Pa/m");
+    requireNonNegative(lawName, "seabedDamping", p.seabedDamping, "Pa.s/m");
     if (p.seabedContact) {
         // The seabed's penalty acts on the contact area (diameter times
         // length): without either the line would sink through the seabed
@@ -212,14 +197,17 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
             "mooringLine: parameter segments = " + std::to_string(p.segments)
                 + " is out of range (allowed: an integer from 2 to 1000)");
     }
-    requireBounds("", p, integratorBounds);
+    requirePositive(lawName, "relativeTolerance", p.relativeTolerance, "1");
+    requirePositive(lawName, "absoluteTolerance", p.absoluteTolerance, "1");
+    requireNonNegative(lawName, "maxStep", p.maxStep, "s");
     if (!std::isfinite(p.waterLevel)) {
         throw ParameterError(Refusal::notFinite, lawName, "waterLevel",
                              p.waterLevel, "m", "finite");
     }
     requireFinite(lawName, "current.surface", p.currentSurface, "m/s");
     requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
-    requireBounds("", p, frictionBounds);
+    requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
+    requirePositive(lawName, "frictionVelocity", p.frictionVelocity, "m/s");
     checkSections(p);
     weight_ = p.weight();
     layout_ = lineLayout(p, weight_);
