@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "catenary/CatenarySections.hpp"
@@ -206,21 +207,14 @@ double totalWeight(const CatenaryLine& line)
 
 const char* regimeName(CatenaryRegime regime)
 {
-    switch (regime) {
-    case CatenaryRegime::suspended:
-        return "suspended";
-    case CatenaryRegime::touchdown:
-        return "touchdown";
-    case CatenaryRegime::slackOnSeabed:
-        return "slackOnSeabed";
-    case CatenaryRegime::vertical:
-        return "vertical";
-    case CatenaryRegime::folded:
-        return "folded";
-    case CatenaryRegime::slackWeightless:
-        return "slackWeightless";
-    }
-    return "unknown";
+    // in the order of the enumeration
+    static const char* const names[]
+        = {"suspended", "touchdown", "slackOnSeabed",
+           "vertical",  "folded",    "slackWeightless"};
+    static_assert(std::size(names)
+                  == std::size_t(CatenaryRegime::slackWeightless) + 1);
+    const auto i = std::size_t(regime);
+    return i < std::size(names) ? names[i] : "unknown";
 }
 
 CatenarySolution solveCatenary(const CatenaryLine& line, double x, double z,

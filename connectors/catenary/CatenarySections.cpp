@@ -18,88 +18,12 @@ using detail::count;
 using detail::groundedIntegral;
 using detail::jointAbove;
 using detail::pointOf;
+using detail::Profile;
+using detail::profile;
 using detail::Properties;
 using detail::properties;
-
-//- Vertical tension at the top and bottom of each section for the
-//  fairlead's V (the line held from above alone), and the arcs of the
-//  sections' lower ends from the anchor
-struct Profile {
-    std::vector<double> top, bottom, s0;
-};
-
-Profile profile(const CatenaryLine& l, double V)
-{
-    const std::size_t n = count(l);
-    Profile p;
-    p.top.resize(n);
-    p.bottom.resize(n);
-    p.s0.resize(n);
-    double s = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-        p.s0[k] = s;
-        s += properties(l, k).length;
-    }
-    double Vt = V;
-    for (std::size_t k = n; k-- > 0;) {
-        const Properties q = properties(l, k);
-        p.top[k] = Vt;
-        p.bottom[k] = Vt - q.w * q.length;
-        Vt = p.bottom[k] - (k > 0 ? jointAbove(l, k - 1) : 0.0);
-    }
-    return p;
-}
-
-struct Touchdown {
-    bool grounded = false;
-    //- Section holding the touchdown point
-    std::size_t section = 0;
-    //- At the top of `section` (its upper joint's point on the seabed)
-    bool atJoint = false;
-    //- Suspended length of `section` (inside it) [m]
-    double hanging = 0.0;
-    //- Arc of the touchdown point from the anchor [m]
-    double arc = 0.0;
-};
-
-//- The lowest point from which the line rises (seabed contact only): going
-//  up from the anchor, where the vertical tension of the line held from
-//  above turns positive, inside a heavy section or at a joint. Below it
-//  that tension is <= 0: the seabed carries the line there.
-Touchdown touchdown(const CatenaryLine& l, const Profile& p)
-{
-    Touchdown t;
-    if (!l.seabedContact) {
-        return t;
-    }
-    const std::size_t n = count(l);
-    for (std::size_t k = 0; k < n; ++k) {
-        const Properties q = properties(l, k);
-        if (p.bottom[k] >= 0.0) {
-            if (k > 0) {
-                // rising from the point at the top of section k - 1
-                t.grounded = true;
-                t.section = k - 1;
-                t.atJoint = true;
-                t.arc = p.s0[k];
-            }
-            return t;
-        }
-        if (q.w > 0.0 && (p.top[k] > 0.0 || k + 1 == n)) {
-            t.grounded = true;
-            t.section = k;
-            t.hanging = p.top[k] / q.w;
-            t.arc = p.s0[k] + q.length - t.hanging;
-            return t;
-        }
-    }
-    // a light top section and V <= 0: the fairlead on the seabed
-    t.grounded = true;
-    t.section = n - 1;
-    t.atJoint = true;
-    t.arc = p.s0[n - 1] + properties(l, n - 1).length;
-    return t;
-}
+using detail::Touchdown;
+using detail::touchdown;
 
 //- Span of one piece from its lower end, with its derivatives in (H, V)
 Span pieceSpan(const Piece& p, double H)

@@ -1,11 +1,14 @@
-// Helpers shared by the two halves of the line of sections: the solver
-// (CatenarySections.cpp) and the shape, tensions and energy along a solved
-// line (CatenarySectionsAlong.cpp). Internal to the catenary law.
+// Helpers shared by the parts of the line of sections: the solver
+// (CatenarySections.cpp), the vertical tension profile and the touchdown
+// point (CatenarySectionsTouchdown.cpp), and the shape, tensions and energy
+// along a solved line (CatenarySectionsAlong.cpp). Internal to the
+// catenary law.
 #ifndef CONNECTORS_CATENARY_CATENARYSECTIONSDETAIL_HPP
 #define CONNECTORS_CATENARY_CATENARYSECTIONSDETAIL_HPP
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 #include "catenary/CatenarySections.hpp"
 
@@ -72,6 +75,34 @@ inline Eigen::Vector2d pointOf(const Piece& p, double H, double t)
     }
     return {p.x0, p.z0};
 }
+
+//- Vertical tension at the top and bottom of each section for the
+//  fairlead's V (the line held from above alone), and the arcs of the
+//  sections' lower ends from the anchor
+struct Profile {
+    std::vector<double> top, bottom, s0;
+};
+
+Profile profile(const CatenaryLine& l, double V);
+
+//- Where the line leaves the seabed
+struct Touchdown {
+    bool grounded = false;
+    //- Section holding the touchdown point
+    std::size_t section = 0;
+    //- At the top of `section` (its upper joint's point on the seabed)
+    bool atJoint = false;
+    //- Suspended length of `section` (inside it) [m]
+    double hanging = 0.0;
+    //- Arc of the touchdown point from the anchor [m]
+    double arc = 0.0;
+};
+
+//- The lowest point from which the line rises (seabed contact only): going
+//  up from the anchor, where the vertical tension of the line held from
+//  above turns positive, inside a heavy section or at a joint. Below it
+//  that tension is <= 0: the seabed carries the line there.
+Touchdown touchdown(const CatenaryLine& l, const Profile& p);
 
 } // namespace detail
 } // namespace catenarySections

@@ -1,3 +1,7 @@
+// MooringLine (MooringLine.hpp): the start state, the ends' path over a
+// step, CVODE's right-hand side and the step itself; the trapezoidal rule
+// in MooringLineTrapezoid.cpp, the loads and diagnostics in
+// MooringLineEvaluate.cpp, the parameters in MooringLineParameters.cpp.
 #include "mooringLine/MooringLine.hpp"
 
 #include <Eigen/Geometry>
@@ -7,7 +11,6 @@
 #include <string>
 
 #include "catenary/Catenary.hpp"
-#include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineStatics.hpp"
@@ -15,209 +18,8 @@
 namespace connectors {
 
 namespace {
-
 const char* const lawName = "mooringLine";
-constexpr double pi = 3.14159265358979323846;
-
-//- Sections 2, 3, ... and their joints' points (ParameterError naming the
-//  FMU variable, section<k>.<name> or joint<k>.<name>)
-void checkSections(const MooringLineParameters& p)
-{
-    int total = p.segments;
-    for (std::size_t k = 0; k < p.sections.size(); ++k) {
-        const LineSection& s = p.sections[k];
-        const std::string section = "section" + std::to_string(k + 2) + ".";
-        const auto name = [&](const char* n) { return section + n; };
-        requirePositive(lawName, name("unstretchedLength").c_str(), s.length,
-                        "m");
-        requirePositive(lawName, name("EA").c_str(), s.EA, "N");
-        requireNonNegative(lawName, name("axialDamping").c_str(),
-                           s.axialDamping, "N.s");
-        requirePositive(lawName, name("massPerLength").c_str(), s.massPerLength,
-                        "kg/m");
-        requireNonNegative(lawName, name("diameter").c_str(), s.diameter, "m");
-        if (p.seabedContact && !(s.diameter > 0.0)) {
-            throw ParameterError(
-                Refusal::inconsistent, lawName, name("diameter"), s.diameter,
-                "m",
-                "> 0 with seabedContact = 1: the seabed carries the line "
-                "over its contact area, diameter times length");
-        }
-        requireNonNegative(lawName, name("normalDrag").c_str(), s.normalDrag,
-                           "1");
-        requireNonNegative(lawName, name("tangentialDrag").c_str(),
-                           s.tangentialDrag, "1");
-        requireNonNegative(lawName, name("normalAddedMass").c_str(),
-                           s.normalAddedMass, "1");
-        requireNonNegative(lawName, name("tangentialAddedMass").c_str(),
-                           s.tangentialAddedMass, "1");
-        total += s.segments;
-        if (s.segments < 1 || total > 1000) {
-            throw ParameterError(
-                Refusal::outOfRange, name("segments"),
-                "mooringLine: parameter " + name("segments") + " = "
-                    + std::to_string(s.segments)
-                    + " is out of range (allowed: an integer from 1 to "
-                    + std::to_string(std::max(1000 - (total - s.segments), 0))
-                    + ": the sections' segments add up to at most 1000)");
-        }
-        const std::string joint = "joint" + std::to_string(k + 1) + ".";
-        requireNonNegative(lawName, (joint + "mass").c_str(), s.joint.mass,
-                           "kg");
-        requireNonNegative(lawName, (joint + "volume").c_str(), s.joint.volume,
-                           "m3");
-        requireNonNegative(lawName, (joint + "dragArea").c_str(),
-                           s.joint.dragArea, "m2");
-        requireNonNegative(lawName, (joint + "addedMass").c_str(),
-                           s.joint.addedMass, "1");
-    }
-}
 } // namespace
-
-double MooringLineParameters::weight() const
-{
-    return (massPerLength - waterDensity * 0.25 * pi * diameter * diameter)
-        * gravity;
-}
-
-LineSection MooringLineParameters::section(std::size_t k) const
-{
-    if (k > 0) {
-        return sections[k - 1];
-    }
-    LineSection s;
-    s.length = length;
-    s.EA = EA;
-    s.axialDamping = axialDamping;
-    s.massPerLength = massPerLength;
-    s.diameter = diameter;
-    s.normalDrag = normalDrag;
-    s.tangentialDrag = tangentialDrag;
-    s.normalAddedMass = normalAddedMass;
-    s.tangentialAddedMass = tangentialAddedMass;
-    s.segments = segments;
-    return s;
-}
-
-int MooringLineParameters::totalSegments() const
-{
-    int N = segments;
-    for (const LineSection& s : sections) {
-        N += s.segments;
-    }
-    return N;
-}
-
-std::size_t MooringLineState::serializedSize(int segments)
-{
-    return 19 + 6 * std::size_t(segments - 1)
-        + TrapezoidMatrix::savedSize(segments);
-}
-
-std::vector<double> MooringLineState::serialize() const
-{
-    std::vector<double> out
-        = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],  vQ[0], vQ[1], vQ[2],
-           vP[0], vP[1], vP[2], aQ[0], aQ[1], aQ[2], aP[0], aP[1], aP[2]};
-    out.insert(out.end(), nodes.begin(), nodes.end());
-    TrapezoidMatrix::save(newton.get(), int(nodes.size() / 6) + 1, out);
-    return out;
-}
-
-MooringLineState MooringLineState::deserialize(const std::vector<double>& data,
-                                               int segments)
-{
-    const std::size_t expected = serializedSize(segments);
-    if (data.size() != expected) {
-        throw std::invalid_argument(
-            "mooringLine: a saved state of " + std::to_string(data.size())
-            + " values does not fit a line of " + std::to_string(segments)
-            + " segments (" + std::to_string(expected) + " values)");
-    }
-    MooringLineState s;
-    s.time = data[0];
-    s.Q = Vector3(data[1], data[2], data[3]);
-    s.P = Vector3(data[4], data[5], data[6]);
-    s.vQ = Vector3(data[7], data[8], data[9]);
-    s.vP = Vector3(data[10], data[11], data[12]);
-    s.aQ = Vector3(data[13], data[14], data[15]);
-    s.aP = Vector3(data[16], data[17], data[18]);
-    const std::size_t nodes = 19 + 6 * std::size_t(segments - 1);
-    s.nodes.assign(data.begin() + 19, data.begin() + std::ptrdiff_t(nodes));
-    s.newton = TrapezoidMatrix::load(data.data() + nodes, segments);
-    return s;
-}
-
-MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
-{
-    requireFinite(lawName, "A.p", p.p_AoP_A, "m");
-    requireFinite(lawName, "B.p", p.p_BoQ_B, "m");
-    requirePositive(lawName, "unstretchedLength", p.length, "m");
-    requirePositive(lawName, "EA", p.EA, "N");
-    requireNonNegative(lawName, "axialDamping", p.axialDamping, "N.s");
-    requirePositive(lawName, "massPerLength", p.massPerLength, "kg/m");
-    requireNonNegative(lawName, "diameter", p.diameter, "m");
-    requireNonNegative(lawName, "waterDensity", p.waterDensity, "kg/m3");
-    requireNonNegative(lawName, "gravity", p.gravity, "m/s2");
-    requireNonNegative(lawName, "normalDrag", p.normalDrag, "1");
-    requireNonNegative(lawName, "tangentialDrag", p.tangentialDrag, "1");
-    requireNonNegative(lawName, "normalAddedMass", p.normalAddedMass, "1");
-    requireNonNegative(lawName, "tangentialAddedMass", p.tangentialAddedMass,
-                       "1");
-    requireNonNegative(lawName, "seabedStiffness", p.seabedStiffness, "Pa/m");
-    requireNonNegative(lawName, "seabedDamping", p.seabedDamping, "Pa.s/m");
-    if (p.seabedContact) {
-        // The seabed's penalty acts on the contact area (diameter times
-        // length): without either the line would sink through the seabed
-        if (!(p.diameter > 0.0)) {
-            throw ParameterError(
-                Refusal::inconsistent, lawName, "diameter", p.diameter, "m",
-                "> 0 with seabedContact = 1: the seabed carries the line "
-                "over its contact area, diameter times length");
-        }
-        if (!(p.seabedStiffness > 0.0)) {
-            throw ParameterError(
-                Refusal::inconsistent, lawName, "seabedStiffness",
-                p.seabedStiffness, "Pa/m",
-                "> 0 with seabedContact = 1: the seabed carries the line "
-                "by its penalty stiffness");
-        }
-    }
-    if (p.segments < 2 || p.segments > 1000) {
-        throw ParameterError(
-            Refusal::outOfRange, "segments",
-            "mooringLine: parameter segments = " + std::to_string(p.segments)
-                + " is out of range (allowed: an integer from 2 to 1000)");
-    }
-    requirePositive(lawName, "relativeTolerance", p.relativeTolerance, "1");
-    requirePositive(lawName, "absoluteTolerance", p.absoluteTolerance, "1");
-    requireNonNegative(lawName, "maxStep", p.maxStep, "s");
-    if (!std::isfinite(p.waterLevel)) {
-        throw ParameterError(Refusal::notFinite, lawName, "waterLevel",
-                             p.waterLevel, "m", "finite");
-    }
-    requireFinite(lawName, "current.surface", p.currentSurface, "m/s");
-    requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
-    requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
-    requirePositive(lawName, "frictionVelocity", p.frictionVelocity, "m/s");
-    checkSections(p);
-    weight_ = p.weight();
-    layout_ = lineLayout(p, weight_);
-    if (p.integrator == MooringLineParameters::Integrator::cvode) {
-        CvodeBdf::Options options;
-        options.relativeTolerance = p.relativeTolerance;
-        options.absoluteTolerance = p.absoluteTolerance;
-        options.halfBandwidth = 11; // a node's 6 states see its neighbours' 6
-        integrator_ = std::make_unique<CvodeBdf>(
-            6 * std::size_t(layout_.N - 1),
-            [this](double t, const double* y, double* ydot) {
-                return rhs(t, y, ydot);
-            },
-            options);
-    }
-}
-
-MooringLine::~MooringLine() = default;
 
 Vector3 MooringLine::attachment(const BodyKinematics& body,
                                 const Vector3& p) const
@@ -235,8 +37,7 @@ MooringLineState MooringLine::initialState(const BodyKinematics& A,
                                            const BodyKinematics& B,
                                            double time) const
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
     const MooringLineParameters& p = parameters_;
     const Vector3 P = attachment(A, p.p_AoP_A), Q = attachment(B, p.p_BoQ_B);
     if (p.seabedContact && P[2] < Q[2]) {
@@ -435,74 +236,12 @@ void MooringLine::checkJointsSubmerged(const std::vector<Vector3>& r) const
     }
 }
 
-void MooringLine::alongLine(const std::vector<Vector3>& points,
-                            std::vector<Vector3>& atNodes) const
-{
-    // node i is (N - i)/N of the line from P (its unstretched arc from P
-    // over L with sections): between points k and k + 1
-    const LineLayout& L = layout_;
-    const int N = L.N;
-    const int last = int(points.size()) - 1;
-    atNodes.resize(std::size_t(N + 1));
-    for (int i = 0; i <= N; ++i) {
-        const double u = L.sections.size() == 1
-            ? double(N - i) * last / N
-            : (L.length - L.arc[std::size_t(i)]) / L.length * last;
-        const int k = std::min(int(u), last - 1);
-        const double f01 = u - k;
-        atNodes[std::size_t(i)] = (1.0 - f01) * points[std::size_t(k)]
-            + f01 * points[std::size_t(k + 1)];
-    }
-}
-
-void MooringLine::waterMotion(const std::vector<Vector3>& flow,
-                              const std::vector<Vector3>& flowAcceleration,
-                              WaterMotion& water) const
-{
-    const MooringLineParameters& p = parameters_;
-    water.current
-        = !p.currentSurface.isZero(0.0) || !p.currentSeabed.isZero(0.0);
-    const auto check = [](const std::vector<Vector3>& points,
-                          const char* what) {
-        if (points.size() == 1) {
-            throw std::invalid_argument(std::string("mooringLine: the ") + what
-                                        + " needs 0 or at least 2 points");
-        }
-        for (std::size_t k = 0; k < points.size(); ++k) {
-            if (!points[k].allFinite()) {
-                throw UndefinedStateError(
-                    std::string("mooringLine: the ") + what + " at shape point "
-                    + std::to_string(k + 1) + " is not finite");
-            }
-        }
-    };
-    check(flow, "flow velocity");
-    check(flowAcceleration, "flow acceleration");
-    if (!flow.empty() && !flowAcceleration.empty()
-        && flow.size() != flowAcceleration.size()) {
-        throw std::invalid_argument(
-            "mooringLine: the flow's velocity and acceleration need the same "
-            "points");
-    }
-    if (flow.empty()) {
-        water.flow.clear();
-    } else {
-        alongLine(flow, water.flow);
-    }
-    if (flowAcceleration.empty()) {
-        water.flowAcceleration.clear();
-    } else {
-        alongLine(flowAcceleration, water.flowAcceleration);
-    }
-}
-
 void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
                           const BodyKinematics& B, double h,
                           const std::vector<Vector3>& flow,
                           const std::vector<Vector3>& flowAcceleration)
 {
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
+    requireFiniteInputs(lawName, A, B);
     if (!(std::isfinite(h) && h > 0.0)) {
         throw UndefinedStateError("mooringLine: step size " + formatValue(h)
                                   + " s must be finite and > 0");
@@ -572,120 +311,6 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     };
     state.aQ = acceleration(ends_.Q0, ends_.Q1, ends_.vQ0, ends_.vQ1);
     state.aP = acceleration(ends_.P0, ends_.P1, ends_.vP0, ends_.vP1);
-}
-
-MooringLineOutput
-MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
-                      const BodyKinematics& B, int shapePoints,
-                      const std::vector<Vector3>& flow,
-                      const std::vector<Vector3>& flowAcceleration) const
-{
-    requireFiniteInputs(lawName, "A", A);
-    requireFiniteInputs(lawName, "B", B);
-    const MooringLineParameters& p = parameters_;
-    const LineLayout& L = layout_;
-    const int N = L.N;
-    if (state.nodes.size() != 6 * std::size_t(N - 1)) {
-        throw std::invalid_argument("mooringLine: state does not fit the line");
-    }
-    const AxialGeometry g = axialGeometry(A, B, p.p_AoP_A, p.p_BoQ_B);
-    // into lastEvaluated_ (storage kept from call to call)
-    std::vector<Vector3>& r = lastEvaluated_.r;
-    std::vector<Vector3>& v = lastEvaluated_.v;
-    r.resize(std::size_t(N + 1));
-    v.resize(std::size_t(N + 1));
-    unpack(state.nodes, N, r, v);
-    r[0] = attachment(B, p.p_BoQ_B);
-    r[N] = attachment(A, p.p_AoP_A);
-    v[0] = attachmentVelocity(B, p.p_BoQ_B);
-    v[N] = attachmentVelocity(A, p.p_AoP_A);
-    WaterMotion& water = lastEvaluated_.water;
-    waterMotion(flow, flowAcceleration, water);
-    NodeForces& f = lastEvaluated_.f;
-    nodeForces(p, L, r, v, r[0][2], f, &water);
-
-    MooringLineOutput out;
-    ConnectorResult& res = out.loads;
-    // The end nodes' own forces (their half segments' weight, buoyancy,
-    // drag, seabed) act on the bodies
-    res.A.f_W = -f.T[N - 1] * f.q[N - 1] + f.external[N];
-    res.B.f_W = f.T[0] * f.q[0] + f.external[0];
-    if (p.endInertia) {
-        // and their inertia: half a segment's mass and added mass moving
-        // with the attachment point
-        const auto inertia = [&](int i, const Vector3& a) {
-            const LineSection s = p.section(i == 0 ? 0 : L.sections.size() - 1);
-            const double l = s.length / s.segments;
-            const double area = 0.25 * pi * s.diameter * s.diameter;
-            const double added
-                = 0.5 * l * p.waterDensity * area * f.submerged[std::size_t(i)];
-            const Vector3& t = f.tangent[std::size_t(i)];
-            const double along = a.dot(t);
-            return Vector3(0.5 * l * s.massPerLength * a
-                           + added * s.normalAddedMass * (a - along * t)
-                           + added * s.tangentialAddedMass * along * t);
-        };
-        res.A.f_W -= inertia(N, state.aP);
-        res.B.f_W -= inertia(0, state.aQ);
-    }
-    res.A.m_Ko_W = g.p_AoP_W.cross(res.A.f_W);
-    res.B.m_Ko_W = g.p_BoQ_W.cross(res.B.f_W);
-    res.length = g.length;
-    res.lengthRate = g.lengthRate;
-    out.fairleadTension = res.A.f_W.norm();
-    out.anchorTension = res.B.f_W.norm();
-    res.tension = out.fairleadTension;
-    res.potentialEnergy = f.strainEnergy + f.seabedEnergy + f.gravityEnergy;
-    res.dissipatedPower = std::max(f.dissipatedPower, 0.0);
-    // l times the grounded segments (both nodes on the seabed), section
-    // by section
-    const auto grounded
-        = [&](int i) { return i == 0 || i == N || r[i][2] <= r[0][2]; };
-    for (const LineLayout::Section& c : L.sections) {
-        int count = 0;
-        for (int j = c.firstSegment;
-             p.seabedContact && j < c.firstSegment + c.segments; ++j) {
-            count += grounded(j) && grounded(j + 1);
-        }
-        out.groundedLength += c.l * count;
-    }
-    out.H = std::hypot(res.A.f_W[0], res.A.f_W[1]);
-    out.V = -res.A.f_W[2];
-    if (shapePoints == 1 || shapePoints < 0) {
-        throw std::invalid_argument(
-            "mooringLine: shapePoints must be 0 or >= 2");
-    }
-    for (int k = 0; k < shapePoints; ++k) {
-        const double u = L.nodeCoordinate(1.0 - double(k) / (shapePoints - 1));
-        const int i = std::min(int(u), N - 1);
-        const double f01 = u - i;
-        out.shape.push_back((1.0 - f01) * r[i] + f01 * r[i + 1]);
-        // tension: anchorTension at node 0, T_j at u = j + 1/2,
-        // fairleadTension at node N, linear between
-        double T = 0.0;
-        if (u <= 0.5) {
-            T = out.anchorTension + 2.0 * u * (f.T[0] - out.anchorTension);
-        } else if (u >= N - 0.5) {
-            T = f.T[N - 1]
-                + 2.0 * (u - (N - 0.5)) * (out.fairleadTension - f.T[N - 1]);
-        } else {
-            const int j = std::min(int(u - 0.5), N - 2);
-            const double g = u - 0.5 - j;
-            T = (1.0 - g) * f.T[j] + g * f.T[j + 1];
-        }
-        out.shapeTension.push_back(T);
-    }
-    out.sectionLowerTension = L.sectionEnds(f.T, false);
-    out.sectionUpperTension = L.sectionEnds(f.T, true);
-    for (const int i : L.jointNodes()) {
-        out.joints.push_back(r[std::size_t(i)]);
-    }
-    return out;
-}
-
-CvodeBdf::Statistics MooringLine::statistics() const
-{
-    return integrator_ ? integrator_->statistics() : trapezoidStatistics_;
 }
 
 } // namespace connectors

@@ -24,6 +24,22 @@ FmuInstance& instance(fmi2Component c)
     return *static_cast<FmuInstance*>(c);
 }
 
+//- An fmi2Get<Type>Status that knows one status kind: *value = answer()
+//  for `kind`, UsageError(`only`) for any other
+template <class Value, class Answer>
+fmi2Status status(fmi2Component c, const char* function, fmi2StatusKind s,
+                  fmi2StatusKind kind, const char* only, Value* value,
+                  Answer answer)
+{
+    return guarded(c, function, anyLiveState, [&] {
+        requireNonNull(value, "value");
+        if (s != kind) {
+            throw UsageError(only);
+        }
+        *value = answer();
+    });
+}
+
 } // namespace
 
 extern "C" {
@@ -99,13 +115,9 @@ FMU_EXPORT_UNSUPPORTED2(GetStatus, noPending, const fmi2StatusKind, fmi2Status*)
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s,
                              fmi2Real* value)
 {
-    return guarded(c, "fmi2GetRealStatus", anyLiveState, [&] {
-        requireNonNull(value, "value");
-        if (s != fmi2LastSuccessfulTime) {
-            throw UsageError("only fmi2LastSuccessfulTime is available");
-        }
-        *value = instance(c).time();
-    });
+    return status(c, "fmi2GetRealStatus", s, fmi2LastSuccessfulTime,
+                  "only fmi2LastSuccessfulTime is available", value,
+                  [&] { return instance(c).time(); });
 }
 
 FMU_EXPORT_UNSUPPORTED2(GetIntegerStatus,
@@ -115,13 +127,9 @@ FMU_EXPORT_UNSUPPORTED2(GetIntegerStatus,
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s,
                                 fmi2Boolean* value)
 {
-    return guarded(c, "fmi2GetBooleanStatus", anyLiveState, [&] {
-        requireNonNull(value, "value");
-        if (s != fmi2Terminated) {
-            throw UsageError("only fmi2Terminated is available");
-        }
-        *value = fmi2False;
-    });
+    return status(c, "fmi2GetBooleanStatus", s, fmi2Terminated,
+                  "only fmi2Terminated is available", value,
+                  [] { return fmi2False; });
 }
 
 FMU_EXPORT_UNSUPPORTED2(GetStringStatus, noPending, const fmi2StatusKind,

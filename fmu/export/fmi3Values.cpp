@@ -13,66 +13,54 @@ using fmuExport::Fmi3Instance;
 using fmuExport::guarded3;
 using fmuExport::readableState;
 using fmuExport::writableState;
+using Elements = std::vector<fmi2ValueReference>;
+
+//- values[k]: the table's Boolean elements as fmi3Boolean
+void getBooleans(fmuExport::FmuInstance& core, const Elements& e,
+                 fmi3Boolean values[])
+{
+    std::vector<fmi2Boolean> b(e.size());
+    core.getBoolean(e.data(), e.size(), b.data());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        values[k] = b[k] != fmi2False;
+    }
+}
+
+//- The Boolean variables are constants: FmuInstance refuses every one
+void setBooleans(fmuExport::FmuInstance& core, const Elements& e,
+                 const fmi3Boolean[])
+{
+    core.setBoolean(e.data(), e.size());
+}
 
 } // namespace
 
 extern "C" {
 
-fmi3Status fmi3GetFloat64(fmi3Instance instance,
-                          const fmi3ValueReference valueReferences[],
-                          size_t nValueReferences, fmi3Float64 values[],
-                          size_t nValues)
-{
-    return guarded3(
-        instance, "fmi3GetFloat64", readableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference>& e
-                = i.elements(valueReferences, nValueReferences, nValues);
-            i.core().getReal(e.data(), e.size(), values);
-        });
-}
+// The types the connectors declare: `call` with `core` (the instance's
+// FmuInstance), `e` (the table's value references of the elements) and
+// `values`
+#define FMU_EXPORT_VALUES(Type, mask, Values, call)                            \
+    fmi3Status fmi3##Type(                                                     \
+        fmi3Instance instance, const fmi3ValueReference valueReferences[],     \
+        size_t nValueReferences, Values values, size_t nValues)                \
+    {                                                                          \
+        return guarded3(instance, "fmi3" #Type, mask, [&](Fmi3Instance& i) {   \
+            fmuExport::FmuInstance& core = i.core();                           \
+            const Elements& e                                                  \
+                = i.elements(valueReferences, nValueReferences, nValues);      \
+            call;                                                              \
+        });                                                                    \
+    }
 
-fmi3Status fmi3SetFloat64(fmi3Instance instance,
-                          const fmi3ValueReference valueReferences[],
-                          size_t nValueReferences, const fmi3Float64 values[],
-                          size_t nValues)
-{
-    return guarded3(
-        instance, "fmi3SetFloat64", writableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference>& e
-                = i.elements(valueReferences, nValueReferences, nValues);
-            i.core().setReal(e.data(), e.size(), values);
-        });
-}
-
-fmi3Status fmi3GetBoolean(fmi3Instance instance,
-                          const fmi3ValueReference valueReferences[],
-                          size_t nValueReferences, fmi3Boolean values[],
-                          size_t nValues)
-{
-    return guarded3(
-        instance, "fmi3GetBoolean", readableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference>& e
-                = i.elements(valueReferences, nValueReferences, nValues);
-            std::vector<fmi2Boolean> b(e.size());
-            i.core().getBoolean(e.data(), e.size(), b.data());
-            for (std::size_t k = 0; k < b.size(); ++k) {
-                values[k] = b[k] != fmi2False;
-            }
-        });
-}
-
-fmi3Status fmi3SetBoolean(fmi3Instance instance,
-                          const fmi3ValueReference valueReferences[],
-                          size_t nValueReferences, const fmi3Boolean[],
-                          size_t nValues)
-{
-    return guarded3(
-        instance, "fmi3SetBoolean", writableState, [&](Fmi3Instance& i) {
-            const std::vector<fmi2ValueReference>& e
-                = i.elements(valueReferences, nValueReferences, nValues);
-            i.core().setBoolean(e.data(), e.size());
-        });
-}
+FMU_EXPORT_VALUES(GetFloat64, readableState, fmi3Float64*,
+                  core.getReal(e.data(), e.size(), values))
+FMU_EXPORT_VALUES(SetFloat64, writableState, const fmi3Float64*,
+                  core.setReal(e.data(), e.size(), values))
+FMU_EXPORT_VALUES(GetBoolean, readableState, fmi3Boolean*,
+                  getBooleans(core, e, values))
+FMU_EXPORT_VALUES(SetBoolean, writableState, const fmi3Boolean*,
+                  setBooleans(core, e, values))
 
 // The types no connector declares: every value reference is refused
 #define FMU_EXPORT_NO_VARIABLES(Type, mask, ...)                               \

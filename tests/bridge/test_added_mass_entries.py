@@ -179,6 +179,13 @@ def run_checks(prefix, checks):
     return report(results)
 
 
+def wrong_type(name, entry, value, expected, *more):
+    """The case of coupling entry `entry` given `value`: refused, saying
+    what it expects (and the further phrases `more`)."""
+    return (name, mesh_dict(coupling=f"coupling {{ {entry} {value}; }}"),
+            [f"coupling entry '{entry}' expects {expected}", *more])
+
+
 def main():
     valid_coupling = "addedMass, pressure, residual, addedMassInterval, maxIter, tolerance"
     cases = [
@@ -201,14 +208,10 @@ def main():
          ["unknown entry 'addedMassInterval'", "belongs in the coupling sub-dictionary"]),
         ("couplingNotADictionary", mesh_dict(coupling="coupling 5;"),
          ["entry 'coupling' must be a dictionary"]),
-        ("fractionalMaxIter", mesh_dict(coupling="coupling { maxIter 2.5; }"),
-         ["coupling entry 'maxIter' expects an integer, got '2.5'"]),
-        ("badSwitch", mesh_dict(coupling="coupling { addedMass maybe; }"),
-         ["coupling entry 'addedMass' expects a switch", "maybe"]),
-        ("wordTolerance", mesh_dict(coupling="coupling { tolerance small; }"),
-         ["coupling entry 'tolerance' expects a number, got 'small'"]),
-        ("listPressure", mesh_dict(coupling="coupling { pressure (p_rgh p); }"),
-         ["coupling entry 'pressure' expects the pressure field's name"]),
+        wrong_type("fractionalMaxIter", "maxIter", "2.5", "an integer, got '2.5'"),
+        wrong_type("badSwitch", "addedMass", "maybe", "a switch", "maybe"),
+        wrong_type("wordTolerance", "tolerance", "small", "a number, got 'small'"),
+        wrong_type("listPressure", "pressure", "(p_rgh p)", "the pressure field's name"),
         ("withoutCoeffsDictionary",
          mesh_dict(coeffs_extra="").replace("addedMassRigidBodyMotionCoeffs\n{", "").rstrip()[:-1]
          + "\naddedMassInteval 0;\n",

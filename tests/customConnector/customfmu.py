@@ -12,7 +12,7 @@ import tempfile
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 EXAMPLE = os.path.join(TOP, "examples", "customConnector")
 FMI_INCLUDE = os.path.join(TOP, "fmu", "include")
-FMI3_INCLUDE = os.path.join(FMI_INCLUDE, "fmi3")
+FMI3_INCLUDE = os.path.join(TOP, "fmu", "third_party", "fmi3")
 SOURCES = ("bungee.c", "modelDescription.xml", "Makefile")
 # The FMI 3.0 twin (make bungee3.fmu)
 SOURCES3 = ("bungee3.c", "fmi3/modelDescription.xml", "fmi3/terminalsAndIcons.xml", "Makefile")

@@ -173,11 +173,16 @@ addedMassRigidBodyMotionCoeffs
 # Global to body axes of the body's transform (OpenFOAM's E): +90 degrees
 TRANSFORM = {False: "(1 0 0 0 1 0 0 0 1)", True: "(0 1 0 -1 0 0 0 0 1)"}
 
+def with_value(condition, value="(0 0 0)"):
+    """A boundary condition of type `condition` with its uniform value."""
+    return f"type {condition}; value uniform {value};"
+
+
 FIELDS = {
     "U": ("volVectorField", "[0 1 -1 0 0 0 0]", "(0 0 0)", {
         "walls": "type noSlip;",
-        "body": "type movingWallVelocity; value uniform (0 0 0);",
-        "atmosphere": "type pressureInletOutletVelocity; value uniform (0 0 0);"}),
+        "body": with_value("movingWallVelocity"),
+        "atmosphere": with_value("pressureInletOutletVelocity")}),
     "p_rgh": ("volScalarField", "[1 -1 -2 0 0 0 0]", "0", {
         "walls": "type fixedFluxPressure;",
         "body": "type fixedFluxPressure;",
@@ -187,9 +192,9 @@ FIELDS = {
         "body": "type zeroGradient;",
         "atmosphere": "type inletOutlet; inletValue uniform 1; value uniform 1;"}),
     "pointDisplacement": ("pointVectorField", "[0 1 0 0 0 0 0]", "(0 0 0)", {
-        "walls": "type fixedValue; value uniform (0 0 0);",
-        "atmosphere": "type fixedValue; value uniform (0 0 0);",
-        "body": "type calculated; value uniform (0 0 0);"}),
+        "walls": with_value("fixedValue"),
+        "atmosphere": with_value("fixedValue"),
+        "body": with_value("calculated")}),
 }
 
 

@@ -63,41 +63,41 @@ TEST(MooringLineFlowInertiaFmu, AccelerationIsTheChangeOfTheFlowInputs)
         Instance in(fmu);
         ASSERT_EQ(start(fmu, in, flowInertia), fmi2OK) << in.lastMessage();
         connectors::MooringLine law(lawParameters());
-        connectors::MooringLineState s = startState(law);
-        const double h = 0.1;
         double largestChange = 0.0;
-        for (int k = 0; k < 30; ++k) {
-            const double t = k * h;
-            const std::vector<double> got = step(fmu, in, t, h);
-            const std::vector<Vector3> U = flowAt(t);
-            // the change since the last step's inputs over its length
-            // (none at the first step)
-            std::vector<Vector3> a;
-            if (k > 0 && flowInertia == 1.0) {
-                const std::vector<Vector3> before = flowAt(t - h);
-                for (std::size_t i = 0; i < U.size(); ++i) {
-                    a.push_back((U[i] - before[i]) / (t - (t - h)));
+        besideTheLaw(
+            law, 30,
+            [&](int k, double t, double h, connectors::MooringLineState& s) {
+                const std::vector<double> got = step(fmu, in, t, h);
+                const std::vector<Vector3> U = flowAt(t);
+                // the change since the last step's inputs over its length
+                // (none at the first step)
+                std::vector<Vector3> a;
+                if (k > 0 && flowInertia == 1.0) {
+                    const std::vector<Vector3> before = flowAt(t - h);
+                    for (std::size_t i = 0; i < U.size(); ++i) {
+                        a.push_back((U[i] - before[i]) / (t - (t - h)));
+                    }
                 }
-            }
-            law.advance(s, floater(t + h), BodyKinematics(), h, U, a);
-            const auto want
-                = law.evaluate(s, floater(t + h), BodyKinematics(), 11, U, a);
-            const auto without
-                = law.evaluate(s, floater(t + h), BodyKinematics(), 11, U);
-            // the same code in two binaries: 1e-5 of the tension
-            expectFloaterForceNear(got, want, k);
-            const double T = want.fairleadTension;
-            for (int i = 0; i < 11; ++i) {
-                EXPECT_NEAR(got[std::size_t(5 + 2 * i)],
-                            want.shapeTension[std::size_t(i)], 1e-5 * T)
-                    << k << " " << i;
-                EXPECT_NEAR(got[std::size_t(6 + 2 * i)],
-                            want.shape[std::size_t(i)][1], 1e-9)
-                    << k << " " << i;
-            }
-            largestChange = std::max(
-                largestChange, (want.loads.A.f_W - without.loads.A.f_W).norm());
-        }
+                law.advance(s, floater(t + h), BodyKinematics(), h, U, a);
+                const auto want = law.evaluate(s, floater(t + h),
+                                               BodyKinematics(), 11, U, a);
+                const auto without
+                    = law.evaluate(s, floater(t + h), BodyKinematics(), 11, U);
+                // the same code in two binaries: 1e-5 of the tension
+                expectFloaterForceNear(got, want, k);
+                const double T = want.fairleadTension;
+                for (int i = 0; i < 11; ++i) {
+                    EXPECT_NEAR(got[std::size_t(5 + 2 * i)],
+                                want.shapeTension[std::size_t(i)], 1e-5 * T)
+                        << k << " " << i;
+                    EXPECT_NEAR(got[std::size_t(6 + 2 * i)],
+                                want.shape[std::size_t(i)][1], 1e-9)
+                        << k << " " << i;
+                }
+                largestChange
+                    = std::max(largestChange,
+                               (want.loads.A.f_W - without.loads.A.f_W).norm());
+            });
         if (flowInertia == 1.0) {
             // the fairlead's half segment alone takes rho A l/2 (1 + Can)
             // a_n = 1025 x 7.85e-3 x 5 x 2 x 0.4 = 32 N across the line

@@ -75,6 +75,19 @@ startState(const connectors::MooringLine& law)
     return law.initialState(floater(0.0), BodyKinematics(), 0.0);
 }
 
+//- `steps` coupling steps of h = 0.1 s from t = 0 of `law` from its start
+//  state beside an FMU instance: step(k, t, h, s) takes step k of both,
+//  s the law's state; stops at the first fatal failure
+template <class Step>
+void besideTheLaw(connectors::MooringLine& law, int steps, Step&& step)
+{
+    connectors::MooringLineState s = startState(law);
+    const double h = 0.1;
+    for (int k = 0; k < steps; ++k) {
+        ASSERT_NO_FATAL_FAILURE(step(k, k * h, h, s));
+    }
+}
+
 //- The force on the floater `got[0..2]` equals the law's `want` at step
 //  `k`: the same code on the same doubles compiled into two binaries, so
 //  only instruction selection (FMA contraction) may differ, and CVODE

@@ -86,22 +86,21 @@ TEST(MooringLineFmu, IntegratorParametersReachTheLaw)
         p.integrator = c.integrator;
         p.maxStep = c.maxStep;
         connectors::MooringLine law(p);
-        connectors::MooringLineState s = startState(law);
-        const double h = 0.1;
         double largestDifference = 0.0;
-        for (int k = 0; k < 20; ++k) {
-            const double t = k * h;
-            const std::vector<double> got = step(fmu, in, t, h);
-            const std::vector<double> other = step(fmu, byDefault, t, h);
-            law.advance(s, floater(t + h), BodyKinematics(), h);
-            const double T
-                = law.evaluate(s, floater(t + h), BodyKinematics(), 0)
-                      .fairleadTension;
-            // the same code and doubles in two binaries (see above)
-            EXPECT_NEAR(got[17], T, 1e-5 * T) << k;
-            largestDifference
-                = std::max(largestDifference, std::abs(got[17] - other[17]));
-        }
+        besideTheLaw(
+            law, 20,
+            [&](int k, double t, double h, connectors::MooringLineState& s) {
+                const std::vector<double> got = step(fmu, in, t, h);
+                const std::vector<double> other = step(fmu, byDefault, t, h);
+                law.advance(s, floater(t + h), BodyKinematics(), h);
+                const double T
+                    = law.evaluate(s, floater(t + h), BodyKinematics(), 0)
+                          .fairleadTension;
+                // the same code and doubles in two binaries (see above)
+                EXPECT_NEAR(got[17], T, 1e-5 * T) << k;
+                largestDifference = std::max(largestDifference,
+                                             std::abs(got[17] - other[17]));
+            });
         // the setting changes the answer: a wrong mapping (the parameter
         // ignored) would give the default run's tensions to the bit
         EXPECT_GT(largestDifference, 0.0);

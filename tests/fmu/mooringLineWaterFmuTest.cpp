@@ -58,31 +58,30 @@ TEST(MooringLineWaterFmu, ParametersAndFlowInputsReachTheLaw)
     Instance in(fmu);
     ASSERT_EQ(initialise(fmu, in, water), fmi2OK) << in.lastMessage();
     connectors::MooringLine law(lawInWater());
-    connectors::MooringLineState s = startState(law);
-    const double h = 0.1;
-    for (int k = 0; k < 30; ++k) {
-        const double t = k * h;
-        ASSERT_EQ(in.set(inputs(floater(t + h), BodyKinematics())), fmi2OK);
-        ASSERT_EQ(in.set(flowInputs(flow)), fmi2OK);
-        ASSERT_EQ(fmu.api.DoStep(in.c, t, h, fmi2True), fmi2OK)
-            << in.lastMessage();
-        std::vector<double> got;
-        ASSERT_EQ(in.get(names(), got), fmi2OK);
-        law.advance(s, floater(t + h), BodyKinematics(), h, flow);
-        const auto want
-            = law.evaluate(s, floater(t + h), BodyKinematics(), 11, flow);
-        // the same code in two binaries: 1e-5 of the tension
-        expectFloaterForceNear(got, want, k);
-        const double T = want.fairleadTension;
-        for (int i = 0; i < 11; ++i) {
-            EXPECT_NEAR(got[std::size_t(5 + i)],
-                        want.shapeTension[std::size_t(i)], 1e-5 * T)
-                << k << " " << i;
-        }
-        // the ends of shape.tension are the end tensions (the same numbers)
-        EXPECT_EQ(got[5], got[3]);
-        EXPECT_EQ(got[15], got[4]);
-    }
+    besideTheLaw(
+        law, 30,
+        [&](int k, double t, double h, connectors::MooringLineState& s) {
+            ASSERT_EQ(in.set(inputs(floater(t + h), BodyKinematics())), fmi2OK);
+            ASSERT_EQ(in.set(flowInputs(flow)), fmi2OK);
+            ASSERT_EQ(fmu.api.DoStep(in.c, t, h, fmi2True), fmi2OK)
+                << in.lastMessage();
+            std::vector<double> got;
+            ASSERT_EQ(in.get(names(), got), fmi2OK);
+            law.advance(s, floater(t + h), BodyKinematics(), h, flow);
+            const auto want
+                = law.evaluate(s, floater(t + h), BodyKinematics(), 11, flow);
+            // the same code in two binaries: 1e-5 of the tension
+            expectFloaterForceNear(got, want, k);
+            const double T = want.fairleadTension;
+            for (int i = 0; i < 11; ++i) {
+                EXPECT_NEAR(got[std::size_t(5 + i)],
+                            want.shapeTension[std::size_t(i)], 1e-5 * T)
+                    << k << " " << i;
+            }
+            // the ends of shape.tension are the end tensions (the same numbers)
+            EXPECT_EQ(got[5], got[3]);
+            EXPECT_EQ(got[15], got[4]);
+        });
 }
 
 TEST(MooringLineWaterFmu, UniformFlowInputsEqualTheCurrent)

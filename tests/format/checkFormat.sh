@@ -1,13 +1,14 @@
 #!/bin/bash
 # Check that the project's C and C++ outside foam-fmi-bridge/ (OpenFOAM's
-# style) and fmu/include/ (the FMI standard's headers) is formatted by the
+# style), fmu/include/ (the FMI 2.0 declarations) and third_party/ folders
+# (files of others, copied unchanged) is formatted by the
 # root .clang-format. Prints the files that are not; fix them with
 #   clang-format -i <file>
 set -eu -o pipefail
 cd "${0%/*}/../.."
 
 mapfile -t files < <(git ls-files -- '*.c' '*.h' '*.cpp' '*.hpp' \
-    ':!:foam-fmi-bridge/**' ':!:fmu/include/**')
+    ':!:foam-fmi-bridge/**' ':!:fmu/include/**' ':!:**/third_party/**')
 if [ "${#files[@]}" -eq 0 ]; then
     echo "checkFormat: no source files found (not a git checkout?)" >&2
     exit 1

@@ -4,6 +4,7 @@
 #include "Errors.hpp"
 
 #include <sstream>
+#include <utility>
 
 namespace fmusim {
 
@@ -116,6 +117,20 @@ void applyBody(Body& body, const std::string& key, const Setting& s)
         body.phase = scalar(s);
 }
 
+// The keys of one number, and of one number taken as a count
+const std::pair<const char*, double TwoBodyConfig::*> numberKeys[] = {
+    {"start-time", &TwoBodyConfig::startTime},
+    {"stop-time", &TwoBodyConfig::stopTime},
+    {"step-size", &TwoBodyConfig::stepSize},
+    {"coupling-tolerance", &TwoBodyConfig::couplingTolerance},
+    {"initial-relaxation", &TwoBodyConfig::initialRelaxation},
+    {"timeout", &TwoBodyConfig::timeout},
+};
+const std::pair<const char*, int TwoBodyConfig::*> countKeys[] = {
+    {"write-every", &TwoBodyConfig::writeEvery},
+    {"max-coupling-iterations", &TwoBodyConfig::maxCouplingIterations},
+};
+
 void apply(TwoBodyConfig& c, const Setting& s)
 {
     const std::string& key = s.name;
@@ -123,26 +138,24 @@ void apply(TwoBodyConfig& c, const Setting& s)
         applyBody(key[0] == 'A' ? c.A : c.B, key.substr(2), s);
         if (key == "B.motion")
             c.bMotionGiven = true;
-    } else if (key == "start-time")
-        c.startTime = scalar(s);
-    else if (key == "stop-time")
-        c.stopTime = scalar(s);
-    else if (key == "step-size")
-        c.stepSize = scalar(s);
-    else if (key == "gravity")
+        return;
+    }
+    for (const auto& [name, member] : numberKeys) {
+        if (key == name) {
+            c.*member = scalar(s);
+            return;
+        }
+    }
+    for (const auto& [name, member] : countKeys) {
+        if (key == name) {
+            c.*member = static_cast<int>(scalar(s));
+            return;
+        }
+    }
+    if (key == "gravity")
         c.gravity = vector(s);
     else if (key == "output-file")
         c.outputFile = s.value;
-    else if (key == "write-every")
-        c.writeEvery = static_cast<int>(scalar(s));
-    else if (key == "coupling-tolerance")
-        c.couplingTolerance = scalar(s);
-    else if (key == "max-coupling-iterations")
-        c.maxCouplingIterations = static_cast<int>(scalar(s));
-    else if (key == "initial-relaxation")
-        c.initialRelaxation = scalar(s);
-    else if (key == "timeout")
-        c.timeout = scalar(s);
     else if (key == "isolation") {
         const std::optional<fmuImport::Isolation> isolation
             = toIsolation(s.value);

@@ -4,7 +4,7 @@
 #define FMUIMPORT_LIBRARY_HPP
 
 #include "fmi2FunctionTypes.h"
-#include "fmi3/fmi3FunctionTypes.h"
+#include "fmi3FunctionTypes.h"
 
 #include <string>
 

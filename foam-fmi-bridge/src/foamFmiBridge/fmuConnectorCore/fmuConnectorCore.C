@@ -17,14 +17,6 @@ namespace Foam
     defineTypeNameAndDebug(fmuConnectorCore, 0);
 }
 
-// * * * * * * * * * * * * * * * * * Kinematics  * * * * * * * * * * * * * * //
-
-Foam::fmuConnectorCore::kinematics Foam::fmuConnectorCore::kinematics::world()
-{
-    return kinematics{Zero, tensor::I, Zero, Zero};
-}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 std::string Foam::fmuConnectorCore::where() const

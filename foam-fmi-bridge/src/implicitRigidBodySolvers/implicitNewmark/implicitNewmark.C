@@ -229,7 +229,7 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::solve
 
     scalar residualNorm = 0;
     label nIter = 0;
-    converged_ = newton(a, tau, fx, qDdotPrev, residualNorm, nIter);
+    converged_ = newton(a, {tau, fx, qDdotPrev}, residualNorm, nIter);
 
     // The end-of-step state of the last iterate
     setTrialState(a);

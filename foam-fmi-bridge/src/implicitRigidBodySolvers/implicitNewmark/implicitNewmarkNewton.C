@@ -50,20 +50,18 @@ void Foam::RBD::rigidBodySolvers::implicitNewmark::setTrialState
 void Foam::RBD::rigidBodySolvers::implicitNewmark::residual
 (
     const scalarField& a,
-    const scalarField& tau,
-    const Field<spatialVector>& fx,
-    const scalarField& qDdotPrev,
+    const stepLoads& loads,
     scalarField& R
 )
 {
     setTrialState(a);
 
     // Body kinematics of the trial state, for the restraints
-    qDdot() = qDdotPrev;
+    qDdot() = loads.qDdotPrev;
     model_.forwardDynamicsCorrection(state());
 
-    scalarField rtau(tau);
-    Field<spatialVector> rfx(fx);
+    scalarField rtau(loads.tau);
+    Field<spatialVector> rfx(loads.fx);
     model_.applyRestraints(rtau, rfx, state());
 
     // Accelerations, relaxed towards qDdotPrev as the model specifies
@@ -78,9 +76,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::updateJacobian
 (
     const scalarField& a,
     const scalarField& R,
-    const scalarField& tau,
-    const Field<spatialVector>& fx,
-    const scalarField& qDdotPrev,
+    const stepLoads& loads,
     const scalar aScale
 )
 {
@@ -96,7 +92,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::updateJacobian
         ap[j] = a[j] + fdStep_*max(mag(a[j]), aScale);
         const scalar da = ap[j] - a[j];
 
-        residual(ap, tau, fx, qDdotPrev, Rp);
+        residual(ap, loads, Rp);
 
         for (label i = 0; i < n; ++i)
         {
@@ -139,9 +135,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::updateJacobian
 bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
 (
     scalarField& a,
-    const scalarField& tau,
-    const Field<spatialVector>& fx,
-    const scalarField& qDdotPrev,
+    const stepLoads& loads,
     scalar& residualNorm,
     label& nIter
 )
@@ -150,7 +144,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
     const scalar gScale = mag(model_.g());
 
     scalarField R(n);
-    residual(a, tau, fx, qDdotPrev, R);
+    residual(a, loads, R);
 
     // Acceleration scale of the convergence test and of the FD step
     auto scale = [&]()
@@ -203,7 +197,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
         bool fresh = false;
         if (jacobianDeltaT_ != deltaT() || jacobian_.m() != n)
         {
-            if (!updateJacobian(a, R, tau, fx, qDdotPrev, scale()))
+            if (!updateJacobian(a, R, loads, scale()))
             {
                 FatalErrorInFunction
                     << "Singular Newton matrix dR/da at t = " << state().t()
@@ -219,7 +213,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
 
         const scalarField R0(R);
         a += da;
-        residual(a, tau, fx, qDdotPrev, R);
+        residual(a, loads, R);
         ++nIter;
 
         const scalar newNorm = normInf(R);
@@ -238,7 +232,7 @@ bool Foam::RBD::rigidBodySolvers::implicitNewmark::newton
             if (nIter >= maxIter_)
             {
                 // Leave the restraints evaluated at the final iterate
-                residual(a, tau, fx, qDdotPrev, R);
+                residual(a, loads, R);
             }
             continue;
         }
