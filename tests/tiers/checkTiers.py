@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Checks that every CTest test of the build carries exactly one tier label
-(quick, cfd, long), as tests/CMakeLists.txt describes.
+(quick, cfd, long), and that the cfd and long tests run alone (RUN_SERIAL:
+./Alltest runs CTest on every core), as tests/CMakeLists.txt describes.
 
 Usage: checkTiers.py CTEST BUILD_DIR
 """
@@ -21,13 +22,17 @@ def main():
     counts = dict.fromkeys(TIERS, 0)
     problems = []
     for test in tests:
-        labels = next((p["value"] for p in test.get("properties", [])
-                       if p["name"] == "LABELS"), [])
+        properties = {p["name"]: p["value"] for p in test.get("properties", [])}
+        labels = properties.get("LABELS", [])
         tiers = [t for t in labels if t in TIERS]
         if len(tiers) != 1:
             problems.append(f"{test['name']}: tiers {tiers or 'none'} (labels {labels})")
-        else:
-            counts[tiers[0]] += 1
+            continue
+        counts[tiers[0]] += 1
+        alone = bool(properties.get("RUN_SERIAL", False))
+        if alone != (tiers[0] != "quick"):
+            problems.append(f"{test['name']}: a {tiers[0]} test with RUN_SERIAL"
+                            f" {alone}: cfd and long tests run alone, quick ones do not")
     if len(tests) < 100:
         problems.append(f"only {len(tests)} tests listed by {ctest} in {build}")
     for problem in problems:
