@@ -350,10 +350,13 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,
             std::vector<Vector3>& v)
 {
+    // through raw pointers (as nodeForces)
+    Vector3* const R = r.data();
+    Vector3* const V = v.data();
     for (int i = 1; i < N; ++i) {
         const double* y = nodes.data() + 6 * (i - 1);
-        r[i] = Vector3(y[0], y[1], y[2]);
-        v[i] = Vector3(y[3], y[4], y[5]);
+        R[i] = Vector3(y[0], y[1], y[2]);
+        V[i] = Vector3(y[3], y[4], y[5]);
     }
 }
 

@@ -30,27 +30,25 @@ bool sameBits(const std::vector<Vector3>& a, const std::vector<Vector3>& b)
                 == 0);
 }
 
-//- (mn (I - t t') + mt t t')^-1 F of a node's masses mn, mt and tangent t
-Vector3 massInverseTimes(double mn, double mt, const Vector3& t,
-                         const Vector3& F)
-{
-    return F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t;
-}
-
 } // namespace
 
 void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
                    const NodeForces& f0, std::vector<StartSegment>& segments)
 {
     segments.resize(std::size_t(layout.N));
+    // through raw pointers (as nodeForces)
+    StartSegment* const S = segments.data();
+    const Vector3* const R = r0.data();
+    const Vector3* const q = f0.q.data();
+    const double* const stretched = f0.stretched.data();
     for (const LineLayout::Section& c : layout.sections) {
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
             const std::size_t k = std::size_t(j);
-            StartSegment& s = segments[k];
-            s.dr = r0[k + 1] - r0[k];
-            s.length = f0.stretched[k];
+            StartSegment& s = S[k];
+            s.dr = R[k + 1] - R[k];
+            s.length = stretched[k];
             s.strain = s.length * c.inverseL - 1.0;
-            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain * f0.q[k])
+            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain * q[k])
                                     : Vector3::Zero();
         }
     }
@@ -275,6 +273,12 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         const Vector3* const d0 = w.d0.data();
         const Vector3* const d1 = w.d1.data();
         Vector3* const b = w.b.data(); // (swapped with w.chord below)
+        // (mn (I - t t') + mt t t')^-1 F of a node's masses mn, mt and tangent
+        // t (a lambda: inlined, where a function was not)
+        const auto inverseTimes = [](double mn, double mt, const Vector3& t,
+                                     const Vector3& F) {
+            return Vector3(F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t);
+        };
         for (std::size_t i = 1; i < n; ++i) {
             // the elastic tensions at the step's start and end replaced by
             // the discrete gradient, through the masses at the start and
@@ -284,9 +288,8 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
             const Vector3 residual = (v[i] - v0[i]) * inverseH
                 - 0.5
                     * (a0[i] + a1[i]
-                       + massInverseTimes(mn0[i], mt0[i], t0[i],
-                                          d0[i] - d0[i - 1])
-                       + massInverseTimes(mn, mt, t, d1[i] - d1[i - 1]));
+                       + inverseTimes(mn0[i], mt0[i], t0[i], d0[i] - d0[i - 1])
+                       + inverseTimes(mn, mt, t, d1[i] - d1[i - 1]));
             const double along = residual.dot(t);
             b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
         }
