@@ -69,11 +69,20 @@ double submergedHeight(const MooringLineParameters& p, double z, double l)
 
 } // namespace
 
-void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
-                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f, const WaterMotion* water,
-                bool diagnostics)
+namespace {
+
+//- nodeForces; general false: a line of one section (no joints, no
+//  points) without free surface, seabed friction or water motion, whose
+//  terms for those are left out at compile time (the same arithmetic)
+template <bool general>
+void forces(const MooringLineParameters& p, const LineLayout& layout,
+            const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+            double zb, NodeForces& f, const WaterMotion* givenWater,
+            bool diagnostics)
 {
+    const bool freeSurface = general && p.freeSurface;
+    const bool friction = general && p.seabedFriction > 0.0;
+    const WaterMotion* const water = general ? givenWater : nullptr;
     const int N = layout.N;
     const std::size_t n = std::size_t(N + 1);
     const std::size_t sections = layout.sections.size();
@@ -180,32 +189,32 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
     for (int i = 0; i <= N; ++i) {
         const LineLayout::Node& node = layout.nodes[std::size_t(i)];
         const double phi
-            = p.freeSurface ? submergedFraction(p, R[i][2], node.ramp) : 1.0;
+            = freeSurface ? submergedFraction(p, R[i][2], node.ramp) : 1.0;
         fSubmerged[i] = phi;
         // With seabedContact the seabed carries the anchor's half segment
         const bool carried = i == 0 && p.seabedContact;
         Vector3 E = Vector3::Zero();
         double wetHeightOfNode = 0.0;
-        if (p.freeSurface) {
+        if (freeSurface) {
             wetHeightOfNode = submergedHeight(p, R[i][2], node.ramp);
         }
-        for (int k = 0; k < node.pieces; ++k) {
+        for (int k = 0; k < (general ? node.pieces : 1); ++k) {
             const LineLayout::Node::Piece& c = node.piece[k];
             if (!carried) {
                 E[2] -= (c.dryWeight - c.buoyancy * phi) * c.share;
             }
             if (diagnostics) {
                 height[c.section] += c.share * R[i][2];
-                if (p.freeSurface) {
+                if (freeSurface) {
                     wetHeight[c.section] += c.share * wetHeightOfNode;
                 }
             }
         }
-        if (node.point >= 0) {
+        if (general && node.point >= 0) {
             E[2] -= node.pointWeight - node.pointBuoyancy * phi;
             pointEnergy += node.pointWeight * R[i][2]
                 - node.pointBuoyancy
-                    * (p.freeSurface ? wetHeightOfNode : R[i][2]);
+                    * (freeSurface ? wetHeightOfNode : R[i][2]);
         }
         if (onSeabed(i) && i != 0) {
             const double depth = zb - R[i][2];
@@ -234,7 +243,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             }
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)
-            if (p.seabedFriction > 0.0 && push > 0.0) {
+            if (friction && push > 0.0) {
                 const Vector3 vh(V[i][0], V[i][1], 0.0);
                 const double speed = vh.norm();
                 const double c = p.seabedFriction * push
@@ -264,7 +273,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         const Vector3 ut = along * t, un = u - ut;
         // drag factors of the pieces: c phi (stretched share)
         double cn = 0.0, ct = 0.0;
-        if (node.pieces == 1) {
+        if (!general || node.pieces == 1) {
             const LineLayout::Node::Piece& c = node.piece[0];
             const double stretchedShare = i == 0 ? 0.5 * fStretched[0]
                 : i == N                         ? 0.5 * fStretched[N - 1]
@@ -282,7 +291,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         }
         fNormalDrag[i] = cn * un.norm();
         fTangentialDrag[i] = ct * std::abs(along);
-        if (node.point >= 0) {
+        if (general && node.point >= 0) {
             // the point's drag, the same in every direction
             const double c = node.pointDrag * phi * u.norm();
             fNormalDrag[i] += c;
@@ -315,7 +324,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         for (std::size_t k = 0; k < sections; ++k) {
             const LineLayout::Section& c = layout.sections[k];
             f.gravityEnergy += c.dryWeight * height[k]
-                - c.buoyancy * (p.freeSurface ? wetHeight[k] : height[k]);
+                - c.buoyancy * (freeSurface ? wetHeight[k] : height[k]);
         }
         f.gravityEnergy += pointEnergy;
         for (int j = 0; j < N; ++j) {
@@ -344,6 +353,24 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         const Vector3& t = fTangent[i];
         // (mn (I - t t') + mt t t')^-1 F
         fA[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
+    }
+}
+
+} // namespace
+
+void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f, const WaterMotion* water,
+                bool diagnostics)
+{
+    const bool still = !water
+        || (!water->current && water->flow.empty()
+            && water->flowAcceleration.empty());
+    if (layout.sections.size() == 1 && !p.freeSurface
+        && !(p.seabedFriction > 0.0) && still) {
+        forces<false>(p, layout, r, v, zb, f, water, diagnostics);
+    } else {
+        forces<true>(p, layout, r, v, zb, f, water, diagnostics);
     }
 }
 
