@@ -73,12 +73,12 @@ namespace {
 
 //- nodeForces; general false: a line of one section (no joints, no
 //  points) without free surface, seabed friction or water motion, whose
-//  terms for those are left out at compile time (the same arithmetic)
-template <bool general>
+//  terms for those are left out at compile time (the same arithmetic);
+//  diagnostics as nodeForces' argument
+template <bool general, bool diagnostics>
 void forces(const MooringLineParameters& p, const LineLayout& layout,
             const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-            double zb, NodeForces& f, const WaterMotion* givenWater,
-            bool diagnostics)
+            double zb, NodeForces& f, const WaterMotion* givenWater)
 {
     const bool freeSurface = general && p.freeSurface;
     const bool friction = general && p.seabedFriction > 0.0;
@@ -368,9 +368,15 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             && water->flowAcceleration.empty());
     if (layout.sections.size() == 1 && !p.freeSurface
         && !(p.seabedFriction > 0.0) && still) {
-        forces<false>(p, layout, r, v, zb, f, water, diagnostics);
+        if (diagnostics) {
+            forces<false, true>(p, layout, r, v, zb, f, water);
+        } else {
+            forces<false, false>(p, layout, r, v, zb, f, water);
+        }
+    } else if (diagnostics) {
+        forces<true, true>(p, layout, r, v, zb, f, water);
     } else {
-        forces<true>(p, layout, r, v, zb, f, water, diagnostics);
+        forces<true, false>(p, layout, r, v, zb, f, water);
     }
 }
 
