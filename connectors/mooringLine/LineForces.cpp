@@ -69,11 +69,20 @@ double submergedHeight(const MooringLineParameters& p, double z, double l)
 
 } // namespace
 
-void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
-                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
-                double zb, NodeForces& f, const WaterMotion* water,
-                bool diagnostics)
+namespace {
+
+//- nodeForces; general false: a line of one section (no joints, no
+//  points) without free surface, seabed friction or water motion, whose
+//  terms for those are left out at compile time (the same arithmetic);
+//  diagnostics as nodeForces' argument
+template <bool general, bool diagnostics>
+void forces(const MooringLineParameters& p, const LineLayout& layout,
+            const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+            double zb, NodeForces& f, const WaterMotion* givenWater)
 {
+    const bool freeSurface = general && p.freeSurface;
+    const bool friction = general && p.seabedFriction > 0.0;
+    const WaterMotion* const water = general ? givenWater : nullptr;
     const int N = layout.N;
     const std::size_t n = std::size_t(N + 1);
     const std::size_t sections = layout.sections.size();
@@ -101,31 +110,51 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         f.friction.assign(n, 0.0);
         f.sliding.assign(n, Vector3::Zero());
     }
+    // f's and the positions' storage through raw pointers (Eigen's packet
+    // stores may alias anything: the vectors' data pointers would be
+    // reloaded after every store)
+    const Vector3* const R = r.data();
+    const Vector3* const V = v.data();
+    double* const fT = f.T.data();
+    Vector3* const fQ = f.q.data();
+    double* const fStretched = f.stretched.data();
+    Vector3* const fTangent = f.tangent.data();
+    Vector3* const fA = f.a.data();
+    Vector3* const fF = f.F.data();
+    Vector3* const fExternal = f.external.data();
+    double* const fSubmerged = f.submerged.data();
+    double* const fNormalDrag = f.normalDrag.data();
+    double* const fTangentialDrag = f.tangentialDrag.data();
+    Vector3* const fRelative = f.relative.data();
+    double* const fNormalMass = f.normalMass.data();
+    double* const fTangentialMass = f.tangentialMass.data();
+    double* const fFriction = f.friction.data();
+    Vector3* const fSliding = f.sliding.data();
     // accumulated in locals (f's fields would be reloaded after every
     // store through f's vectors)
     double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     // the ends count as grounded with seabedContact
     const auto onSeabed = [&](int i) {
-        return p.seabedContact && (i == 0 || i == N || r[i][2] <= zb);
+        return p.seabedContact && (i == 0 || i == N || R[i][2] <= zb);
     };
     // section by section, its constants in locals
     for (const LineLayout::Section& section : layout.sections) {
         const LineLayout::Section c = section;
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
             const double l = c.l;
-            const Vector3 dr = r[j + 1] - r[j];
+            const Vector3 dr = R[j + 1] - R[j];
             const double stretched = dr.norm();
-            f.stretched[j] = stretched;
+            fStretched[j] = stretched;
             if (stretched < 1e-12 * l) {
-                f.q[j].setZero();
-                f.T[j] = 0.0;
+                fQ[j].setZero();
+                fT[j] = 0.0;
                 continue;
             }
             const double inverseL = c.inverseL;
-            f.q[j] = dr * (1.0 / stretched);
+            fQ[j] = dr * (1.0 / stretched);
             const double strain = stretched * inverseL - 1.0;
-            const double strainRate = f.q[j].dot(v[j + 1] - v[j]) * inverseL;
-            f.T[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
+            const double strainRate = fQ[j].dot(V[j + 1] - V[j]) * inverseL;
+            fT[j] = c.EA * std::max(strain, 0.0) + c.BA * strainRate;
             if (diagnostics) {
                 strainEnergy += 0.5 * c.EA * std::max(strain, 0.0)
                     * std::max(strain, 0.0) * l;
@@ -151,44 +180,44 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
     // the nodes' unit tangents first: a short loop whose square roots and
     // divisions overlap from node to node
     for (int i = 0; i <= N; ++i) {
-        Vector3 t = i == 0 ? f.q[0]
-            : i == N       ? f.q[N - 1]
-                           : Vector3(r[i + 1] - r[i - 1]);
+        Vector3 t = i == 0 ? fQ[0]
+            : i == N       ? fQ[N - 1]
+                           : Vector3(R[i + 1] - R[i - 1]);
         const double tn = t.norm();
-        f.tangent[i] = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
+        fTangent[i] = tn > 0.0 ? Vector3(t * (1.0 / tn)) : Vector3::Zero();
     }
     for (int i = 0; i <= N; ++i) {
         const LineLayout::Node& node = layout.nodes[std::size_t(i)];
         const double phi
-            = p.freeSurface ? submergedFraction(p, r[i][2], node.ramp) : 1.0;
-        f.submerged[i] = phi;
+            = freeSurface ? submergedFraction(p, R[i][2], node.ramp) : 1.0;
+        fSubmerged[i] = phi;
         // With seabedContact the seabed carries the anchor's half segment
         const bool carried = i == 0 && p.seabedContact;
         Vector3 E = Vector3::Zero();
         double wetHeightOfNode = 0.0;
-        if (p.freeSurface) {
-            wetHeightOfNode = submergedHeight(p, r[i][2], node.ramp);
+        if (freeSurface) {
+            wetHeightOfNode = submergedHeight(p, R[i][2], node.ramp);
         }
-        for (int k = 0; k < node.pieces; ++k) {
+        for (int k = 0; k < (general ? node.pieces : 1); ++k) {
             const LineLayout::Node::Piece& c = node.piece[k];
             if (!carried) {
                 E[2] -= (c.dryWeight - c.buoyancy * phi) * c.share;
             }
             if (diagnostics) {
-                height[c.section] += c.share * r[i][2];
-                if (p.freeSurface) {
+                height[c.section] += c.share * R[i][2];
+                if (freeSurface) {
                     wetHeight[c.section] += c.share * wetHeightOfNode;
                 }
             }
         }
-        if (node.point >= 0) {
+        if (general && node.point >= 0) {
             E[2] -= node.pointWeight - node.pointBuoyancy * phi;
-            pointEnergy += node.pointWeight * r[i][2]
+            pointEnergy += node.pointWeight * R[i][2]
                 - node.pointBuoyancy
-                    * (p.freeSurface ? wetHeightOfNode : r[i][2]);
+                    * (freeSurface ? wetHeightOfNode : R[i][2]);
         }
         if (onSeabed(i) && i != 0) {
-            const double depth = zb - r[i][2];
+            const double depth = zb - R[i][2];
             // The damping engages over the depth at which the stiffness
             // carries the line's weight, so that the force grows from zero
             // as a node lands: a force that jumped to cb d l |vz| at the
@@ -196,7 +225,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
             const double damping = p.seabedDamping
                 * std::clamp(depth / node.restDepth, 0.0, 1.0);
             const double push = std::max(
-                node.contact(p.seabedStiffness * depth - damping * v[i][2]),
+                node.contact(p.seabedStiffness * depth - damping * V[i][2]),
                 0.0);
             E[2] += push;
             if (diagnostics) {
@@ -209,19 +238,19 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 // the whole stored energy's rate when a node leaving the
                 // seabed faster than the spring relaxes is not pushed
                 dissipatedPower
-                    += node.contact(p.seabedStiffness * depth) * v[i][2]
-                    - push * v[i][2];
+                    += node.contact(p.seabedStiffness * depth) * V[i][2]
+                    - push * V[i][2];
             }
             // Coulomb friction on the horizontal velocity, regularised:
             // mu push v / max(|v|, frictionVelocity)
-            if (p.seabedFriction > 0.0 && push > 0.0) {
-                const Vector3 vh(v[i][0], v[i][1], 0.0);
+            if (friction && push > 0.0) {
+                const Vector3 vh(V[i][0], V[i][1], 0.0);
                 const double speed = vh.norm();
                 const double c = p.seabedFriction * push
                     / std::max(speed, p.frictionVelocity);
-                f.friction[i] = c;
+                fFriction[i] = c;
                 if (speed > p.frictionVelocity) {
-                    f.sliding[i] = vh / speed;
+                    fSliding[i] = vh / speed;
                 }
                 E -= c * vh;
                 if (diagnostics) {
@@ -229,46 +258,46 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 }
             }
         }
-        const Vector3 t = f.tangent[i];
-        Vector3 u = -v[i]; // water velocity relative to the node
+        const Vector3 t = fTangent[i];
+        Vector3 u = -V[i]; // water velocity relative to the node
         if (water) {
             if (water->current) {
-                u += currentAt(p, r[i][2], zb);
+                u += currentAt(p, R[i][2], zb);
             }
             if (!water->flow.empty()) {
                 u += water->flow[std::size_t(i)];
             }
         }
-        f.relative[i] = u;
+        fRelative[i] = u;
         const double along = u.dot(t); // |ut| (t is a unit vector or 0)
         const Vector3 ut = along * t, un = u - ut;
         // drag factors of the pieces: c phi (stretched share)
         double cn = 0.0, ct = 0.0;
-        if (node.pieces == 1) {
+        if (!general || node.pieces == 1) {
             const LineLayout::Node::Piece& c = node.piece[0];
-            const double stretchedShare = i == 0 ? 0.5 * f.stretched[0]
-                : i == N                         ? 0.5 * f.stretched[N - 1]
-                         : 0.5 * (f.stretched[i - 1] + f.stretched[i]);
+            const double stretchedShare = i == 0 ? 0.5 * fStretched[0]
+                : i == N                         ? 0.5 * fStretched[N - 1]
+                         : 0.5 * (fStretched[i - 1] + fStretched[i]);
             const double wet = phi * stretchedShare;
             cn = c.cn * wet;
             ct = c.ct * wet;
         } else {
             const LineLayout::Node::Piece& below = node.piece[0];
             const LineLayout::Node::Piece& above = node.piece[1];
-            const double wetBelow = phi * (0.5 * f.stretched[i - 1]);
-            const double wetAbove = phi * (0.5 * f.stretched[i]);
+            const double wetBelow = phi * (0.5 * fStretched[i - 1]);
+            const double wetAbove = phi * (0.5 * fStretched[i]);
             cn = below.cn * wetBelow + above.cn * wetAbove;
             ct = below.ct * wetBelow + above.ct * wetAbove;
         }
-        f.normalDrag[i] = cn * un.norm();
-        f.tangentialDrag[i] = ct * std::abs(along);
-        if (node.point >= 0) {
+        fNormalDrag[i] = cn * un.norm();
+        fTangentialDrag[i] = ct * std::abs(along);
+        if (general && node.point >= 0) {
             // the point's drag, the same in every direction
             const double c = node.pointDrag * phi * u.norm();
-            f.normalDrag[i] += c;
-            f.tangentialDrag[i] += c;
+            fNormalDrag[i] += c;
+            fTangentialDrag[i] += c;
         }
-        const Vector3 drag = f.normalDrag[i] * un + f.tangentialDrag[i] * ut;
+        const Vector3 drag = fNormalDrag[i] * un + fTangentialDrag[i] * ut;
         E += drag;
         // power the drag takes from the line's motion relative to the water
         if (diagnostics) {
@@ -284,7 +313,7 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
                 * (node.flowInertiaN * (a - aAlong * t)
                    + node.flowInertiaT * aAlong * t);
         }
-        f.external[i] = E;
+        fExternal[i] = E;
     }
     f.strainEnergy = strainEnergy;
     f.seabedEnergy = seabedEnergy;
@@ -295,46 +324,72 @@ void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
         for (std::size_t k = 0; k < sections; ++k) {
             const LineLayout::Section& c = layout.sections[k];
             f.gravityEnergy += c.dryWeight * height[k]
-                - c.buoyancy * (p.freeSurface ? wetHeight[k] : height[k]);
+                - c.buoyancy * (freeSurface ? wetHeight[k] : height[k]);
         }
         f.gravityEnergy += pointEnergy;
         for (int j = 0; j < N; ++j) {
             f.groundedSegments += onSeabed(j) && onSeabed(j + 1);
         }
     }
-    f.normalMass[0] = f.tangentialMass[0] = f.normalMass[N]
-        = f.tangentialMass[N] = 0.0;
+    fNormalMass[0] = fTangentialMass[0] = fNormalMass[N] = fTangentialMass[N]
+        = 0.0;
     // the inverses of the last node's masses: the same at every node of a
     // section under water
     double mn1 = 0.0, mt1 = 0.0, inverseMn = 0.0, inverseMt = 0.0;
     for (int i = 1; i < N; ++i) {
         const LineLayout::Node& node = layout.nodes[std::size_t(i)];
-        const Vector3 F
-            = f.T[i] * f.q[i] - f.T[i - 1] * f.q[i - 1] + f.external[i];
-        f.F[i] = F;
-        const double mn = node.mass + node.addedN * f.submerged[i];
-        const double mt = node.mass + node.addedT * f.submerged[i];
-        f.normalMass[i] = mn;
-        f.tangentialMass[i] = mt;
+        const Vector3 F = fT[i] * fQ[i] - fT[i - 1] * fQ[i - 1] + fExternal[i];
+        fF[i] = F;
+        const double mn = node.mass + node.addedN * fSubmerged[i];
+        const double mt = node.mass + node.addedT * fSubmerged[i];
+        fNormalMass[i] = mn;
+        fTangentialMass[i] = mt;
         if (mn != mn1 || mt != mt1) {
             mn1 = mn;
             mt1 = mt;
             inverseMn = 1.0 / mn;
             inverseMt = 1.0 / mt;
         }
-        const Vector3& t = f.tangent[i];
+        const Vector3& t = fTangent[i];
         // (mn (I - t t') + mt t t')^-1 F
-        f.a[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
+        fA[i] = inverseMn * F + ((inverseMt - inverseMn) * F.dot(t)) * t;
+    }
+}
+
+} // namespace
+
+void nodeForces(const MooringLineParameters& p, const LineLayout& layout,
+                const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                double zb, NodeForces& f, const WaterMotion* water,
+                bool diagnostics)
+{
+    const bool still = !water
+        || (!water->current && water->flow.empty()
+            && water->flowAcceleration.empty());
+    if (layout.sections.size() == 1 && !p.freeSurface
+        && !(p.seabedFriction > 0.0) && still) {
+        if (diagnostics) {
+            forces<false, true>(p, layout, r, v, zb, f, water);
+        } else {
+            forces<false, false>(p, layout, r, v, zb, f, water);
+        }
+    } else if (diagnostics) {
+        forces<true, true>(p, layout, r, v, zb, f, water);
+    } else {
+        forces<true, false>(p, layout, r, v, zb, f, water);
     }
 }
 
 void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,
             std::vector<Vector3>& v)
 {
+    // through raw pointers (as nodeForces)
+    Vector3* const R = r.data();
+    Vector3* const V = v.data();
     for (int i = 1; i < N; ++i) {
         const double* y = nodes.data() + 6 * (i - 1);
-        r[i] = Vector3(y[0], y[1], y[2]);
-        v[i] = Vector3(y[3], y[4], y[5]);
+        R[i] = Vector3(y[0], y[1], y[2]);
+        V[i] = Vector3(y[3], y[4], y[5]);
     }
 }
 

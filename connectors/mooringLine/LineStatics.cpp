@@ -131,15 +131,20 @@ BlockTridiagonal staticStiffness(const MooringLineParameters& p,
 void TrapezoidMatrix::solve(std::vector<Vector3>& x) const
 {
     const std::size_t n = pivotInverse.size();
+    // through raw pointers: the data pointers are not reloaded after each
+    // store (Eigen's packet stores may alias anything)
+    Vector3* const X = x.data();
+    const Matrix3* const Gs = G.data();
+    const Matrix3* const inverses = pivotInverse.data();
     for (std::size_t i = 1; i < n; ++i) {
-        x[i] -= G[i - 1].transpose() * x[i - 1];
+        X[i] -= Gs[i - 1].transpose() * X[i - 1];
     }
     for (std::size_t k = n; k-- > 0;) {
-        Vector3 y = pivotInverse[k] * x[k];
+        Vector3 y = inverses[k] * X[k];
         if (k + 1 < n) {
-            y -= G[k] * x[k + 1];
+            y -= Gs[k] * X[k + 1];
         }
-        x[k] = y;
+        X[k] = y;
     }
 }
 

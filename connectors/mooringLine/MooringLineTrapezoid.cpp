@@ -30,27 +30,25 @@ bool sameBits(const std::vector<Vector3>& a, const std::vector<Vector3>& b)
                 == 0);
 }
 
-//- (mn (I - t t') + mt t t')^-1 F of a node's masses mn, mt and tangent t
-Vector3 massInverseTimes(double mn, double mt, const Vector3& t,
-                         const Vector3& F)
-{
-    return F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t;
-}
-
 } // namespace
 
 void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
                    const NodeForces& f0, std::vector<StartSegment>& segments)
 {
     segments.resize(std::size_t(layout.N));
+    // through raw pointers (as nodeForces)
+    StartSegment* const S = segments.data();
+    const Vector3* const R = r0.data();
+    const Vector3* const q = f0.q.data();
+    const double* const stretched = f0.stretched.data();
     for (const LineLayout::Section& c : layout.sections) {
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
             const std::size_t k = std::size_t(j);
-            StartSegment& s = segments[k];
-            s.dr = r0[k + 1] - r0[k];
-            s.length = f0.stretched[k];
+            StartSegment& s = S[k];
+            s.dr = R[k + 1] - R[k];
+            s.length = stretched[k];
             s.strain = s.length * c.inverseL - 1.0;
-            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain * f0.q[k])
+            s.pull = s.strain > 0.0 ? Vector3(c.EA * s.strain * q[k])
                                     : Vector3::Zero();
         }
     }
@@ -85,42 +83,49 @@ Vector3 meanPull(const LineLayout::Section& c, const StartSegment& s0,
     return pull;
 }
 
-//- The discrete gradient's force on every free node less the elastic
-//  tensions' at the step's start (into d0) and at its end (into d1),
-//  the ends at r (f: its forces), the start in `start` [N]; true when a
-//  segment is slack at one end of the step and taut at the other
+//- Segment j's discrete gradient pull on node j towards j + 1 less its
+//  elastic pull at the step's start (into d0[j]) and at its end (into
+//  d1[j]), the ends at r (f: its forces), the start in `start` [N]; node
+//  j + 1 feels the opposite. True when a segment is slack at one end of
+//  the step and taut at the other
 bool axialCorrections(const LineLayout& layout,
                       const std::vector<StartSegment>& start,
                       const std::vector<Vector3>& r, const NodeForces& f,
                       std::vector<Vector3>& d0, std::vector<Vector3>& d1)
 {
     const int N = layout.N;
-    d0.assign(std::size_t(N + 1), Vector3::Zero());
-    d1.assign(std::size_t(N + 1), Vector3::Zero());
+    d0.resize(std::size_t(N));
+    d1.resize(std::size_t(N));
+    // through raw pointers (as nodeForces)
+    Vector3* const D0 = d0.data();
+    Vector3* const D1 = d1.data();
+    const Vector3* const R = r.data();
+    const StartSegment* const S = start.data();
+    const double* const stretched = f.stretched.data();
     bool kink = false;
     for (const LineLayout::Section& c : layout.sections) {
         for (int j = c.firstSegment; j < c.firstSegment + c.segments; ++j) {
             const std::size_t k = std::size_t(j);
-            const StartSegment& s = start[k];
-            const Vector3 dr = r[k + 1] - r[k];
-            const double length = f.stretched[k];
+            const StartSegment& s = S[k];
+            const Vector3 dr = R[k + 1] - R[k];
+            const double length = stretched[k];
             const double strain = length * c.inverseL - 1.0;
             const double L = s.length + length;
             if (!(L > 0.0) || (s.strain <= 0.0 && strain <= 0.0)) {
-                continue; // slack throughout: no elastic tension at all
+                // slack throughout: no elastic tension at all
+                D0[k].setZero();
+                D1[k].setZero();
+                continue;
             }
             kink = kink || s.strain <= 0.0 || strain <= 0.0;
-            // the pulls on node j towards j + 1 (on node j + 1 the opposite)
             const Vector3 gradient
                 = axialGradient(c.EA, s.strain, strain).tension / L
                 * (s.dr + dr);
             const Vector3 end = strain > 0.0
                 ? Vector3(c.EA * strain / length * dr)
                 : Vector3::Zero();
-            d0[k] += gradient - s.pull;
-            d0[k + 1] -= gradient - s.pull;
-            d1[k] += gradient - end;
-            d1[k + 1] -= gradient - end;
+            D0[k] = gradient - s.pull;
+            D1[k] = gradient - end;
         }
     }
     return kink;
@@ -219,9 +224,14 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     w.r.resize(n + 1);
     w.v.resize(n + 1);
     endsAt(s1, w.r[0], w.v[0], w.r[n], w.v[n]);
+    // the loops through raw pointers (as nodeForces)
+    Vector3* const r = w.r.data();
+    Vector3* const v = w.v.data();
+    const Vector3* const r0 = w.r0.data();
+    const Vector3* const v0 = w.v0.data();
     for (std::size_t i = 1; i < n; ++i) {
-        w.r[i] = w.r0[i] + h * w.v0[i] + 0.5 * h * h * a0[i];
-        w.v[i] = w.v0[i] + h * a0[i];
+        r[i] = r0[i] + h * v0[i] + 0.5 * h * h * a0[i];
+        v[i] = v0[i] + h * a0[i];
     }
     // the shortest segment (the only one without sections)
     const double l = layout_.shortest;
@@ -253,21 +263,35 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         ++trapezoidStatistics_.rhsEvaluations;
         const bool kink
             = axialCorrections(layout_, w.start, w.r, w.f, w.d0, w.d1);
+        const Vector3* const a1 = w.f.a.data();
+        const Vector3* const t0 = f0->tangent.data();
+        const Vector3* const t1 = w.f.tangent.data();
+        const double* const mn0 = f0->normalMass.data();
+        const double* const mt0 = f0->tangentialMass.data();
+        const double* const mn1 = w.f.normalMass.data();
+        const double* const mt1 = w.f.tangentialMass.data();
+        const Vector3* const d0 = w.d0.data();
+        const Vector3* const d1 = w.d1.data();
+        Vector3* const b = w.b.data(); // (swapped with w.chord below)
+        // (mn (I - t t') + mt t t')^-1 F of a node's masses mn, mt and tangent
+        // t (a lambda: inlined, where a function was not)
+        const auto inverseTimes = [](double mn, double mt, const Vector3& t,
+                                     const Vector3& F) {
+            return Vector3(F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t);
+        };
         for (std::size_t i = 1; i < n; ++i) {
             // the elastic tensions at the step's start and end replaced by
             // the discrete gradient, through the masses at the start and
-            // the end
-            const Vector3& t = w.f.tangent[i];
-            const double mn = w.f.normalMass[i], mt = w.f.tangentialMass[i];
-            const Vector3 residual = (w.v[i] - w.v0[i]) * inverseH
+            // the end (node i: segment i's pull less segment i - 1's)
+            const Vector3& t = t1[i];
+            const double mn = mn1[i], mt = mt1[i];
+            const Vector3 residual = (v[i] - v0[i]) * inverseH
                 - 0.5
-                    * (a0[i] + w.f.a[i]
-                       + massInverseTimes(f0->normalMass[i],
-                                          f0->tangentialMass[i], f0->tangent[i],
-                                          w.d0[i])
-                       + massInverseTimes(mn, mt, t, w.d1[i]));
+                    * (a0[i] + a1[i]
+                       + inverseTimes(mn0[i], mt0[i], t0[i], d0[i] - d0[i - 1])
+                       + inverseTimes(mn, mt, t, d1[i] - d1[i - 1]));
             const double along = residual.dot(t);
-            w.b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
+            b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
         }
         if (iteration == 0 && newton
             && serves(*newton, h, kink, parameters_, layout_, w.r, w.f, zb)) {
@@ -294,11 +318,13 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
         }
         double largest = 0.0;
         bool finite = true;
+        const Vector3* const correction = w.b.data();
         for (std::size_t i = 1; i < n; ++i) {
-            w.r[i] += w.b[i - 1];
-            w.v[i] += (2.0 / h) * w.b[i - 1];
-            largest = std::max(largest, w.b[i - 1].lpNorm<Eigen::Infinity>());
-            finite = finite && w.b[i - 1].allFinite();
+            r[i] += correction[i - 1];
+            v[i] += (2.0 / h) * correction[i - 1];
+            largest = std::max(largest,
+                               correction[i - 1].lpNorm<Eigen::Infinity>());
+            finite = finite && correction[i - 1].allFinite();
         }
         if (!finite) {
             break;
