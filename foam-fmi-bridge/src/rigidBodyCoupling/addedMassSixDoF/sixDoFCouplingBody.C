@@ -5,24 +5,28 @@
 #include "sixDoFCouplingBody.H"
 #include "Time.H"
 #include "forces.H"
+#include "quaternion.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::vector Foam::sixDoFCouplingBody::rotationVector(const tensor& R)
 {
-    // sin(angle) times the axis, from the antisymmetric part
-    const vector s
-    (
-        0.5*(R.zy() - R.yz()),
-        0.5*(R.xz() - R.zx()),
-        0.5*(R.yx() - R.xy())
-    );
-    const scalar sinAngle = mag(s);
-    if (sinAngle < SMALL)
+    // OpenFOAM's quaternion of R, w = cos(angle/2) and v = sin(angle/2)
+    // times the axis, taken with w >= 0 for the angle in [0, pi]. Near pi
+    // its axis comes from the symmetric part of R, where the antisymmetric
+    // part, sin(angle) times the axis, is lost to round-off
+    quaternion q(R);
+    if (q.w() < 0)
     {
-        return s;
+        q = -q;
     }
-    return atan2(sinAngle, 0.5*(tr(R) - 1))/sinAngle*s;
+
+    const scalar sinHalfAngle = mag(q.v());
+    if (sinHalfAngle < VSMALL)
+    {
+        return Zero;
+    }
+    return 2*atan2(sinHalfAngle, q.w())/sinHalfAngle*q.v();
 }
 
 
