@@ -15,7 +15,13 @@ test_added_mass_entries (2 x 2 x 2 cells, the bottom the body's patch):
     and writes it on unchanged (test mode estimates none: the matrix must
     come from the state, digit for digit); a matrix of another size, and a
     state without the added mass when the coupling is on, stop the restart
-    naming the entry.
+    naming the entry;
+  - the state carries the last step's mean velocities and their change
+    (the coupling's accelerations), analytic for the body falling from
+    rest: a restart goes on from them as the uninterrupted run does, a
+    state without them (written before they were kept) restarts from the
+    state's velocities with a note in the log, one with some of them only
+    stops naming the one missing.
 
 addedMassSixDoFRigidBodyDisplacement (the point-patch condition of
 0/pointDisplacement, mesh moved by displacementLaplacian) is built by
@@ -96,6 +102,41 @@ boundaryField
 """
 
 
+# The body falls from rest under g alone (test mode). Its state starts
+# with no acceleration, so Newmark (beta 1/4, gamma 1/2) moves it by
+# g dt^2/4 in the first step of dt, to the velocity g dt/2, and by
+# g dt^2 in the second: mean velocities g dt/4 and g dt, changes per dt
+# g/4 from rest and 3 g/4. A restart that takes the state's velocity
+# (g dt/2) for the first step's mean velocity gets g/2 in the second step.
+G = -9.81
+DT = 0.01
+MEANS = ("meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
+         "meanAcceleration")
+
+
+def close(values, expected):
+    """Equal to 1e-9 of the largest magnitude: the state is written with
+    12 digits, and a restart's mean acceleration divides the difference of
+    two such mean velocities (0.1 m/s, rounded by 1e-13) by dt 0.01 s,
+    1e-11 of 7 m/s^2; the restart without the means is 1/3 off."""
+    scale = max(max(abs(e) for e in expected), 1e-300)
+    return values is not None and len(values) == len(expected) and all(
+        abs(v - e) <= 1e-9 * scale for v, e in zip(values, expected))
+
+
+def means_check(path, velocity, acceleration):
+    """(ok, detail): the state file's mean velocities and accelerations are
+    those of the fall: the last step's mean velocity and its change per dt
+    as given (z) [m/s, m/s^2]."""
+    with open(path) as f:
+        text = f.read()
+    got = {key: state_entry(text, key) for key in MEANS}
+    expected = {"meanAngularVelocity": [0, 0, 0], "meanVelocity": [0, 0, velocity],
+                "meanAngularAcceleration": [0, 0, 0], "meanAcceleration": [0, 0, acceleration]}
+    ok = all(close(got[key], expected[key]) for key in MEANS)
+    return ok, "" if ok else f", {path} carries {got}, expected {expected}"
+
+
 def matrix(n, scale):
     """An n x n matrix in OpenFOAM's form, distinct digits in every place."""
     rows = [" ".join(f"{scale * (1 + i) + 0.001 * j:.6g}" for j in range(n)) for i in range(n)]
@@ -125,14 +166,22 @@ def restart_checks(work):
     ok, detail = ran(code, log)
     results.append(("run to restart from", ok and os.path.exists(os.path.join(full, "0.01", STATE)),
                     detail))
+    if ok:
+        # the first step from rest, then the second
+        first, more = means_check(os.path.join(full, "0.01", STATE), 0.25 * G * DT, 0.25 * G)
+        second, more2 = means_check(os.path.join(full, "0.02", STATE), G * DT, 0.75 * G)
+        results.append(("the state's mean velocities and accelerations", first and second,
+                        detail + more + more2))
 
-    def restart(name, added, mesh_dict=solver_dict()):
+    def restart(name, added, mesh_dict=solver_dict(), drop=()):
         case = os.path.join(work, name)
         shutil.copytree(full, case)
         shutil.rmtree(os.path.join(case, "0.02"))
         path = os.path.join(case, "0.01", STATE)
         with open(path) as f:
             state = f.read()
+        for key in drop:
+            state = re.sub(rf"^\s*{key}\s[^;]*;\n", "", state, flags=re.M)
         with open(path, "w") as f:
             f.write(state.replace("// *", added + "\n// *", 1) if added else state)
         with open(os.path.join(case, "constant", "dynamicMeshDict"), "w") as f:
@@ -158,6 +207,25 @@ def restart_checks(work):
         ok = same
         detail += "" if same else f", 0.02 carries addedMassBody {again}"
     results.append(("restart goes on with the state's added mass", ok, detail))
+    if os.path.exists(written):
+        # as the uninterrupted run: the second step's change 3 g/4, no note
+        ok, more = means_check(written, G * DT, 0.75 * G)
+        ok = ok and "has no meanAngularVelocity" not in log
+        results.append(("restart goes on from the state's mean velocities", ok,
+                        f"exit code {code}" + more))
+
+    case, code, log = restart("withoutMeans", "", drop=MEANS)
+    ok, detail = ran(code, log)
+    note = "has no meanAngularVelocity, meanVelocity" in log and "restart is not exact" in log
+    if ok:
+        ok, more = means_check(os.path.join(case, "0.02", STATE), G * DT, 0.5 * G)
+        ok = ok and note
+        detail += more + ("" if note else ", no note in the log:\n" + log[-2500:])
+    results.append(("a state without the mean velocities (before they were kept)", ok, detail))
+
+    _, code, log = restart("someMeans", "", drop=MEANS[:1])
+    results.append(("a state with some of the mean velocities",
+                    *refused(code, log, ["'meanAngularVelocity'", STATE])))
 
     _, code, log = restart("wrongSize", f"addedMassBody {matrix(12, 1.0)};")
     results.append(("a state's added mass of another size",

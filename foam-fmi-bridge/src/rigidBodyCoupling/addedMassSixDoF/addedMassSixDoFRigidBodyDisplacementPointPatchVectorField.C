@@ -126,6 +126,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     }
 
     coupling_ = newCoupling(dict);
+    body_.readRestartState(dict, this->internalField().objectPath());
 
     // Without a value (fixedValuePointPatchField read it when given: a
     // second read of a written, nonuniform value fails), the displacement
@@ -159,7 +160,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     g_(ptf.g_),
     curTimeIndex_(-1),
     couplingDict_(ptf.couplingDict_),
-    body_(motion_, p.name()),
+    body_(motion_, p.name(), ptf.body_),
     coupling_(ptf.coupling_)
 {}
 
@@ -180,7 +181,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     g_(ptf.g_),
     curTimeIndex_(-1),
     couplingDict_(ptf.couplingDict_),
-    body_(motion_, ptf.patch().name()),
+    body_(motion_, ptf.patch().name(), ptf.body_),
     coupling_(ptf.coupling_)
 {}
 
@@ -311,6 +312,12 @@ void Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::write
         couplingDict_.writeEntry("coupling", os);
     }
     coupling_->writeState(os);
+    dictionary means;
+    body_.writeState(means);
+    for (const entry& e : means)
+    {
+        e.write(os);
+    }
 
     initialPoints_.writeEntry("initialPoints", os);
 

@@ -6,6 +6,32 @@
 #include "Time.H"
 #include "forces.H"
 #include "quaternion.H"
+#include "restartFiles.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The state's entries of the previous step's mean angular and linear
+//  velocity [1/s, m/s] and accelerations [1/s^2, m/s^2]
+const Foam::wordList meanEntries
+({
+    "meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
+    "meanAcceleration"
+});
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::sixDoFCouplingBody::motionStateEntries
+({
+    "centreOfRotation", "orientation", "velocity", "acceleration",
+    "angularMomentum", "torque"
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -40,6 +66,31 @@ void Foam::sixDoFCouplingBody::meanVelocities
 {
     omega = rotationVector(s.Q() & state0_.Q().T())/dt;
     v = (s.centreOfRotation() - state0_.centreOfRotation())/dt;
+}
+
+
+bool Foam::sixDoFCouplingBody::nextMeans
+(
+    const scalar dt,
+    vector& omegaMean,
+    vector& vMean,
+    vector& alpha,
+    vector& a
+) const
+{
+    if (solved_)
+    {
+        meanVelocities(motion_.state(), dt, omegaMean, vMean);
+        alpha = (omegaMean - omegaMean0_)/dt;
+        a = (vMean - vMean0_)/dt;
+        return true;
+    }
+
+    omegaMean = omegaMean0_;
+    vMean = vMean0_;
+    alpha = alphaPrev_;
+    a = aPrev_;
+    return meansKnown_;
 }
 
 
@@ -87,31 +138,64 @@ Foam::sixDoFCouplingBody::sixDoFCouplingBody
     vMean0_(Zero),
     momentAdd_(Zero),
     forceAdd_(Zero),
-    originAdd_(Zero)
+    originAdd_(Zero),
+    meansKnown_(false),
+    meansRead_(false)
 {}
+
+
+Foam::sixDoFCouplingBody::sixDoFCouplingBody
+(
+    sixDoFRigidBodyMotion& motion,
+    const word& name,
+    const sixDoFCouplingBody& b
+)
+:
+    sixDoFCouplingBody(motion, name)
+{
+    // The means the next time step of b starts from, as a restart reads
+    // them
+    meansKnown_ = b.nextMeans
+    (
+        b.motion_.time().deltaTValue(),
+        omegaMean0_,
+        vMean0_,
+        alphaPrev_,
+        aPrev_
+    );
+    meansRead_ = meansKnown_;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::sixDoFCouplingBody::newTime()
 {
-    const sixDoFRigidBodyMotionState& s = motion_.state();
     if (solved_)
     {
-        const scalar dt = motion_.time().deltaT0Value();
-        vector omegaMean, vMean;
-        meanVelocities(s, dt, omegaMean, vMean);
-        alphaPrev_ = (omegaMean - omegaMean0_)/dt;
-        aPrev_ = (vMean - vMean0_)/dt;
+        vector omegaMean, vMean, alpha, a;
+        nextMeans
+        (
+            motion_.time().deltaT0Value(),
+            omegaMean,
+            vMean,
+            alpha,
+            a
+        );
         omegaMean0_ = omegaMean;
         vMean0_ = vMean;
+        alphaPrev_ = alpha;
+        aPrev_ = a;
     }
-    else
+    else if (!meansRead_)
     {
         // No step before: the velocities of the state
+        const sixDoFRigidBodyMotionState& s = motion_.state();
         omegaMean0_ = s.Q() & (inv(motion_.momentOfInertia()) & s.pi());
         vMean0_ = s.v();
     }
+    meansKnown_ = true;
+    meansRead_ = false;
 
     motion_.newTime();
     state0_ = motion_.state();
@@ -176,6 +260,72 @@ void Foam::sixDoFCouplingBody::reportSolve()
         forceAdd_,
         momentAdd_ + ((originAdd_ - motion_.centreOfRotation()) ^ forceAdd_)
     );
+}
+
+
+bool Foam::sixDoFCouplingBody::readState(const dictionary& state)
+{
+    label nFound = 0;
+    for (const word& key : meanEntries)
+    {
+        nFound += state.found(key, keyType::LITERAL);
+    }
+    if (nFound == 0)
+    {
+        return false;
+    }
+
+    // All or none: readEntry names the one missing
+    state.readEntry(meanEntries[0], omegaMean0_, keyType::LITERAL);
+    state.readEntry(meanEntries[1], vMean0_, keyType::LITERAL);
+    state.readEntry(meanEntries[2], alphaPrev_, keyType::LITERAL);
+    state.readEntry(meanEntries[3], aPrev_, keyType::LITERAL);
+    meansKnown_ = true;
+    meansRead_ = true;
+    return true;
+}
+
+
+void Foam::sixDoFCouplingBody::readRestartState
+(
+    const dictionary& state,
+    const fileName& file
+)
+{
+    const Time& t = motion_.time();
+    if (!readState(state) && restartFiles::restarted(t, t.timeName()))
+    {
+        Info<< name_ << ": the restart state " << file << " has no "
+            << meanEntries[0] << ", " << meanEntries[1] << ", "
+            << meanEntries[2] << ", " << meanEntries[3]
+            << " (written before the coupling kept them): the first time"
+            << " step takes the state's velocities for the previous step's"
+            << " mean velocities and zero for its accelerations, so the"
+            << " restart is not exact" << endl;
+    }
+}
+
+
+void Foam::sixDoFCouplingBody::writeState(dictionary& state) const
+{
+    vector omegaMean, vMean, alpha, a;
+    if
+    (
+        nextMeans
+        (
+            motion_.time().deltaTValue(),
+            omegaMean,
+            vMean,
+            alpha,
+            a
+        )
+    )
+    {
+        state.add(meanEntries[0], omegaMean);
+        state.add(meanEntries[1], vMean);
+        state.add(meanEntries[2], alpha);
+        state.add(meanEntries[3], a);
+    }
 }
 
 
