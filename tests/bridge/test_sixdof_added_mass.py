@@ -27,7 +27,10 @@ addedMassSixDoFRigidBodyDisplacement (the point-patch condition of
 0/pointDisplacement, mesh moved by displacementLaplacian) is built by
 moveDynamicMesh with no time step (it needs the fluid's loads to move): its
 entries are accepted, a written (nonuniform) value is read as a restart
-reads it, and the same bad entries stop it.
+reads it, and the same bad entries stop it. A restart from a field file
+whose patch entry lacks the added mass (the coupling on) or the motion's
+state stops with a FatalIOError naming the file, the patch, the entry and
+what was expected; one without the mean velocities goes on with a note.
 """
 import os
 import re
@@ -238,6 +241,61 @@ def restart_checks(work):
     return results
 
 
+RESTART_STATE = {
+    "centreOfRotation": "(0.5 0.5 -0.000245)", "orientation": "(1 0 0 0 1 0 0 0 1)",
+    "velocity": "(0 0 -0.049)", "acceleration": "(0 0 -9.81)",
+    "angularMomentum": "(0 0 0)", "torque": "(0 0 0)", "addedMass": matrix(6, 1.0),
+    "meanAngularVelocity": "(0 0 0)", "meanVelocity": "(0 0 -0.0245)",
+    "meanAngularAcceleration": "(0 0 0)", "meanAcceleration": "(0 0 -2.45)",
+}
+
+
+def patch_restart_checks(work):
+    """(name, ok, detail) of point-patch restarts from a time 0.01 whose
+    field file has the entries of RESTART_STATE but those dropped."""
+    libs = 'libs ("libfoamFmiRigidBodyCoupling.so");\n'
+
+    def restart(name, drop=(), coupling="coupling { addedMassInterval 5; }"):
+        entries = " ".join(f"{k} {v};" for k, v in RESTART_STATE.items() if k not in drop)
+        case = make_case(work, name, PATCH_MESH_DICT, patch_displacement(coupling),
+                         end_time="0.01", libs=libs)
+        os.makedirs(os.path.join(case, "0.01"))
+        with open(os.path.join(case, "0", "pointDisplacement")) as f:
+            text = f.read()
+        with open(os.path.join(case, "0.01", "pointDisplacement"), "w") as f:
+            value = "value uniform (0 0 0);\n"
+            f.write(text.replace(value, entries + "\n" + value, 1))
+        control = os.path.join(case, "system", "controlDict")
+        with open(control) as f:
+            text = f.read()
+        with open(control, "w") as f:
+            f.write(text.replace("startFrom startTime;", "startFrom latestTime;"))
+        return run(case)
+
+    field = os.path.join("0.01", "pointDisplacement")
+    note = "has no meanAngularVelocity"
+    results = []
+    code, log = restart("patchRestart")
+    ok, detail = ran(code, log)
+    results.append(("patchRestart", ok and note not in log, detail))
+    code, log = restart("patchRestartWithoutMeans", drop=MEANS)
+    ok, detail = ran(code, log)
+    ok = ok and note in log and field in log
+    results.append(("patchRestartWithoutMeans (a note)", ok,
+                    detail + ("" if ok else "\n" + log[-2500:])))
+    code, log = restart("patchRestartWithoutAddedMass", drop=("addedMass",))
+    results.append(("patchRestartWithoutAddedMass", *refused(code, log, [
+        field, "patch 'body' lacks 'addedMass'", "the added mass in use, a 6 x 6 matrix"])))
+    code, log = restart("patchRestartWithoutOrientation", drop=("orientation",))
+    results.append(("patchRestartWithoutOrientation", *refused(code, log, [
+        field, "patch 'body' lacks 'orientation'",
+        "the motion's state (centreOfRotation, orientation, velocity"])))
+    code, log = restart("patchRestartAddedMassOff", drop=("addedMass",),
+                        coupling="coupling { addedMass off; }")
+    results.append(("patchRestartAddedMassOff (no added mass needed)", *ran(code, log)))
+    return results
+
+
 def main():
     libs = 'libs ("libfoamFmiRigidBodyCoupling.so");\n'
     solver_cases = [
@@ -284,7 +342,8 @@ def main():
         return (run_cases(solver_cases, lambda name, text: make_case(work, name, text))
                 + run_cases(patch_cases, lambda name, text: make_case(
                     work, name, PATCH_MESH_DICT, text, end_time="0", libs=libs))
-                + restart_checks(work))
+                + restart_checks(work)
+                + patch_restart_checks(work))
 
     return run_checks("sixDoFAddedMass.", checks)
 

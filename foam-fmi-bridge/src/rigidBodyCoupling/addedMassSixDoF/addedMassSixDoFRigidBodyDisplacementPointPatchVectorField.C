@@ -15,6 +15,7 @@
 #include "fvMesh.H"
 #include "volFields.H"
 #include "uniformDimensionedFields.H"
+#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -65,6 +66,61 @@ Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::newCoupling
         rhoInf_
     );
     return coupling;
+}
+
+
+void Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::
+checkRestart
+(
+    const dictionary& dict
+) const
+{
+    const Time& t = db().time();
+    if (!restartFiles::restarted(t, t.timeName()))
+    {
+        return;
+    }
+
+    wordList entries(sixDoFCouplingBody::motionStateEntries);
+    if (coupling_->addedMass())
+    {
+        entries.append("addedMass");
+    }
+
+    for (const word& key : entries)
+    {
+        if (!dict.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << typeName << ": the restart from t = " << t.timeName()
+                << " reads the field file "
+                << this->internalField().objectPath() << ", whose entry of"
+                << " patch '" << this->patch().name() << "' lacks '" << key
+                << "': expected ";
+            if (key == "addedMass")
+            {
+                FatalIOError
+                    << "the added mass in use, a 6 x 6 matrix, which this"
+                    << " condition writes with the coupling's addedMass on"
+                    << " (a time written by OpenFOAM's"
+                    << " sixDoFRigidBodyDisplacement has none)";
+            }
+            else
+            {
+                const wordList& state = sixDoFCouplingBody::motionStateEntries;
+                FatalIOError<< "the motion's state (" << state[0];
+                for (label i = 1; i < state.size(); ++i)
+                {
+                    FatalIOError<< ", " << state[i];
+                }
+                FatalIOError<< "), which this condition writes";
+            }
+            FatalIOError
+                << ". Restart from a time written with the added-mass"
+                << " coupling, or start the run anew from its initial time"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -126,6 +182,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     }
 
     coupling_ = newCoupling(dict);
+    checkRestart(dict);
     body_.readRestartState(dict, this->internalField().objectPath());
 
     // Without a value (fixedValuePointPatchField read it when given: a
