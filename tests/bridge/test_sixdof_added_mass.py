@@ -324,6 +324,9 @@ def main():
         ("patchMisspelt", patch_displacement("momentOfInertai (1 1 1);"),
          ["unknown entry 'momentOfInertai'", "did you mean 'momentOfInertia'",
           "OpenFOAM's sixDoFRigidBodyDisplacement's"]),
+        # the means the condition writes are its entries too
+        ("patchMisspeltMean", patch_displacement("meanVelocty (0 0 0);"),
+         ["unknown entry 'meanVelocty'", "did you mean 'meanVelocity'"]),
         ("patchRelaxation", patch_displacement("accelerationRelaxation 0.7;"),
          ["accelerationRelaxation 0.7 with the added-mass coupling"]),
         ("patchTolerance", patch_displacement("coupling { tolerance 2; }"),

@@ -35,7 +35,8 @@ const Foam::wordList openFoamEntries
     "torque"
 });
 
-//- The added mass as the condition writes it
+//- The added mass as the condition writes it (and the body's means:
+//  sixDoFCouplingBody::meanEntries)
 const Foam::wordList stateEntries({"addedMass", "addedMassBody"});
 
 } // End anonymous namespace
@@ -55,8 +56,10 @@ Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::newCoupling
         refCast<const fvMesh>(this->internalField().mesh()()),
         "rigidBodyCoupling." + this->patch().name()
     );
+    wordList written(stateEntries);
+    written.append(sixDoFCouplingBody::meanEntries);
     coupling->read(dict, "sixDoFRigidBodyDisplacement", openFoamEntries,
-        stateEntries);
+        written);
     coupling->readState(dict, 1);
 
     coupling->setPatches

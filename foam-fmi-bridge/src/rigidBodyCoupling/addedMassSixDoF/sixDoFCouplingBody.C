@@ -8,28 +8,19 @@
 #include "quaternion.H"
 #include "restartFiles.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The state's entries of the previous step's mean angular and linear
-//  velocity [1/s, m/s] and accelerations [1/s^2, m/s^2]
-const Foam::wordList meanEntries
-({
-    "meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
-    "meanAcceleration"
-});
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::wordList Foam::sixDoFCouplingBody::motionStateEntries
 ({
     "centreOfRotation", "orientation", "velocity", "acceleration",
     "angularMomentum", "torque"
+});
+
+
+const Foam::wordList Foam::sixDoFCouplingBody::meanEntries
+({
+    "meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
+    "meanAcceleration"
 });
 
 
