@@ -63,25 +63,28 @@ void Foam::sixDoFCouplingBody::meanVelocities
 bool Foam::sixDoFCouplingBody::nextMeans
 (
     const scalar dt,
-    vector& omegaMean,
-    vector& vMean,
-    vector& alpha,
-    vector& a
+    FixedList<vector, 4>& means
 ) const
 {
     if (solved_)
     {
-        meanVelocities(motion_.state(), dt, omegaMean, vMean);
-        alpha = (omegaMean - omegaMean0_)/dt;
-        a = (vMean - vMean0_)/dt;
+        meanVelocities(motion_.state(), dt, means[0], means[1]);
+        means[2] = (means[0] - omegaMean0_)/dt;
+        means[3] = (means[1] - vMean0_)/dt;
         return true;
     }
 
-    omegaMean = omegaMean0_;
-    vMean = vMean0_;
-    alpha = alphaPrev_;
-    a = aPrev_;
+    means = FixedList<vector, 4>({omegaMean0_, vMean0_, alphaPrev_, aPrev_});
     return meansKnown_;
+}
+
+
+void Foam::sixDoFCouplingBody::setMeans(const FixedList<vector, 4>& means)
+{
+    omegaMean0_ = means[0];
+    vMean0_ = means[1];
+    alphaPrev_ = means[2];
+    aPrev_ = means[3];
 }
 
 
@@ -146,15 +149,10 @@ Foam::sixDoFCouplingBody::sixDoFCouplingBody
 {
     // The means the next time step of b starts from, as a restart reads
     // them
-    meansKnown_ = b.nextMeans
-    (
-        b.motion_.time().deltaTValue(),
-        omegaMean0_,
-        vMean0_,
-        alphaPrev_,
-        aPrev_
-    );
+    FixedList<vector, 4> means;
+    meansKnown_ = b.nextMeans(b.motion_.time().deltaTValue(), means);
     meansRead_ = meansKnown_;
+    setMeans(means);
 }
 
 
@@ -164,19 +162,9 @@ void Foam::sixDoFCouplingBody::newTime()
 {
     if (solved_)
     {
-        vector omegaMean, vMean, alpha, a;
-        nextMeans
-        (
-            motion_.time().deltaT0Value(),
-            omegaMean,
-            vMean,
-            alpha,
-            a
-        );
-        omegaMean0_ = omegaMean;
-        vMean0_ = vMean;
-        alphaPrev_ = alpha;
-        aPrev_ = a;
+        FixedList<vector, 4> means;
+        nextMeans(motion_.time().deltaT0Value(), means);
+        setMeans(means);
     }
     else if (!meansRead_)
     {
@@ -267,10 +255,12 @@ bool Foam::sixDoFCouplingBody::readState(const dictionary& state)
     }
 
     // All or none: readEntry names the one missing
-    state.readEntry(meanEntries[0], omegaMean0_, keyType::LITERAL);
-    state.readEntry(meanEntries[1], vMean0_, keyType::LITERAL);
-    state.readEntry(meanEntries[2], alphaPrev_, keyType::LITERAL);
-    state.readEntry(meanEntries[3], aPrev_, keyType::LITERAL);
+    FixedList<vector, 4> means;
+    forAll(meanEntries, i)
+    {
+        state.readEntry(meanEntries[i], means[i], keyType::LITERAL);
+    }
+    setMeans(means);
     meansKnown_ = true;
     meansRead_ = true;
     return true;
@@ -299,23 +289,13 @@ void Foam::sixDoFCouplingBody::readRestartState
 
 void Foam::sixDoFCouplingBody::writeState(dictionary& state) const
 {
-    vector omegaMean, vMean, alpha, a;
-    if
-    (
-        nextMeans
-        (
-            motion_.time().deltaTValue(),
-            omegaMean,
-            vMean,
-            alpha,
-            a
-        )
-    )
+    FixedList<vector, 4> means;
+    if (nextMeans(motion_.time().deltaTValue(), means))
     {
-        state.add(meanEntries[0], omegaMean);
-        state.add(meanEntries[1], vMean);
-        state.add(meanEntries[2], alpha);
-        state.add(meanEntries[3], a);
+        forAll(meanEntries, i)
+        {
+            state.add(meanEntries[i], means[i]);
+        }
     }
 }
 
