@@ -15,13 +15,22 @@ test_added_mass_entries (2 x 2 x 2 cells, the bottom the body's patch):
     and writes it on unchanged (test mode estimates none: the matrix must
     come from the state, digit for digit); a matrix of another size, and a
     state without the added mass when the coupling is on, stop the restart
-    naming the entry.
+    naming the entry;
+  - the state carries the last step's mean velocities and their change
+    (the coupling's accelerations), analytic for the body falling from
+    rest: a restart goes on from them as the uninterrupted run does, a
+    state without them (written before they were kept) restarts from the
+    state's velocities with a note in the log, one with some of them only
+    stops naming the one missing.
 
 addedMassSixDoFRigidBodyDisplacement (the point-patch condition of
 0/pointDisplacement, mesh moved by displacementLaplacian) is built by
 moveDynamicMesh with no time step (it needs the fluid's loads to move): its
 entries are accepted, a written (nonuniform) value is read as a restart
-reads it, and the same bad entries stop it.
+reads it, and the same bad entries stop it. A restart from a field file
+whose patch entry lacks the added mass (the coupling on) or the motion's
+state stops with a FatalIOError naming the file, the patch, the entry and
+what was expected; one without the mean velocities goes on with a note.
 """
 import os
 import re
@@ -96,6 +105,41 @@ boundaryField
 """
 
 
+# The body falls from rest under g alone (test mode). Its state starts
+# with no acceleration, so Newmark (beta 1/4, gamma 1/2) moves it by
+# g dt^2/4 in the first step of dt, to the velocity g dt/2, and by
+# g dt^2 in the second: mean velocities g dt/4 and g dt, changes per dt
+# g/4 from rest and 3 g/4. A restart that takes the state's velocity
+# (g dt/2) for the first step's mean velocity gets g/2 in the second step.
+G = -9.81
+DT = 0.01
+MEANS = ("meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
+         "meanAcceleration")
+
+
+def close(values, expected):
+    """Equal to 1e-9 of the largest magnitude: the state is written with
+    12 digits, and a restart's mean acceleration divides the difference of
+    two such mean velocities (0.1 m/s, rounded by 1e-13) by dt 0.01 s,
+    1e-11 of 7 m/s^2; the restart without the means is 1/3 off."""
+    scale = max(max(abs(e) for e in expected), 1e-300)
+    return values is not None and len(values) == len(expected) and all(
+        abs(v - e) <= 1e-9 * scale for v, e in zip(values, expected))
+
+
+def means_check(path, velocity, acceleration):
+    """(ok, detail): the state file's mean velocities and accelerations are
+    those of the fall: the last step's mean velocity and its change per dt
+    as given (z) [m/s, m/s^2]."""
+    with open(path) as f:
+        text = f.read()
+    got = {key: state_entry(text, key) for key in MEANS}
+    expected = {"meanAngularVelocity": [0, 0, 0], "meanVelocity": [0, 0, velocity],
+                "meanAngularAcceleration": [0, 0, 0], "meanAcceleration": [0, 0, acceleration]}
+    ok = all(close(got[key], expected[key]) for key in MEANS)
+    return ok, "" if ok else f", {path} carries {got}, expected {expected}"
+
+
 def matrix(n, scale):
     """An n x n matrix in OpenFOAM's form, distinct digits in every place."""
     rows = [" ".join(f"{scale * (1 + i) + 0.001 * j:.6g}" for j in range(n)) for i in range(n)]
@@ -125,14 +169,22 @@ def restart_checks(work):
     ok, detail = ran(code, log)
     results.append(("run to restart from", ok and os.path.exists(os.path.join(full, "0.01", STATE)),
                     detail))
+    if ok:
+        # the first step from rest, then the second
+        first, more = means_check(os.path.join(full, "0.01", STATE), 0.25 * G * DT, 0.25 * G)
+        second, more2 = means_check(os.path.join(full, "0.02", STATE), G * DT, 0.75 * G)
+        results.append(("the state's mean velocities and accelerations", first and second,
+                        detail + more + more2))
 
-    def restart(name, added, mesh_dict=solver_dict()):
+    def restart(name, added, mesh_dict=solver_dict(), drop=()):
         case = os.path.join(work, name)
         shutil.copytree(full, case)
         shutil.rmtree(os.path.join(case, "0.02"))
         path = os.path.join(case, "0.01", STATE)
         with open(path) as f:
             state = f.read()
+        for key in drop:
+            state = re.sub(rf"^\s*{key}\s[^;]*;\n", "", state, flags=re.M)
         with open(path, "w") as f:
             f.write(state.replace("// *", added + "\n// *", 1) if added else state)
         with open(os.path.join(case, "constant", "dynamicMeshDict"), "w") as f:
@@ -158,6 +210,25 @@ def restart_checks(work):
         ok = same
         detail += "" if same else f", 0.02 carries addedMassBody {again}"
     results.append(("restart goes on with the state's added mass", ok, detail))
+    if os.path.exists(written):
+        # as the uninterrupted run: the second step's change 3 g/4, no note
+        ok, more = means_check(written, G * DT, 0.75 * G)
+        ok = ok and "has no meanAngularVelocity" not in log
+        results.append(("restart goes on from the state's mean velocities", ok,
+                        f"exit code {code}" + more))
+
+    case, code, log = restart("withoutMeans", "", drop=MEANS)
+    ok, detail = ran(code, log)
+    note = "has no meanAngularVelocity, meanVelocity" in log and "restart is not exact" in log
+    if ok:
+        ok, more = means_check(os.path.join(case, "0.02", STATE), G * DT, 0.5 * G)
+        ok = ok and note
+        detail += more + ("" if note else ", no note in the log:\n" + log[-2500:])
+    results.append(("a state without the mean velocities (before they were kept)", ok, detail))
+
+    _, code, log = restart("someMeans", "", drop=MEANS[:1])
+    results.append(("a state with some of the mean velocities",
+                    *refused(code, log, ["'meanAngularVelocity'", STATE])))
 
     _, code, log = restart("wrongSize", f"addedMassBody {matrix(12, 1.0)};")
     results.append(("a state's added mass of another size",
@@ -167,6 +238,61 @@ def restart_checks(work):
     ok = code != 0 and "lacks its entry 'addedMass'" in log
     results.append(("coupling on, state without the added mass", ok,
                     f"exit code {code}" + ("" if ok else "\n" + log[-2500:])))
+    return results
+
+
+RESTART_STATE = {
+    "centreOfRotation": "(0.5 0.5 -0.000245)", "orientation": "(1 0 0 0 1 0 0 0 1)",
+    "velocity": "(0 0 -0.049)", "acceleration": "(0 0 -9.81)",
+    "angularMomentum": "(0 0 0)", "torque": "(0 0 0)", "addedMass": matrix(6, 1.0),
+    "meanAngularVelocity": "(0 0 0)", "meanVelocity": "(0 0 -0.0245)",
+    "meanAngularAcceleration": "(0 0 0)", "meanAcceleration": "(0 0 -2.45)",
+}
+
+
+def patch_restart_checks(work):
+    """(name, ok, detail) of point-patch restarts from a time 0.01 whose
+    field file has the entries of RESTART_STATE but those dropped."""
+    libs = 'libs ("libfoamFmiRigidBodyCoupling.so");\n'
+
+    def restart(name, drop=(), coupling="coupling { addedMassInterval 5; }"):
+        entries = " ".join(f"{k} {v};" for k, v in RESTART_STATE.items() if k not in drop)
+        case = make_case(work, name, PATCH_MESH_DICT, patch_displacement(coupling),
+                         end_time="0.01", libs=libs)
+        os.makedirs(os.path.join(case, "0.01"))
+        with open(os.path.join(case, "0", "pointDisplacement")) as f:
+            text = f.read()
+        with open(os.path.join(case, "0.01", "pointDisplacement"), "w") as f:
+            value = "value uniform (0 0 0);\n"
+            f.write(text.replace(value, entries + "\n" + value, 1))
+        control = os.path.join(case, "system", "controlDict")
+        with open(control) as f:
+            text = f.read()
+        with open(control, "w") as f:
+            f.write(text.replace("startFrom startTime;", "startFrom latestTime;"))
+        return run(case)
+
+    field = os.path.join("0.01", "pointDisplacement")
+    note = "has no meanAngularVelocity"
+    results = []
+    code, log = restart("patchRestart")
+    ok, detail = ran(code, log)
+    results.append(("patchRestart", ok and note not in log, detail))
+    code, log = restart("patchRestartWithoutMeans", drop=MEANS)
+    ok, detail = ran(code, log)
+    ok = ok and note in log and field in log
+    results.append(("patchRestartWithoutMeans (a note)", ok,
+                    detail + ("" if ok else "\n" + log[-2500:])))
+    code, log = restart("patchRestartWithoutAddedMass", drop=("addedMass",))
+    results.append(("patchRestartWithoutAddedMass", *refused(code, log, [
+        field, "patch 'body' lacks 'addedMass'", "the added mass in use, a 6 x 6 matrix"])))
+    code, log = restart("patchRestartWithoutOrientation", drop=("orientation",))
+    results.append(("patchRestartWithoutOrientation", *refused(code, log, [
+        field, "patch 'body' lacks 'orientation'",
+        "the motion's state (centreOfRotation, orientation, velocity"])))
+    code, log = restart("patchRestartAddedMassOff", drop=("addedMass",),
+                        coupling="coupling { addedMass off; }")
+    results.append(("patchRestartAddedMassOff (no added mass needed)", *ran(code, log)))
     return results
 
 
@@ -198,6 +324,9 @@ def main():
         ("patchMisspelt", patch_displacement("momentOfInertai (1 1 1);"),
          ["unknown entry 'momentOfInertai'", "did you mean 'momentOfInertia'",
           "OpenFOAM's sixDoFRigidBodyDisplacement's"]),
+        # the means the condition writes are its entries too
+        ("patchMisspeltMean", patch_displacement("meanVelocty (0 0 0);"),
+         ["unknown entry 'meanVelocty'", "did you mean 'meanVelocity'"]),
         ("patchRelaxation", patch_displacement("accelerationRelaxation 0.7;"),
          ["accelerationRelaxation 0.7 with the added-mass coupling"]),
         ("patchTolerance", patch_displacement("coupling { tolerance 2; }"),
@@ -216,7 +345,8 @@ def main():
         return (run_cases(solver_cases, lambda name, text: make_case(work, name, text))
                 + run_cases(patch_cases, lambda name, text: make_case(
                     work, name, PATCH_MESH_DICT, text, end_time="0", libs=libs))
-                + restart_checks(work))
+                + restart_checks(work)
+                + patch_restart_checks(work))
 
     return run_checks("sixDoFAddedMass.", checks)
 

@@ -15,6 +15,7 @@
 #include "fvMesh.H"
 #include "volFields.H"
 #include "uniformDimensionedFields.H"
+#include "restartFiles.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -34,7 +35,8 @@ const Foam::wordList openFoamEntries
     "torque"
 });
 
-//- The added mass as the condition writes it
+//- The added mass as the condition writes it (and the body's means:
+//  sixDoFCouplingBody::meanEntries)
 const Foam::wordList stateEntries({"addedMass", "addedMassBody"});
 
 } // End anonymous namespace
@@ -54,8 +56,10 @@ Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::newCoupling
         refCast<const fvMesh>(this->internalField().mesh()()),
         "rigidBodyCoupling." + this->patch().name()
     );
+    wordList written(stateEntries);
+    written.append(sixDoFCouplingBody::meanEntries);
     coupling->read(dict, "sixDoFRigidBodyDisplacement", openFoamEntries,
-        stateEntries);
+        written);
     coupling->readState(dict, 1);
 
     coupling->setPatches
@@ -65,6 +69,61 @@ Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::newCoupling
         rhoInf_
     );
     return coupling;
+}
+
+
+void Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::
+checkRestart
+(
+    const dictionary& dict
+) const
+{
+    const Time& t = db().time();
+    if (!restartFiles::restarted(t, t.timeName()))
+    {
+        return;
+    }
+
+    wordList entries(sixDoFCouplingBody::motionStateEntries);
+    if (coupling_->addedMass())
+    {
+        entries.append("addedMass");
+    }
+
+    for (const word& key : entries)
+    {
+        if (!dict.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << typeName << ": the restart from t = " << t.timeName()
+                << " reads the field file "
+                << this->internalField().objectPath() << ", whose entry of"
+                << " patch '" << this->patch().name() << "' lacks '" << key
+                << "': expected ";
+            if (key == "addedMass")
+            {
+                FatalIOError
+                    << "the added mass in use, a 6 x 6 matrix, which this"
+                    << " condition writes with the coupling's addedMass on"
+                    << " (a time written by OpenFOAM's"
+                    << " sixDoFRigidBodyDisplacement has none)";
+            }
+            else
+            {
+                const wordList& state = sixDoFCouplingBody::motionStateEntries;
+                FatalIOError<< "the motion's state (" << state[0];
+                for (label i = 1; i < state.size(); ++i)
+                {
+                    FatalIOError<< ", " << state[i];
+                }
+                FatalIOError<< "), which this condition writes";
+            }
+            FatalIOError
+                << ". Restart from a time written with the added-mass"
+                << " coupling, or start the run anew from its initial time"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -126,6 +185,8 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     }
 
     coupling_ = newCoupling(dict);
+    checkRestart(dict);
+    body_.readRestartState(dict, this->internalField().objectPath());
 
     // Without a value (fixedValuePointPatchField read it when given: a
     // second read of a written, nonuniform value fails), the displacement
@@ -159,7 +220,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     g_(ptf.g_),
     curTimeIndex_(-1),
     couplingDict_(ptf.couplingDict_),
-    body_(motion_, p.name()),
+    body_(motion_, p.name(), ptf.body_),
     coupling_(ptf.coupling_)
 {}
 
@@ -180,7 +241,7 @@ addedMassSixDoFRigidBodyDisplacementPointPatchVectorField
     g_(ptf.g_),
     curTimeIndex_(-1),
     couplingDict_(ptf.couplingDict_),
-    body_(motion_, ptf.patch().name()),
+    body_(motion_, ptf.patch().name(), ptf.body_),
     coupling_(ptf.coupling_)
 {}
 
@@ -311,6 +372,12 @@ void Foam::addedMassSixDoFRigidBodyDisplacementPointPatchVectorField::write
         couplingDict_.writeEntry("coupling", os);
     }
     coupling_->writeState(os);
+    dictionary means;
+    body_.writeState(means);
+    for (const entry& e : means)
+    {
+        e.write(os);
+    }
 
     initialPoints_.writeEntry("initialPoints", os);
 

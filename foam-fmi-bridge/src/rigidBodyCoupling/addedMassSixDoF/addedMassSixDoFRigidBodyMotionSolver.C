@@ -52,13 +52,6 @@ const Foam::wordList openFoamEntries
     "angularMomentum", "torque"
 });
 
-//- The entries of the motion's state file
-const Foam::wordList stateEntries
-({
-    "centreOfRotation", "orientation", "velocity", "acceleration",
-    "angularMomentum", "torque"
-});
-
 } // End anonymous namespace
 
 
@@ -97,7 +90,7 @@ addedMassSixDoFRigidBodyMotionSolver
     (
         restartCoeffs
         (
-            stateEntries,
+            sixDoFCouplingBody::motionStateEntries,
             "the six-DoF state of addedMassSixDoFRigidBodyMotion"
         ),
         initialState(),
@@ -128,6 +121,14 @@ addedMassSixDoFRigidBodyMotionSolver
     }
 
     readCouplingState(1);
+    if (stateIO().typeHeaderOk<IOdictionary>(true))
+    {
+        body_.readRestartState
+        (
+            IOdictionary(stateIO()),
+            stateIO().objectPath()
+        );
+    }
     coupling_.setPatches
     (
         List<labelHashSet>(1, patchSet_),
@@ -240,6 +241,7 @@ void Foam::addedMassSixDoFRigidBodyMotionSolver::writeMotionState
 ) const
 {
     motion_.state().write(state);
+    body_.writeState(state);
 }
 
 

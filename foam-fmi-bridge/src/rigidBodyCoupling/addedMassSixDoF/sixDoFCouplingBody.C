@@ -5,24 +5,45 @@
 #include "sixDoFCouplingBody.H"
 #include "Time.H"
 #include "forces.H"
+#include "quaternion.H"
+#include "restartFiles.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::sixDoFCouplingBody::motionStateEntries
+({
+    "centreOfRotation", "orientation", "velocity", "acceleration",
+    "angularMomentum", "torque"
+});
+
+
+const Foam::wordList Foam::sixDoFCouplingBody::meanEntries
+({
+    "meanAngularVelocity", "meanVelocity", "meanAngularAcceleration",
+    "meanAcceleration"
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::vector Foam::sixDoFCouplingBody::rotationVector(const tensor& R)
 {
-    // sin(angle) times the axis, from the antisymmetric part
-    const vector s
-    (
-        0.5*(R.zy() - R.yz()),
-        0.5*(R.xz() - R.zx()),
-        0.5*(R.yx() - R.xy())
-    );
-    const scalar sinAngle = mag(s);
-    if (sinAngle < SMALL)
+    // OpenFOAM's quaternion of R, w = cos(angle/2) and v = sin(angle/2)
+    // times the axis, taken with w >= 0 for the angle in [0, pi]. Near pi
+    // its axis comes from the symmetric part of R, where the antisymmetric
+    // part, sin(angle) times the axis, is lost to round-off
+    quaternion q(R);
+    if (q.w() < 0)
     {
-        return s;
+        q = -q;
     }
-    return atan2(sinAngle, 0.5*(tr(R) - 1))/sinAngle*s;
+
+    const scalar sinHalfAngle = mag(q.v());
+    if (sinHalfAngle < VSMALL)
+    {
+        return Zero;
+    }
+    return 2*atan2(sinHalfAngle, q.w())/sinHalfAngle*q.v();
 }
 
 
@@ -36,6 +57,34 @@ void Foam::sixDoFCouplingBody::meanVelocities
 {
     omega = rotationVector(s.Q() & state0_.Q().T())/dt;
     v = (s.centreOfRotation() - state0_.centreOfRotation())/dt;
+}
+
+
+bool Foam::sixDoFCouplingBody::nextMeans
+(
+    const scalar dt,
+    FixedList<vector, 4>& means
+) const
+{
+    if (solved_)
+    {
+        meanVelocities(motion_.state(), dt, means[0], means[1]);
+        means[2] = (means[0] - omegaMean0_)/dt;
+        means[3] = (means[1] - vMean0_)/dt;
+        return true;
+    }
+
+    means = FixedList<vector, 4>({omegaMean0_, vMean0_, alphaPrev_, aPrev_});
+    return meansKnown_;
+}
+
+
+void Foam::sixDoFCouplingBody::setMeans(const FixedList<vector, 4>& means)
+{
+    omegaMean0_ = means[0];
+    vMean0_ = means[1];
+    alphaPrev_ = means[2];
+    aPrev_ = means[3];
 }
 
 
@@ -83,31 +132,49 @@ Foam::sixDoFCouplingBody::sixDoFCouplingBody
     vMean0_(Zero),
     momentAdd_(Zero),
     forceAdd_(Zero),
-    originAdd_(Zero)
+    originAdd_(Zero),
+    meansKnown_(false),
+    meansRead_(false)
 {}
+
+
+Foam::sixDoFCouplingBody::sixDoFCouplingBody
+(
+    sixDoFRigidBodyMotion& motion,
+    const word& name,
+    const sixDoFCouplingBody& b
+)
+:
+    sixDoFCouplingBody(motion, name)
+{
+    // The means the next time step of b starts from, as a restart reads
+    // them
+    FixedList<vector, 4> means;
+    meansKnown_ = b.nextMeans(b.motion_.time().deltaTValue(), means);
+    meansRead_ = meansKnown_;
+    setMeans(means);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::sixDoFCouplingBody::newTime()
 {
-    const sixDoFRigidBodyMotionState& s = motion_.state();
     if (solved_)
     {
-        const scalar dt = motion_.time().deltaT0Value();
-        vector omegaMean, vMean;
-        meanVelocities(s, dt, omegaMean, vMean);
-        alphaPrev_ = (omegaMean - omegaMean0_)/dt;
-        aPrev_ = (vMean - vMean0_)/dt;
-        omegaMean0_ = omegaMean;
-        vMean0_ = vMean;
+        FixedList<vector, 4> means;
+        nextMeans(motion_.time().deltaT0Value(), means);
+        setMeans(means);
     }
-    else
+    else if (!meansRead_)
     {
         // No step before: the velocities of the state
+        const sixDoFRigidBodyMotionState& s = motion_.state();
         omegaMean0_ = s.Q() & (inv(motion_.momentOfInertia()) & s.pi());
         vMean0_ = s.v();
     }
+    meansKnown_ = true;
+    meansRead_ = false;
 
     motion_.newTime();
     state0_ = motion_.state();
@@ -172,6 +239,64 @@ void Foam::sixDoFCouplingBody::reportSolve()
         forceAdd_,
         momentAdd_ + ((originAdd_ - motion_.centreOfRotation()) ^ forceAdd_)
     );
+}
+
+
+bool Foam::sixDoFCouplingBody::readState(const dictionary& state)
+{
+    label nFound = 0;
+    for (const word& key : meanEntries)
+    {
+        nFound += state.found(key, keyType::LITERAL);
+    }
+    if (nFound == 0)
+    {
+        return false;
+    }
+
+    // All or none: readEntry names the one missing
+    FixedList<vector, 4> means;
+    forAll(meanEntries, i)
+    {
+        state.readEntry(meanEntries[i], means[i], keyType::LITERAL);
+    }
+    setMeans(means);
+    meansKnown_ = true;
+    meansRead_ = true;
+    return true;
+}
+
+
+void Foam::sixDoFCouplingBody::readRestartState
+(
+    const dictionary& state,
+    const fileName& file
+)
+{
+    const Time& t = motion_.time();
+    if (!readState(state) && restartFiles::restarted(t, t.timeName()))
+    {
+        Info<< name_ << ": the restart state " << file << " has no "
+            << meanEntries[0] << ", " << meanEntries[1] << ", "
+            << meanEntries[2] << ", " << meanEntries[3]
+            << " (written before the coupling kept them): the first time"
+            << " step takes the state's velocities for the previous step's"
+            << " mean velocities and zero for its accelerations, so the"
+            << " restart is not exact" << endl;
+    }
+}
+
+
+void Foam::sixDoFCouplingBody::writeState(dictionary& state) const
+{
+    FixedList<vector, 4> means;
+    if (nextMeans(motion_.time().deltaTValue(), means))
+    {
+        forAll(meanEntries, i)
+        {
+            state.add(meanEntries[i], means[i]);
+        }
+    }
 }
 
 
