@@ -29,7 +29,7 @@
 #    0.08 m (the wave height) of its start in heave (a buoy that follows
 #    the waves moves by their amplitude, 0.04 m, measured 0.03 m), within
 #    0.2 m in surge (the lines hold it: measured 0.04 m), pitch within
-#    20 deg (the wave slope k a is 6.9 deg, measured 7.6 deg);
+#    20 deg (the wave slope k a is 7.0 deg, measured 7.6 deg);
 #  - the buoy moves with the waves: from 1.8 s to 3 s its heave ranges over
 #    more than 0.03 m and its pitch over more than 4 deg (measured 0.055 m
 #    and 8.9 deg);
