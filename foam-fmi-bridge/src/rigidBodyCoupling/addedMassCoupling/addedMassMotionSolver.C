@@ -107,6 +107,26 @@ void Foam::addedMassMotionSolver::constrainDisplacement()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::tmp<Foam::pointField> Foam::addedMassMotionSolver::curPoints() const
+{
+    tmp<pointField> newPoints
+    (
+        points0() + pointDisplacement_.primitiveField()
+    );
+
+    if (moveAllCells())
+    {
+        return newPoints;
+    }
+
+    tmp<pointField> tzonePoints(new pointField(mesh().points()));
+    UIndirectList<point>(tzonePoints.ref(), pointIDs()) =
+        pointField(newPoints(), pointIDs());
+
+    return tzonePoints;
+}
+
+
 #if OPENFOAM >= 2006
 bool Foam::addedMassMotionSolver::writeObject
 (

@@ -163,13 +163,6 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::tmp<Foam::pointField>
-Foam::addedMassRigidBodyMeshMotion::curPoints() const
-{
-    return points0() + pointDisplacement_.primitiveField();
-}
-
-
 void Foam::addedMassRigidBodyMeshMotion::solve()
 {
     const Time& t = mesh().time();

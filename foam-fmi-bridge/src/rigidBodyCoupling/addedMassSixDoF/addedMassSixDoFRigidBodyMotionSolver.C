@@ -142,29 +142,6 @@ addedMassSixDoFRigidBodyMotionSolver
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::tmp<Foam::pointField>
-Foam::addedMassSixDoFRigidBodyMotionSolver::curPoints() const
-{
-    tmp<pointField> newPoints
-    (
-        points0() + pointDisplacement_.primitiveField()
-    );
-
-    if (!moveAllCells())
-    {
-        tmp<pointField> ttransformedPts(new pointField(mesh().points()));
-        pointField& transformedPts = ttransformedPts.ref();
-
-        UIndirectList<point>(transformedPts, pointIDs()) =
-            pointField(newPoints.ref(), pointIDs());
-
-        return ttransformedPts;
-    }
-
-    return newPoints;
-}
-
-
 void Foam::addedMassSixDoFRigidBodyMotionSolver::solve()
 {
     const Time& t = mesh().time();
