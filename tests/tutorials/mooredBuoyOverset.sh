@@ -39,9 +39,9 @@
 #    and state: centre of rotation within 1e-5 m, orientation tensor within
 #    1e-5 (measured 3.4e-6 m and 3.5e-6; Euler, laminar, 17 digits: what a
 #    run writes is all it needs, docs/restarts.md). The solver log of the
-#    restart has no
-#    "FMU state restored" line of either line (docs/floating-stability.md,
-#    "On an overset mesh"), so the restore is not checked by its message.
+#    restart has no "FMU state restored" line of either line under the
+#    sixDoF restraints (docs/floating-stability.md, "On an overset mesh"),
+#    so the restore is checked by the end state, not by its message.
 # Needs platforms/<WM_OPTIONS>/bin/overInterDyMFoamAliasSafe, the bridge and
 # coupling libraries and build/fmus/mooringLine.fmu. Exits non-zero on the
 # first failure.
