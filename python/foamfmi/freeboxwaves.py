@@ -5,7 +5,9 @@ resampled series (what the repository keeps of a run), the measured curves
 
 A run is two files (write_run, read_run):
   run.dat     "key value" lines: the settings that produced it (height,
-              meshFactor, endTime, coupling, nProcs), the cost (cells,
+              meshFactor, endTime, coupling, pitchInertia, nProcs; runs
+              kept before pitchInertia was a setting had FloatStepper's,
+              PITCH_INERTIA), the cost (cells,
               timeSteps, executionTime) and where it came from (commit,
               openfoam)
   series.dat  columns Time, surge, heave (m, the centre of mass from its
@@ -45,6 +47,9 @@ PERIOD = 1.2  # s, both wave heights
 DEPTH = 0.4  # m, still water; the experiment's normalising length d
 BOX_X = 2.0  # m, the box's centre from the generator (constant/dynamicMeshDict)
 RAMP_TIME = 4.0  # s, constant/waveProperties
+# kg m^2, the box's about its centre of mass in FloatStepper's case (Allrun's
+# default); runs kept before it was a setting had it
+PITCH_INERTIA = 0.15106368
 # FloatStepper's wavelength for the pitch's normalisation k d
 EXPERIMENT_WAVELENGTH = 1.93625
 GAUGES = (1.0, 3.0)  # m, system/waveGauges (Allrun)
@@ -61,6 +66,8 @@ QUANTITIES = {
 }
 SERIES_COLUMNS = ("Time", "surge", "heave", "pitch") + tuple("eta.%g" % x for x in GAUGES)
 RUN_KEYS = ("height", "meshFactor", "endTime", "coupling", "nProcs")
+# Settings with a value for runs that did not log them
+RUN_DEFAULTS = {"pitchInertia": PITCH_INERTIA}
 # The header lines of run.dat and series.dat
 RUN_TITLE = "freeBoxWaves run (python/foamfmi/freeboxwaves.py): key value"
 SERIES_TITLE = ("freeBoxWaves response every T/%d: surge, heave (m), pitch (deg), "
@@ -120,6 +127,8 @@ def read_case(case):
         if key not in logged:
             raise FreeBoxError("%s/log.runSettings: no %s" % (case, key))
         run[key] = logged[key] if key == "coupling" else float(logged[key])
+    for key, value in RUN_DEFAULTS.items():
+        run[key] = float(logged.get(key, value))
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
     app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
@@ -150,7 +159,10 @@ def write_run(folder, run, series):
 
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
-    return postprocessing.read_kept_run(folder, SERIES_COLUMNS, RUN_KEYS)
+    run, series = postprocessing.read_kept_run(folder, SERIES_COLUMNS, RUN_KEYS)
+    for key, value in RUN_DEFAULTS.items():
+        run[key] = float(run.get(key, value))
+    return run, series
 
 
 # ------------------------------------------------------------ analysis --

@@ -151,6 +151,9 @@ class RunFilesTest(unittest.TestCase):
             run2, series2 = fb.read_run(d)
         self.assertEqual(run2["coupling"], "addedMass")
         self.assertEqual(run2["meshFactor"], 1.0)
+        # A run kept before the pitch inertia was a setting had FloatStepper's
+        self.assertNotIn("pitchInertia", run)
+        self.assertEqual(run2["pitchInertia"], 0.15106368)
         # series.dat keeps 7 digits
         for c in fb.SERIES_COLUMNS:
             np.testing.assert_allclose(series2[c], series[c], rtol=1e-6, atol=1e-9)
@@ -182,8 +185,10 @@ class KeptRunsTest(unittest.TestCase):
 
     def test_report(self):
         # boxResponse -report on three kept synthetic runs (the script and
-        # the committed curves copied beside them): every run compared,
-        # the heave's 10 % error in each table, and the mesh study
+        # the committed curves copied beside them) and a fourth of another
+        # pitch inertia: every run compared, the heave's 10 % error in each
+        # table and the table at a glance, and the mesh study of the
+        # three that differ only in the mesh
         top = os.environ.get("FOAMFMI_DIR", ".")
         with tempfile.TemporaryDirectory() as d:
             shutil.copy(os.path.join(top, "tutorials", "freeBoxWaves", "boxResponse"), d)
@@ -195,14 +200,26 @@ class KeptRunsTest(unittest.TestCase):
                 run = {"height": 0.04, "meshFactor": f, "endTime": 11.0,
                        "coupling": "addedMass", "nProcs": 1.0, "commit": "test"}
                 fb.write_run(os.path.join(d, "results", "F%g" % f), run, series)
+                if f == 1.0:
+                    run["pitchInertia"] = 0.13
+                    fb.write_run(os.path.join(d, "results", "F1_I0.13"), run, series)
             out = subprocess.run([sys.executable, os.path.join(d, "boxResponse"), "-report",
                                   "-no-plot"], capture_output=True, text=True)
             self.assertEqual(out.returncode, 0, out.stderr)
             with open(os.path.join(d, "results", "report.md")) as f:
                 report = f.read()
             self.assertTrue(os.path.isfile(os.path.join(d, "results", "F2", "boxResponse.dat")))
-        self.assertEqual(report.count("| heave amplitude (m) |"), 3)
-        self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling", report)
+        self.assertEqual(report.count("| heave amplitude (m) |"), 4)
+        self.assertEqual(report.count("## Numerical uncertainty"), 1)
+        self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling, "
+                      "pitch inertia 0.15106368 kg m^2", report)
+        glance = [line for line in report.splitlines() if line.startswith("| F1_I0.13 |")]
+        self.assertEqual(len(glance), 1)
+        self.assertIn("| 0.13 |", glance[0])
+        # Its heave RAO's error is its own table's
+        own = report.split("## F1_I0.13")[1]
+        heave_rao = [line for line in own.splitlines() if line.startswith("| heave RAO")][0]
+        self.assertEqual(glance[0].split("|")[7].strip(), heave_rao.split("|")[4].strip())
         self.assertIn("| heave (m) | 2 / 1.414 / 1 |", report)
         # The wave, the same on the three (to series.dat's 7 digits): its
         # U_num below 1e-6 of it
