@@ -5,9 +5,10 @@ resampled series (what the repository keeps of a run), the measured curves
 
 A run is two files (write_run, read_run):
   run.dat     "key value" lines: the settings that produced it (height,
-              meshFactor, endTime, coupling, pitchInertia, nProcs; runs
-              kept before pitchInertia was a setting had FloatStepper's,
-              PITCH_INERTIA), the cost (cells,
+              meshFactor, endTime, coupling, pitchInertia,
+              centreOfMassHeight, nProcs; runs kept before the last two
+              were settings had FloatStepper's, RUN_DEFAULTS), the cost
+              (cells,
               timeSteps, executionTime) and where it came from (commit,
               openfoam)
   series.dat  columns Time, surge, heave (m, the centre of mass from its
@@ -67,7 +68,7 @@ QUANTITIES = {
 SERIES_COLUMNS = ("Time", "surge", "heave", "pitch") + tuple("eta.%g" % x for x in GAUGES)
 RUN_KEYS = ("height", "meshFactor", "endTime", "coupling", "nProcs")
 # Settings with a value for runs that did not log them
-RUN_DEFAULTS = {"pitchInertia": PITCH_INERTIA}
+RUN_DEFAULTS = {"pitchInertia": PITCH_INERTIA, "centreOfMassHeight": 0.0}
 # The header lines of run.dat and series.dat
 RUN_TITLE = "freeBoxWaves run (python/foamfmi/freeboxwaves.py): key value"
 SERIES_TITLE = ("freeBoxWaves response every T/%d: surge, heave (m), pitch (deg), "

@@ -154,6 +154,7 @@ class RunFilesTest(unittest.TestCase):
         # A run kept before the pitch inertia was a setting had FloatStepper's
         self.assertNotIn("pitchInertia", run)
         self.assertEqual(run2["pitchInertia"], 0.15106368)
+        self.assertEqual(run2["centreOfMassHeight"], 0.0)
         # series.dat keeps 7 digits
         for c in fb.SERIES_COLUMNS:
             np.testing.assert_allclose(series2[c], series[c], rtol=1e-6, atol=1e-9)
@@ -212,14 +213,15 @@ class KeptRunsTest(unittest.TestCase):
         self.assertEqual(report.count("| heave amplitude (m) |"), 4)
         self.assertEqual(report.count("## Numerical uncertainty"), 1)
         self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling, "
-                      "pitch inertia 0.15106368 kg m^2", report)
+                      "pitch inertia 0.15106368 kg m^2, centre of mass 0 m above the box's centre",
+                      report)
         glance = [line for line in report.splitlines() if line.startswith("| F1_I0.13 |")]
         self.assertEqual(len(glance), 1)
         self.assertIn("| 0.13 |", glance[0])
         # Its heave RAO's error is its own table's
         own = report.split("## F1_I0.13")[1]
         heave_rao = [line for line in own.splitlines() if line.startswith("| heave RAO")][0]
-        self.assertEqual(glance[0].split("|")[7].strip(), heave_rao.split("|")[4].strip())
+        self.assertEqual(glance[0].split("|")[8].strip(), heave_rao.split("|")[4].strip())
         self.assertIn("| heave (m) | 2 / 1.414 / 1 |", report)
         # The wave, the same on the three (to series.dat's 7 digits): its
         # U_num below 1e-6 of it
