@@ -7,6 +7,7 @@
 #include "Time.H"
 #include "error.H"
 #include "messageStream.H"
+#include "debug.H"
 
 #include <cctype>
 
@@ -16,6 +17,41 @@ namespace Foam
 {
     defineTypeNameAndDebug(fmuConnectorCore, 0);
 }
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- For its scope, OpenFOAM's messages at the level the run started with
+//  (DebugSwitches level, default 2), whatever the solve that evaluates the
+//  connector has set: the solves of the added-mass coupling under
+//  sixDoFRigidBodyMotion are silent (messageStream::level 0, the motion's
+//  report once for the converged one), and a connector's lines of a run,
+//  such as its state restored at the first evaluation, are no part of that
+//  report
+class runMessageLevel
+{
+    //- The level set by the solve
+    const int level_;
+
+public:
+
+    runMessageLevel()
+    :
+        level_(Foam::messageStream::level)
+    {
+        Foam::messageStream::level = Foam::debug::debugSwitch("level", 2);
+    }
+
+    ~runMessageLevel()
+    {
+        Foam::messageStream::level = level_;
+    }
+};
+
+} // End anonymous namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -52,6 +88,8 @@ void Foam::fmuConnectorCore::restorePending
 
     // The state carries the inputs it was written with
     setInputs(A, B);
+
+    const runMessageLevel audible;
 
     Info<< "Connector " << restraintName_ << ": FMU state restored at t = "
         << restoreTime_ << " from " << restoreSource_ << endl;
@@ -352,6 +390,7 @@ void Foam::fmuConnectorCore::evaluate
         else if (deltaT > 0 && !warnedNoRollback_)
         {
             warnedNoRollback_ = true;
+            const runMessageLevel audible;
             WarningInFunction
                 << where().c_str() << "repeated solve at t = " << t
                 << " without rollback: the FMU is not stepped again"
