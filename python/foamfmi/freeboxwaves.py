@@ -8,9 +8,8 @@ A run is two files (write_run, read_run):
               meshFactor, endTime, coupling, pitchInertia,
               centreOfMassHeight, nProcs; runs kept before the last two
               were settings had FloatStepper's, RUN_DEFAULTS), the cost
-              (cells,
-              timeSteps, executionTime) and where it came from (commit,
-              openfoam)
+              (cells, timeSteps, executionTime) and where it came from
+              (commit, openfoam)
   series.dat  columns Time, surge, heave (m, the centre of mass from its
               start at x = 2 m on the still-water level), pitch (deg, about
               y: the lee side down) and the elevation (m) at the gauges
@@ -120,6 +119,12 @@ def read_experiment(folder, height):
 
 # ---------------------------------------------------------------- a run --
 
+def _set_defaults(run, source):
+    """run[key] for each setting of RUN_DEFAULTS: source's, else the default."""
+    for key, value in RUN_DEFAULTS.items():
+        run[key] = float(source.get(key, value))
+
+
 def read_case(case):
     """A finished (or stopped) run of the tutorial: (run, series)."""
     logged = postprocessing.run_settings(case)
@@ -128,8 +133,7 @@ def read_case(case):
         if key not in logged:
             raise FreeBoxError("%s/log.runSettings: no %s" % (case, key))
         run[key] = logged[key] if key == "coupling" else float(logged[key])
-    for key, value in RUN_DEFAULTS.items():
-        run[key] = float(logged.get(key, value))
+    _set_defaults(run, logged)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
     app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
@@ -161,8 +165,7 @@ def write_run(folder, run, series):
 def read_run(folder):
     """(run, series) of a folder written by write_run."""
     run, series = postprocessing.read_kept_run(folder, SERIES_COLUMNS, RUN_KEYS)
-    for key, value in RUN_DEFAULTS.items():
-        run[key] = float(run.get(key, value))
+    _set_defaults(run, run)
     return run, series
 
 
