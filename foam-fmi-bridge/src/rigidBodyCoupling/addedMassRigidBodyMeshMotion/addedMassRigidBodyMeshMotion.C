@@ -47,6 +47,7 @@ Foam::addedMassRigidBodyMeshMotion::bodyMesh::bodyMesh
     patchSet_(mesh.boundaryMesh().patchSet(patches_)),
     di_(dict.get<scalar>("innerDistance")),
     do_(dict.get<scalar>("outerDistance")),
+    distanceScale_(bodyMorphing::readDistanceScale(dict)),
     weight_
     (
         unregisteredIO(mesh, name_ + ".motionScale"),
@@ -155,7 +156,8 @@ Foam::addedMassRigidBodyMeshMotion::addedMassRigidBodyMeshMotion
             bodyMeshes_[bi].patchSet_,
             points0(),
             bodyMeshes_[bi].di_,
-            bodyMeshes_[bi].do_
+            bodyMeshes_[bi].do_,
+            bodyMeshes_[bi].distanceScale_
         );
     }
 }

@@ -41,9 +41,11 @@ namespace
 //  (mass, centreOfMass, initialCentreOfMass, momentOfInertia, orientation,
 //  initialOrientation, report, solver, restraints, constraints,
 //  accelerationRelaxation, accelerationDamping) and its state (the
-//  initial state when no state file is read)
+//  initial state when no state file is read); and this solver's
+//  distanceScale (bodyMorphing::readDistanceScale)
 const Foam::wordList openFoamEntries
 ({
+    "distanceScale",
     "patches", "innerDistance", "outerDistance", "test", "rho", "rhoInf",
     "CofGvelocity", "g", "mass", "centreOfMass", "initialCentreOfMass",
     "momentOfInertia", "orientation", "initialOrientation", "report",
@@ -100,6 +102,7 @@ addedMassSixDoFRigidBodyMotionSolver
     patchSet_(mesh.boundaryMesh().patchSet(patches_)),
     di_(coeffDict().get<scalar>("innerDistance")),
     do_(coeffDict().get<scalar>("outerDistance")),
+    distanceScale_(bodyMorphing::readDistanceScale(coeffDict())),
     test_(coeffDict().lookupOrDefault("test", false)),
     rhoInf_(1.0),
     rhoName_(coeffDict().lookupOrDefault<word>("rho", "rho")),
@@ -136,7 +139,10 @@ addedMassSixDoFRigidBodyMotionSolver
         rhoInf_
     );
 
-    bodyMorphing::weights(scale_, patchSet_, points0(), di_, do_);
+    bodyMorphing::weights
+    (
+        scale_, patchSet_, points0(), di_, do_, distanceScale_
+    );
 }
 
 
