@@ -6,8 +6,9 @@ resampled series (what the repository keeps of a run), the measured curves
 A run is two files (write_run, read_run):
   run.dat     "key value" lines: the settings that produced it (height,
               meshFactor, endTime, coupling, pitchInertia,
-              centreOfMassHeight, nProcs; runs kept before the last two
-              were settings had FloatStepper's, RUN_DEFAULTS), the cost
+              centreOfMassHeight, morphing, nProcs; runs kept before the
+              last three were settings had FloatStepper's box and the short
+              morphing, RUN_DEFAULTS), the cost
               (cells, timeSteps, executionTime) and where it came from
               (commit, openfoam)
   series.dat  columns Time, surge, heave (m, the centre of mass from its
@@ -67,7 +68,7 @@ QUANTITIES = {
 SERIES_COLUMNS = ("Time", "surge", "heave", "pitch") + tuple("eta.%g" % x for x in GAUGES)
 RUN_KEYS = ("height", "meshFactor", "endTime", "coupling", "nProcs")
 # Settings with a value for runs that did not log them
-RUN_DEFAULTS = {"pitchInertia": PITCH_INERTIA, "centreOfMassHeight": 0.0}
+RUN_DEFAULTS = {"pitchInertia": PITCH_INERTIA, "centreOfMassHeight": 0.0, "morphing": "short"}
 # The header lines of run.dat and series.dat
 RUN_TITLE = "freeBoxWaves run (python/foamfmi/freeboxwaves.py): key value"
 SERIES_TITLE = ("freeBoxWaves response every T/%d: surge, heave (m), pitch (deg), "
@@ -120,9 +121,10 @@ def read_experiment(folder, height):
 # ---------------------------------------------------------------- a run --
 
 def _set_defaults(run, source):
-    """run[key] for each setting of RUN_DEFAULTS: source's, else the default."""
+    """run[key] for each setting of RUN_DEFAULTS: source's, else the
+    default, of the default's type (a number, or the morphing's name)."""
     for key, value in RUN_DEFAULTS.items():
-        run[key] = float(source.get(key, value))
+        run[key] = type(value)(source.get(key, value))
 
 
 def read_case(case):

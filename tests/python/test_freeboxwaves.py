@@ -155,6 +155,8 @@ class RunFilesTest(unittest.TestCase):
         self.assertNotIn("pitchInertia", run)
         self.assertEqual(run2["pitchInertia"], 0.15106368)
         self.assertEqual(run2["centreOfMassHeight"], 0.0)
+        # and the short morphing
+        self.assertEqual(run2["morphing"], "short")
         # series.dat keeps 7 digits
         for c in fb.SERIES_COLUMNS:
             np.testing.assert_allclose(series2[c], series[c], rtol=1e-6, atol=1e-9)
@@ -186,10 +188,11 @@ class KeptRunsTest(unittest.TestCase):
 
     def test_report(self):
         # boxResponse -report on three kept synthetic runs (the script and
-        # the committed curves copied beside them) and a fourth of another
-        # pitch inertia: every run compared, the heave's 10 % error in each
-        # table and the table at a glance, and the mesh study of the
-        # three that differ only in the mesh
+        # the committed curves copied beside them), a fourth of another
+        # pitch inertia and a fifth of the long morphing: every run
+        # compared, the heave's 10 % error in each table and the table at a
+        # glance, and the mesh study of the three that differ only in the
+        # mesh
         top = os.environ.get("FOAMFMI_DIR", ".")
         with tempfile.TemporaryDirectory() as d:
             shutil.copy(os.path.join(top, "tutorials", "freeBoxWaves", "boxResponse"), d)
@@ -202,6 +205,8 @@ class KeptRunsTest(unittest.TestCase):
                        "coupling": "addedMass", "nProcs": 1.0, "commit": "test"}
                 fb.write_run(os.path.join(d, "results", "F%g" % f), run, series)
                 if f == 1.0:
+                    fb.write_run(os.path.join(d, "results", "F1_long"),
+                                 dict(run, morphing="long"), series)
                     run["pitchInertia"] = 0.13
                     fb.write_run(os.path.join(d, "results", "F1_I0.13"), run, series)
             out = subprocess.run([sys.executable, os.path.join(d, "boxResponse"), "-report",
@@ -210,18 +215,22 @@ class KeptRunsTest(unittest.TestCase):
             with open(os.path.join(d, "results", "report.md")) as f:
                 report = f.read()
             self.assertTrue(os.path.isfile(os.path.join(d, "results", "F2", "boxResponse.dat")))
-        self.assertEqual(report.count("| heave amplitude (m) |"), 4)
+        self.assertEqual(report.count("| heave amplitude (m) |"), 5)
         self.assertEqual(report.count("## Numerical uncertainty"), 1)
-        self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling, "
+        self.assertIn("## Numerical uncertainty, H = 0.04 m, addedMass coupling, short morphing, "
                       "pitch inertia 0.15106368 kg m^2, centre of mass 0 m above the box's centre",
                       report)
         glance = [line for line in report.splitlines() if line.startswith("| F1_I0.13 |")]
         self.assertEqual(len(glance), 1)
         self.assertIn("| 0.13 |", glance[0])
+        self.assertIn("| short |", glance[0])
+        long_row = [line for line in report.splitlines() if line.startswith("| F1_long |")]
+        self.assertIn("| long |", long_row[0])
+        self.assertIn("addedMass coupling, long morphing", report.split("## F1_long")[1])
         # Its heave RAO's error is its own table's
         own = report.split("## F1_I0.13")[1]
         heave_rao = [line for line in own.splitlines() if line.startswith("| heave RAO")][0]
-        self.assertEqual(glance[0].split("|")[8].strip(), heave_rao.split("|")[4].strip())
+        self.assertEqual(glance[0].split("|")[9].strip(), heave_rao.split("|")[4].strip())
         self.assertIn("| heave (m) | 2 / 1.414 / 1 |", report)
         # The wave, the same on the three (to series.dat's 7 digits): its
         # U_num below 1e-6 of it
