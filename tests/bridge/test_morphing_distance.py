@@ -15,6 +15,11 @@ keel (1.6 scaled), stays where it is while points 1 m ahead of the box
 along the flume move; without it (the default) the bed under the box moves
 and the far points do not, as before.
 
+On 2 ranks, the second holding the flume's top right corner (x > 1.75 m,
+z > 0.6 m) and none of the box's faces, its points (nearest to the box's
+corner, within the outer distance) moved by the faces the first holds,
+every point moves as in serial, against the same weight.
+
 A scale with a component not above zero stops the solver when it is built,
 with a FatalIOError naming distanceScale and what it expects, under both
 solvers.
@@ -228,6 +233,40 @@ def read_points(path):
             for m in re.finditer(r"\(([-+0-9.eE]+) ([-+0-9.eE]+) ([-+0-9.eE]+)\)", body)]
 
 
+def run_parallel(case):
+    """moveDynamicMesh on 2 ranks, the second the last block's cells (the
+    top right corner, 10 x 4 cells, blockMesh's last): (exit code, log)."""
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write(foam_file("decomposeParDict", "numberOfSubdomains 2;\nmethod manual;\n"
+                          "coeffs { dataFile \"cellDecomposition\"; }\n"))
+    cells = 10 * 4 + 4 * 4 + 10 * 4 + 10 * 2 + 10 * 2 + 10 * 4 + 4 * 4 + 10 * 4
+    with open(os.path.join(case, "constant", "cellDecomposition"), "w") as f:
+        f.write(foam_file("cellDecomposition", "%d\n(\n%s\n)\n" % (
+            cells, "\n".join(["0"] * (cells - 40) + ["1"] * 40))).replace(
+                "class dictionary", "class labelList"))
+    env = dict(os.environ)
+    if os.getuid() == 0:  # mpirun refuses root without these
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    log = ""
+    for command in (["decomposePar", "-case", case],
+                    ["mpirun", "-np", "2", "moveDynamicMesh", "-case", case, "-parallel"]):
+        result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, env=env)
+        log += result.stdout
+        if result.returncode != 0:
+            return result.returncode, log
+    return 0, log
+
+
+def moved_points(folders):
+    """(initial, moved) points of the mesh in each folder."""
+    pairs = []
+    for folder in folders:
+        pairs.append((read_points(os.path.join(folder, "constant", "polyMesh", "points")),
+                      read_points(os.path.join(folder, "0.02", "polyMesh", "points"))))
+    return pairs
+
+
 def weight(point, scale):
     """OpenFOAM's half-cosine weight of the scaled distance to the box."""
     x, _, z = point
@@ -241,21 +280,22 @@ def motion_checks(work, solver, make_dict):
     """(name, ok, detail) of the moved points against w(d) D, with and
     without the scale."""
     results = []
-    for label, scale, entry in (("scaled", (1, 1, 4), "distanceScale (1 1 4);"),
-                                ("default", (1, 1, 1), "")):
+    for label, scale, entry, ranks in (("scaled", (1, 1, 4), "distanceScale (1 1 4);", 1),
+                                       ("default", (1, 1, 1), "", 1),
+                                       ("scaledParallel", (1, 1, 4), "distanceScale (1 1 4);", 2)):
         name = f"{solver}.{label}"
         case = make_case(work, name, make_dict(entry))
-        code, log = run(case)
+        code, log = run(case) if ranks == 1 else run_parallel(case)
         if code != 0:
             results.append((name, False, f"exit code {code}\n{log[-2500:]}"))
             continue
-        before = read_points(os.path.join(case, "constant", "polyMesh", "points"))
-        after = read_points(os.path.join(case, "0.02", "polyMesh", "points"))
+        pairs = moved_points([case] if ranks == 1 else
+                             [os.path.join(case, "processor%d" % i) for i in range(ranks)])
         # The body's displacement: that of a point of the box's patch
-        corner = before.index((1.25, 0.0, 0.4))
-        fall = after[corner][2] - before[corner][2]
+        fall = next(q[2] - p[2] for before, after in pairs
+                    for p, q in zip(before, after) if p == (1.25, 0.0, 0.4))
         worst, moved_far, moved_bed = 0.0, 0.0, 0.0
-        for p, q in zip(before, after):
+        for p, q in ((p, q) for before, after in pairs for p, q in zip(before, after)):
             expected = (p[0], p[1], p[2] + weight(p, scale) * fall)
             worst = max(worst, max(abs(a - b) for a, b in zip(q, expected)))
             if abs(p[0] - 0.25) < 1e-9 and abs(p[2] - 0.5) < 0.11:

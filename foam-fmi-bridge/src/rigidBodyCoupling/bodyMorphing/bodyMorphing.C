@@ -7,6 +7,8 @@
 #include "pointConstraints.H"
 #include "polyMesh.H"
 #include "mathematicalConstants.H"
+#include "triSurface.H"
+#include "triSurfaceSearch.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -15,20 +17,24 @@ namespace
 
 //- Distance of every point of points0 to the faces of the patches in
 //  patchSet (their points at points0), each coordinate multiplied by the
-//  component of s first; the faces of every processor
+//  component of s first, up to within: GREAT beyond. The faces of every
+//  processor, triangulated about their centres (as face::nearestPoint),
+//  searched by OpenFOAM's octree (triSurfaceSearch)
 Foam::tmp<Foam::scalarField> scaledDistance
 (
     const Foam::polyMesh& mesh,
     const Foam::labelHashSet& patchSet,
     const Foam::pointField& points0,
-    const Foam::vector& s
+    const Foam::vector& s,
+    const Foam::scalar within
 )
 {
     using namespace Foam;
 
-    // This processor's patch faces, with their points scaled
+    // This processor's patch faces as triangles about their centres, the
+    // points scaled
     DynamicList<point> localPoints;
-    DynamicList<face> localFaces;
+    DynamicList<triFace> localTriangles;
     for (const label patchi : patchSet)
     {
         const polyPatch& pp = mesh.boundaryMesh()[patchi];
@@ -39,39 +45,63 @@ Foam::tmp<Foam::scalarField> scaledDistance
         }
         for (const face& f : pp.localFaces())
         {
-            face g(f);
-            forAll(g, i)
+            // the face's points are the patch's, from offset on
+            const point c
+            (
+                f.centre(SubList<point>(localPoints, pp.nPoints(), offset))
+            );
+            const label centre = localPoints.size();
+            localPoints.append(c);
+            forAll(f, i)
             {
-                g[i] += offset;
+                localTriangles.append
+                (
+                    triFace(centre, offset + f[i], offset + f.nextLabel(i))
+                );
             }
-            localFaces.append(g);
         }
     }
 
-    List<pointField> patchPoints(Pstream::nProcs());
-    List<faceList> patchFaces(Pstream::nProcs());
-    patchPoints[Pstream::myProcNo()] = localPoints;
-    patchFaces[Pstream::myProcNo()] = localFaces;
-    Pstream::gatherList(patchPoints);
-    Pstream::scatterList(patchPoints);
-    Pstream::gatherList(patchFaces);
-    Pstream::scatterList(patchFaces);
+    List<pointField> procPoints(Pstream::nProcs());
+    List<triFaceList> procTriangles(Pstream::nProcs());
+    procPoints[Pstream::myProcNo()] = localPoints;
+    procTriangles[Pstream::myProcNo()] = localTriangles;
+    Pstream::gatherList(procPoints);
+    Pstream::scatterList(procPoints);
+    Pstream::gatherList(procTriangles);
+    Pstream::scatterList(procTriangles);
+
+    // All processors' triangles in one surface
+    DynamicList<point> points;
+    DynamicList<triFace> triangles;
+    forAll(procPoints, proci)
+    {
+        const label offset = points.size();
+        points.append(procPoints[proci]);
+        for (const triFace& t : procTriangles[proci])
+        {
+            triangles.append(triFace(t[0] + offset, t[1] + offset, t[2] + offset));
+        }
+    }
 
     tmp<scalarField> tdist(new scalarField(points0.size(), GREAT));
-    scalarField& dist = tdist.ref();
-    forAll(points0, pointi)
+    if (triangles.empty())
     {
-        const point p(cmptMultiply(s, points0[pointi]));
-        forAll(patchFaces, proci)
+        return tdist;
+    }
+    const triSurface surface{triFaceList(triangles), pointField(points)};
+    const triSurfaceSearch search(surface);
+
+    const pointField samples(cmptMultiply(s, points0));
+    List<pointIndexHit> nearest;
+    search.findNearest(samples, scalarField(samples.size(), sqr(within)), nearest);
+
+    scalarField& dist = tdist.ref();
+    forAll(nearest, pointi)
+    {
+        if (nearest[pointi].hit())
         {
-            for (const face& f : patchFaces[proci])
-            {
-                dist[pointi] = min
-                (
-                    dist[pointi],
-                    f.nearestPoint(p, patchPoints[proci]).distance()
-                );
-            }
+            dist[pointi] = mag(nearest[pointi].hitPoint() - samples[pointi]);
         }
     }
     return tdist;
@@ -117,7 +147,8 @@ void Foam::bodyMorphing::weights
     }
     else
     {
-        tdist = scaledDistance(pMesh(), patchSet, points0, distanceScale);
+        // Beyond do_ the weight is 0 whatever the distance
+        tdist = scaledDistance(pMesh(), patchSet, points0, distanceScale, do_);
     }
 
     // Scaling: 1 up to di then linear down to 0 at do away from patches
