@@ -105,16 +105,17 @@ addedMassRigidBodyMotionCoeffs
 
 
 def make_case(work, name, dynamic_mesh_dict, displacement=POINT_DISPLACEMENT,
-              end_time="0.02", libs=""):
+              end_time="0.02", libs="", control=CONTROL, block_mesh=BLOCK_MESH):
     """The box in work/name, meshed: dynamicMeshDict, 0/pointDisplacement,
-    the end time and the controlDict's libs entry given."""
+    the end time and the controlDict's libs entry given (another
+    controlDict's and blockMeshDict's text: control, block_mesh)."""
     case = os.path.join(work, name)
     for folder in ("system", "constant", "0"):
         os.makedirs(os.path.join(case, folder))
-    control = CONTROL.replace("endTime 0.02;", f"endTime {end_time};") + libs
+    control = control.replace("endTime 0.02;", f"endTime {end_time};") + libs
     files = {
         "system/controlDict": ("controlDict", control),
-        "system/blockMeshDict": ("blockMeshDict", BLOCK_MESH),
+        "system/blockMeshDict": ("blockMeshDict", block_mesh),
         "system/fvSchemes": ("fvSchemes", SCHEMES),
         "system/fvSolution": ("fvSolution", ""),
         "constant/dynamicMeshDict": ("dynamicMeshDict", dynamic_mesh_dict),

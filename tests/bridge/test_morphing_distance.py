@@ -30,8 +30,9 @@ import re
 import subprocess
 import sys
 
+import test_added_mass_entries as entries
 from foamfmi.bridgecase import foam_file
-from test_added_mass_entries import ran, refused, report, run, run_checks
+from test_added_mass_entries import refused, run, run_checks
 
 BOX = (1.25, 1.75, 0.4, 0.6)  # x0, x1, z0, z1 [m]
 INNER, OUTER = 0.05, 1.2
@@ -80,21 +81,10 @@ boundary
 );
 """
 
-CONTROL = """
-application moveDynamicMesh;
-startFrom startTime; startTime 0; stopAt endTime; endTime 0.02; deltaT 0.01;
-writeControl timeStep; writeInterval 2; writeFormat ascii;
-writePrecision 15; timePrecision 6; runTimeModifiable false;
-"""
-
-SCHEMES = """
-ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes { default none; }
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-"""
+# test_added_mass_entries' two steps, the points written at the end to 15
+# digits
+CONTROL = entries.CONTROL.replace("writeInterval 100;", "writeInterval 2;").replace(
+    "writePrecision 12;", "writePrecision 15;")
 
 POINT_DISPLACEMENT = """
 dimensions [0 1 0 0 0 0 0];
@@ -138,39 +128,16 @@ def block_mesh():
 
 
 def rigid_body_dict(scale):
-    return f"""
-dynamicFvMesh dynamicMotionSolverFvMesh;
-motionSolverLibs (rigidBodyMeshMotion foamFmiRigidBodyCoupling);
-motionSolver addedMassRigidBodyMotion;
-addedMassRigidBodyMotionCoeffs
-{{
-    test yes;
-    nIter 1;
-    report off;
-    rho rhoInf;
-    rhoInf 1000;
-    g (0 0 -9.81);
-    solver {{ type Newmark; }}
-    bodies
-    {{
-        box
-        {{
-            type rigidBody;
-            parent root;
-            mass 1;
-            centreOfMass (0 0 0);
-            inertia (0.1 0 0 0.1 0 0.1);
-            transform (1 0 0 0 1 0 0 0 1) (1.5 0.05 0.5);
-            joint {{ type Pz; }}
-            patches (box);
-            innerDistance {INNER};
-            outerDistance {OUTER};
-            {scale}
-        }}
-    }}
-    coupling {{ addedMass on; }}
-}}
-"""
+    """test_added_mass_entries' dynamicMeshDict for this flume's box, with
+    the distances of this test and the scale entry given."""
+    text = entries.mesh_dict()
+    for old, new in (("(0.5 0.5 0)", "(1.5 0.05 0.5)"), ("patches (body);", "patches (box);"),
+                     ("innerDistance 0.1;", f"innerDistance {INNER};"),
+                     ("outerDistance 0.6;", f"outerDistance {OUTER}; {scale}")):
+        if old not in text:
+            raise RuntimeError(f"test_added_mass_entries.mesh_dict: no '{old}'")
+        text = text.replace(old, new)
+    return text
 
 
 def six_dof_dict(scale):
@@ -204,25 +171,9 @@ addedMassSixDoFRigidBodyMotionCoeffs
 
 
 def make_case(work, name, dynamic_mesh_dict):
-    case = os.path.join(work, name)
-    for folder in ("system", "constant", "0"):
-        os.makedirs(os.path.join(case, folder))
-    files = {
-        "system/controlDict": ("controlDict", CONTROL),
-        "system/blockMeshDict": ("blockMeshDict", block_mesh()),
-        "system/fvSchemes": ("fvSchemes", SCHEMES),
-        "system/fvSolution": ("fvSolution", ""),
-        "constant/dynamicMeshDict": ("dynamicMeshDict", dynamic_mesh_dict),
-    }
-    for path, (obj, body) in files.items():
-        with open(os.path.join(case, path), "w") as f:
-            f.write(foam_file(obj, body))
-    with open(os.path.join(case, "0", "pointDisplacement"), "w") as f:
-        f.write(foam_file("pointDisplacement", POINT_DISPLACEMENT).replace(
-            "class dictionary", "class pointVectorField"))
-    subprocess.run(["blockMesh", "-case", case], stdout=subprocess.DEVNULL,
-                   stderr=subprocess.STDOUT, check=True)
-    return case
+    """The flume in work/name, meshed, with the given dynamicMeshDict."""
+    return entries.make_case(work, name, dynamic_mesh_dict, POINT_DISPLACEMENT,
+                             control=CONTROL, block_mesh=block_mesh())
 
 
 def read_points(path):
