@@ -80,7 +80,10 @@ Foam::tmp<Foam::scalarField> scaledDistance
         points.append(procPoints[proci]);
         for (const triFace& t : procTriangles[proci])
         {
-            triangles.append(triFace(t[0] + offset, t[1] + offset, t[2] + offset));
+            triangles.append
+            (
+                triFace(t[0] + offset, t[1] + offset, t[2] + offset)
+            );
         }
     }
 
@@ -94,7 +97,12 @@ Foam::tmp<Foam::scalarField> scaledDistance
 
     const pointField samples(cmptMultiply(s, points0));
     List<pointIndexHit> nearest;
-    search.findNearest(samples, scalarField(samples.size(), sqr(within)), nearest);
+    search.findNearest
+    (
+        samples,
+        scalarField(samples.size(), sqr(within)),
+        nearest
+    );
 
     scalarField& dist = tdist.ref();
     forAll(nearest, pointi)
@@ -114,7 +122,10 @@ Foam::tmp<Foam::scalarField> scaledDistance
 
 Foam::vector Foam::bodyMorphing::readDistanceScale(const dictionary& dict)
 {
-    const vector s(dict.lookupOrDefault<vector>("distanceScale", vector::one));
+    const vector s
+    (
+        dict.lookupOrDefault<vector>("distanceScale", vector::one)
+    );
     if (cmptMin(s) <= 0)
     {
         FatalIOErrorInFunction(dict)
@@ -148,7 +159,8 @@ void Foam::bodyMorphing::weights
     else
     {
         // Beyond do_ the weight is 0 whatever the distance
-        tdist = scaledDistance(pMesh(), patchSet, points0, distanceScale, do_);
+        tdist =
+            scaledDistance(pMesh(), patchSet, points0, distanceScale, do_);
     }
 
     // Scaling: 1 up to di then linear down to 0 at do away from patches
