@@ -1,6 +1,7 @@
 """OpenFOAM dictionary files as the scripts need them: an entry's value
 (scalar, word, vector) found by its keyword anywhere in the file, the
-patches of constant/polyMesh/boundary, and entries set in place.
+patches of constant/polyMesh/boundary, the points of an ASCII
+polyMesh/points file, and entries set in place.
 
 This is a reader of flat entries by regular expression, not a parser:
 a keyword is found wherever it first stands (in any sub-dictionary), and
@@ -73,6 +74,21 @@ def read_vector(path, key):
     except ValueError:
         raise DictionaryError("%s in %s is not a list of numbers: (%s)"
                               % (key, path, m.group(1))) from None
+
+
+def read_points(path):
+    """[(x, y, z)] of the ASCII points file at path (polyMesh/points: its
+    count, then one '(x y z)' a line)."""
+    text = read_text(path)
+    m = re.search(r"^\s*(\d+)\s*\(", text, re.M)
+    if not m:
+        raise DictionaryError("%s: no list of points (an ASCII polyMesh/points file)" % path)
+    points = [tuple(float(v) for v in p.groups()) for p in re.finditer(
+        r"\(\s*([^\s()]+)\s+([^\s()]+)\s+([^\s()]+)\s*\)", text[m.end():])]
+    if len(points) != int(m.group(1)):
+        raise DictionaryError("%s: %d points read, the file says %s"
+                              % (path, len(points), m.group(1)))
+    return points
 
 
 def boundary_patches(text):

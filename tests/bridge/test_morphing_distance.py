@@ -26,12 +26,12 @@ solvers.
 """
 import math
 import os
-import re
 import subprocess
 import sys
 
 import test_added_mass_entries as entries
 from foamfmi.bridgecase import foam_file
+from foamfmi.dictionary import read_points
 from test_added_mass_entries import refused, run, run_checks
 
 BOX = (1.25, 1.75, 0.4, 0.6)  # x0, x1, z0, z1 [m]
@@ -174,14 +174,6 @@ def make_case(work, name, dynamic_mesh_dict):
     """The flume in work/name, meshed, with the given dynamicMeshDict."""
     return entries.make_case(work, name, dynamic_mesh_dict, POINT_DISPLACEMENT,
                              control=CONTROL, block_mesh=block_mesh())
-
-
-def read_points(path):
-    with open(path) as f:
-        text = f.read()
-    body = text[text.index("(", text.index("FoamFile") + 100):]
-    return [tuple(float(v) for v in m.groups())
-            for m in re.finditer(r"\(([-+0-9.eE]+) ([-+0-9.eE]+) ([-+0-9.eE]+)\)", body)]
 
 
 def run_parallel(case):

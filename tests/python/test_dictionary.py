@@ -60,6 +60,35 @@ class Read(unittest.TestCase):
                           ("floatingObject", "wall", 12)])
 
 
+class Points(unittest.TestCase):
+    POINTS = ("/*--- banner ---*/\nFoamFile\n{\n    version 2.0;\n    format ascii;\n"
+              "    class vectorField;\n    object points;\n}\n// * * * //\n\n\n"
+              "3\n(\n(0 0 0)\n(1.25 -0.5 4e-3)\n(2 0.1 1)\n)\n")
+
+    def write(self, text):
+        d = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, d)
+        path = os.path.join(d, "points")
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_points(self):
+        path = self.write(self.POINTS)
+        self.assertEqual(dictionary.read_points(path),
+                         [(0.0, 0.0, 0.0), (1.25, -0.5, 0.004), (2.0, 0.1, 1.0)])
+
+    def test_count_that_differs(self):
+        path = self.write(self.POINTS.replace("3\n(", "4\n("))
+        with self.assertRaisesRegex(dictionary.DictionaryError, "3 points read, the file says 4"):
+            dictionary.read_points(path)
+
+    def test_not_a_points_file(self):
+        path = self.write("FoamFile { object points; }\nvalue (0 0 0);\n")
+        with self.assertRaisesRegex(dictionary.DictionaryError, "no list of points"):
+            dictionary.read_points(path)
+
+
 class Write(unittest.TestCase):
     def setUp(self):
         self.folder = tempfile.mkdtemp(prefix="foamfmi.dictionary.")

@@ -54,12 +54,11 @@ pass "the added-mass coupling ran: $n estimates, first: $(grep -m 1 "^    added 
 
 /usr/bin/python3 - "$case" $restTime $restBound $restPitch $minWave $minHeave $minPitch \
     > "$workDir/check.out" <<'PYTHON' || fail "see above"
-import re
 import sys
 
 import numpy as np
 
-from foamfmi import postprocessing
+from foamfmi import dictionary, postprocessing
 
 case = sys.argv[1]
 rest_time, rest_bound, rest_pitch, min_wave, min_heave, min_pitch = map(float, sys.argv[2:8])
@@ -94,13 +93,8 @@ if wave_range < min_wave:
 # The long morphing (the default at H = 0.10 m): the bed's points where
 # blockMesh put them, to the digits written; those beside the gauge at
 # x = 1 m, 0.85 m ahead of the box, moved with it
-def points(path):
-    with open(path) as f:
-        text = f.read()
-    return np.array(re.findall(r"^\(([-+0-9.eE]+) ([-+0-9.eE]+) ([-+0-9.eE]+)\)$", text,
-                               re.MULTILINE), dtype=float)
-p0 = points(case + "/constant/polyMesh/points")
-p1 = points(case + "/%g/polyMesh/points" % t[-1])
+p0 = np.array(dictionary.read_points(case + "/constant/polyMesh/points"))
+p1 = np.array(dictionary.read_points(case + "/%g/polyMesh/points" % t[-1]))
 if p0.shape != p1.shape or len(p0) == 0:
     sys.exit("polyMesh/points: %s points at the start, %s at %g s" % (p0.shape, p1.shape, t[-1]))
 moved = np.abs(p1 - p0).max(axis=1)
