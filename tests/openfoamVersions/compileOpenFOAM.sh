@@ -1,9 +1,9 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
-# Every OpenFOAM-side source of the project, compiled against OpenFOAM v2312
-# (ESI, api 2312) as a user with their own OpenFOAM builds it: v2312's
-# etc/bashrc sourced, then the project's etc/bashrc (which must keep that
-# environment: FOAMFMI_OPENFOAM=own), then foam-fmi-bridge/Allwmake with
+# Every OpenFOAM-side source of the project, compiled against a newer OpenFOAM
+# (ESI v2312 or v2506) as a user with their own OpenFOAM builds it: that
+# version's etc/bashrc sourced, then the project's etc/bashrc (which must keep
+# that environment: FOAMFMI_OPENFOAM=own), then foam-fmi-bridge/Allwmake with
 # wmake's "objects" target (compile, do not link: the headers, wmake and the
 # solver sources are there, no libraries).
 #
@@ -13,24 +13,34 @@
 #  - no warning in the project's own files with -Wsuggest-override: an
 #    overriding member without `override` could silently stop overriding
 #    when OpenFOAM changes a signature, as writeObject did in v2006;
-#  - a v2312 whose FOAM_LIBBIN lacks a library a part links (liboverset.so
+#  - an OpenFOAM whose FOAM_LIBBIN lacks a library a part links (liboverset.so
 #    for the overset solver) stops foam-fmi-bridge/Allwmake at once with a
 #    message naming it.
 #
-# The sources: ../shared/openfoam-v2312/openfoam-v2312-src.tar.xz beside the
-# repository (or $FOAMFMI_OPENFOAM_V2312_TARBALL), unpacked into the build
-# folder given as the argument, never into the repository. Without it the
-# test is skipped (exit 77) with a message, except under CI=true, where that
-# is a failure.
+# The sources, beside the repository (or in $FOAMFMI_OPENFOAM_TARBALL):
+#   v2312  ../shared/openfoam-v2312/openfoam-v2312-src.tar.xz (of2312/: src
+#          with most lnInclude folders, the solver sources, wmake)
+#   v2506  ../shared/openfoam-v2506/OpenFOAM-v2506.tar.xz (OpenFOAM-v2506/:
+#          the whole release, no lnInclude folders)
+# unpacked into the build folder given as the argument, never into the
+# repository. Without it the test is skipped (exit 77) with a message, except
+# under CI=true, where that is a failure.
 #
-# Usage: compileV2312.sh BUILD_DIR          (about 2 minutes on 2 cores)
+# Usage: compileOpenFOAM.sh v2312|v2506 BUILD_DIR   (about 2 minutes on 2 cores)
 #------------------------------------------------------------------------------
 set -u -o pipefail
 
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd -P)
-testName=compileV2312
-[ "$#" -eq 1 ] || { echo "Usage: $0 BUILD_DIR" 1>&2; exit 2; }
-work="$(realpath -m "$1")/openfoam-v2312"
+[ "$#" -eq 2 ] || { echo "Usage: $0 v2312|v2506 BUILD_DIR" 1>&2; exit 2; }
+version=$1
+api=${version#v}
+case "$version" in
+    v2312) tarName=openfoam-v2312-src.tar.xz treeName=of2312 ;;
+    v2506) tarName=OpenFOAM-v2506.tar.xz treeName=OpenFOAM-v2506 ;;
+    *) echo "Usage: $0 v2312|v2506 BUILD_DIR" 1>&2; exit 2 ;;
+esac
+testName=compile${version^}
+work="$(realpath -m "$2")/openfoam-$version"
 start=$SECONDS
 
 fail()
@@ -44,52 +54,61 @@ pass()
     echo "ok   [$testName]: $*"
 }
 
-tarball="${FOAMFMI_OPENFOAM_V2312_TARBALL:-$top/../shared/openfoam-v2312/openfoam-v2312-src.tar.xz}"
+tarball="${FOAMFMI_OPENFOAM_TARBALL:-$top/../shared/openfoam-$version/$tarName}"
 if [ ! -f "$tarball" ]
 then
     if [ "${CI:-}" = true ]
     then
-        fail "$tarball not found: CI must check the build against v2312"
+        fail "$tarball not found: CI must check the build against $version"
     fi
     echo "SKIP [$testName]: $tarball not found (../shared beside the" \
-         "repository holds it); the build against v2312 is not checked"
+         "repository holds it); the build against $version is not checked"
     exit 77
 fi
 
-# --- v2312's sources, wmake's tools, lnInclude folders ----------------------
+# --- The sources, wmake's tools, lnInclude folders ---------------------------
 mkdir -p "$work" || fail "cannot create $work"
-stamp="$work/of2312/.unpacked-$(stat -c '%s-%Y' "$tarball")"
+tree="$work/$treeName"
+stamp="$tree/.unpacked-$(stat -c '%s-%Y' "$tarball")"
 if [ ! -f "$stamp" ]
 then
-    rm -rf "$work/of2312"
+    rm -rf "$tree"
     tar -xJf "$tarball" -C "$work" || fail "cannot unpack $tarball into $work"
-    [ -f "$work/of2312/etc/bashrc" ] || fail "$tarball has no of2312/etc/bashrc"
+    [ -f "$tree/etc/bashrc" ] || fail "$tarball has no $treeName/etc/bashrc"
     touch "$stamp"
 fi
 
-# v2312 SCRIPT: run SCRIPT in a shell with v2312's environment and nothing
-# of the host's OpenFOAM (OpenFOAM's etc/bashrc reads the positional
-# parameters as settings: none are passed to it)
-v2312()
+# inOpenFOAM SCRIPT: run SCRIPT in a shell with that OpenFOAM's environment
+# and nothing of the host's OpenFOAM (OpenFOAM's etc/bashrc reads the
+# positional parameters as settings: none are passed to it)
+inOpenFOAM()
 {
     env -i HOME="$HOME" PATH=/usr/local/bin:/usr/bin:/bin CI="${CI:-}" \
         bash -c 'script=$1; set --; set +u
-                 . "$0/of2312/etc/bashrc" || exit 1
-                 eval "$script"' "$work" "$1"
+                 . "$0/etc/bashrc" || exit 1
+                 eval "$script"' "$tree" "$1"
 }
 
-v2312 '[ -x "$WM_PROJECT_DIR/platforms/tools/linux64Gcc/wmkdepend" ] \
+inOpenFOAM '[ -x "$WM_PROJECT_DIR/platforms/tools/linux64Gcc/wmkdepend" ] \
     || "$WM_DIR/src/Allmake" > /dev/null' \
-    || fail "building wmake's tools of v2312 failed"
+    || fail "building wmake's tools of $version failed"
 
-# The tarball has most lnInclude folders; make those the project includes
-# and it lacks
-for dir in $(sed -n 's|.*-I$(LIB_SRC)/\([^ ]*\)/lnInclude.*|\1|p' \
-                 $(find "$top/foam-fmi-bridge" -path '*/Make/options') | sort -u)
+# The lnInclude folders: every one of src for the whole release (OpenFOAM's
+# headers include other libraries' headers), else those the project
+# includes that the tree lacks
+if [ -d "$tree/applications/utilities" ] && [ ! -f "$tree/.lnInclude" ]
+then
+    inOpenFOAM 'wmakeLnIncludeAll "$WM_PROJECT_DIR/src"' > /dev/null 2>&1 \
+        || fail "wmakeLnIncludeAll failed in $tree/src"
+    touch "$tree/.lnInclude"
+fi
+for dir in OpenFOAM OSspecific/POSIX \
+    $(sed -n 's|.*-I$(LIB_SRC)/\([^ ]*\)/lnInclude.*|\1|p' \
+          $(find "$top/foam-fmi-bridge" -path '*/Make/options') | sort -u)
 do
-    [ -d "$work/of2312/src/$dir/lnInclude" ] && continue
-    [ -d "$work/of2312/src/$dir" ] || fail "v2312 has no src/$dir"
-    v2312 "wmakeLnInclude -u '$work/of2312/src/$dir'" > /dev/null 2>&1 \
+    [ -d "$tree/src/$dir/lnInclude" ] && continue
+    [ -d "$tree/src/$dir" ] || fail "$version has no src/$dir"
+    inOpenFOAM "wmakeLnInclude -u '$tree/src/$dir'" > /dev/null 2>&1 \
         || fail "wmakeLnInclude src/$dir failed"
 done
 
@@ -101,16 +120,16 @@ find "$work/foam-fmi-bridge" \( -name 'linux64*' -path '*/Make/*' -o -name lnInc
 
 # --- Compile -----------------------------------------------------------------
 log="$work/log.Allwmake"
-v2312 '. "'"$top"'/etc/bashrc"
-    [ "$FOAMFMI_OPENFOAM" = own ] || { echo "etc/bashrc did not keep v2312: FOAMFMI_OPENFOAM=$FOAMFMI_OPENFOAM"; exit 1; }
+inOpenFOAM '. "'"$top"'/etc/bashrc"
+    [ "$FOAMFMI_OPENFOAM" = own ] || { echo "etc/bashrc did not keep '"$version"': FOAMFMI_OPENFOAM=$FOAMFMI_OPENFOAM"; exit 1; }
     export FOAM_USER_LIBBIN="'"$work"'/platforms/lib" FOAM_USER_APPBIN="'"$work"'/platforms/bin"
     export FOAMFMI_ALIAS_SAFE_SOLVERS=yes WM_NCOMPPROCS=$(nproc)
     export FOAM_EXTRA_CXXFLAGS="-O0 -Wsuggest-override"
     echo "OpenFOAM api $FOAM_API in $WM_PROJECT_DIR"
     "'"$work"'/foam-fmi-bridge/Allwmake" objects' > "$log" 2>&1
 status=$?
-grep -q "OpenFOAM api 2312 " "$log" || { tail -n 20 "$log" 1>&2; fail "the environment is not v2312's (see $log)"; }
-grep -q -- "-DOPENFOAM=2312" "$log" || fail "wmake did not compile with -DOPENFOAM=2312 (see $log)"
+grep -q "OpenFOAM api $api " "$log" || { tail -n 20 "$log" 1>&2; fail "the environment is not $version's (see $log)"; }
+grep -q -- "-DOPENFOAM=$api" "$log" || fail "wmake did not compile with -DOPENFOAM=$api (see $log)"
 
 nSources=0
 missing=""
@@ -127,20 +146,20 @@ done
 if [ "$status" -ne 0 ] || [ -n "$missing" ]
 then
     grep -E "error|Error" -A3 "$log" | head -n 40 1>&2
-    fail "not compiled against v2312:${missing:- (Allwmake exit $status)} (see $log)"
+    fail "not compiled against $version:${missing:- (Allwmake exit $status)} (see $log)"
 fi
 [ "$nSources" -ge 20 ] || fail "only $nSources sources found under foam-fmi-bridge"
 
-# Warnings located in the project's files (v2312's own headers lack
+# Warnings located in the project's files (OpenFOAM's own headers lack
 # override in places: theirs are not ours to fix)
-ownWarnings=$(grep -E ": warning: " "$log" | grep -v "^$work/of2312/" | sort -u)
+ownWarnings=$(grep -E ": warning: " "$log" | grep -v "^$tree/" | sort -u)
 if [ -n "$ownWarnings" ]
 then
     echo "$ownWarnings" 1>&2
-    fail "warnings in the project's sources against v2312 (see $log)"
+    fail "warnings in the project's sources against $version (see $log)"
 fi
 pass "$nSources sources in $(find "$work/foam-fmi-bridge" -path '*/Make/files' | wc -l)" \
-     "Make folders compile against v2312 with -Wsuggest-override, no warning of ours"
+     "Make folders compile against $version with -Wsuggest-override, no warning of ours"
 
 # --- A missing OpenFOAM library is named before wmake starts -----------------
 fakeLib="$work/fakeLibbin"
@@ -156,7 +175,7 @@ for lib in finiteVolume meshTools rigidBodyDynamics sixDoFRigidBodyMotion \
 do
     : > "$fakeLib/lib$lib.so"
 done
-message=$(v2312 '. "'"$top"'/etc/bashrc"
+message=$(inOpenFOAM '. "'"$top"'/etc/bashrc"
     export FOAM_LIBBIN="'"$fakeLib"'" FOAMFMI_ALIAS_SAFE_SOLVERS=yes
     export FOAM_USER_LIBBIN="'"$work"'/platforms/lib" FOAM_USER_APPBIN="'"$work"'/platforms/bin"
     "'"$work"'/foam-fmi-bridge/Allwmake"' 2>&1)
