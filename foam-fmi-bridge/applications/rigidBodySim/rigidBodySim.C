@@ -36,7 +36,6 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
-#include "OFstream.H"
 #include "rigidBodyMotion.H"
 #include "rigidBody.H"
 #include "restartFiles.H"
@@ -103,7 +102,7 @@ autoPtr<IOdictionary> startState(const Time& runTime)
 }
 
 
-void writeHeader(OFstream& os, const RBD::rigidBodyMotion& motion)
+void writeHeader(Ostream& os, const RBD::rigidBodyMotion& motion)
 {
     os  << "# Time";
     for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
@@ -114,7 +113,7 @@ void writeHeader(OFstream& os, const RBD::rigidBodyMotion& motion)
 }
 
 
-void writeRow(OFstream& os, const scalar t, const RBD::rigidBodyMotion& motion)
+void writeRow(Ostream& os, const scalar t, const RBD::rigidBodyMotion& motion)
 {
     os  << t;
     for (label bodyID = 1; bodyID < motion.nBodies(); ++bodyID)
@@ -174,14 +173,21 @@ int main(int argc, char *argv[])
         << motion.nDoF() << " degrees of freedom, " << nIter
         << " solve(s) per time step" << nl << endl;
 
-    autoPtr<OFstream> bodiesPtr
+    autoPtr<rowFile> bodiesPtr
     (
         bodySim::newBodiesTable(runTime, "rigidBodySim")
     );
-    OFstream& bodies = *bodiesPtr;
-    writeHeader(bodies, motion);
-    writeRow(bodies, runTime.value(), motion);
-    bodies.flush();
+    rowFile& bodies = *bodiesPtr;
+    bodySim::appendRows
+    (
+        bodies,
+        "the header and " + bodySim::rowOf(runTime.value()),
+        [&](Ostream& os)
+        {
+            writeHeader(os, motion);
+            writeRow(os, runTime.value(), motion);
+        }
+    );
 
     // No fluid: no joint forces and no external body forces
     const scalarField tau(motion.nDoF(), Zero);
@@ -197,10 +203,14 @@ int main(int argc, char *argv[])
             motion.solve(runTime.value(), runTime.deltaTValue(), tau, fx);
         }
 
-        writeRow(bodies, runTime.value(), motion);
         // The step is complete: its row reaches the file now, so that a run
         // ended by an error, a crash or a kill keeps it
-        bodies.flush();
+        bodySim::appendRows
+        (
+            bodies,
+            bodySim::rowOf(runTime.value()),
+            [&](Ostream& os) { writeRow(os, runTime.value(), motion); }
+        );
 
         // OpenFOAM's uniform/time first: a time directory that has it is
         // known to be written by a run, and a restart from it checks that

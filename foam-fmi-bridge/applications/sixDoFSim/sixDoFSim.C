@@ -45,7 +45,6 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
-#include "OFstream.H"
 #include "sixDoFRigidBodyMotion.H"
 #include "restartFiles.H"
 #include "bodySim.H"
@@ -84,7 +83,7 @@ IOobject bodiesIO(const Time& runTime)
 }
 
 
-void writeHeader(OFstream& os, const wordList& names)
+void writeHeader(Ostream& os, const wordList& names)
 {
     os  << "# Time";
     for (const word& name : names)
@@ -97,7 +96,7 @@ void writeHeader(OFstream& os, const wordList& names)
 
 void writeRow
 (
-    OFstream& os,
+    Ostream& os,
     const scalar t,
     const PtrList<sixDoFRigidBodyMotion>& motions
 )
@@ -176,11 +175,18 @@ int main(int argc, char *argv[])
     Info<< motions.size() << " bodies " << names << ", " << nIter
         << " solve(s) per time step" << nl << endl;
 
-    autoPtr<OFstream> outPtr(bodySim::newBodiesTable(runTime, "sixDoFSim"));
-    OFstream& out = *outPtr;
-    writeHeader(out, names);
-    writeRow(out, runTime.value(), motions);
-    out.flush();
+    autoPtr<rowFile> outPtr(bodySim::newBodiesTable(runTime, "sixDoFSim"));
+    rowFile& out = *outPtr;
+    bodySim::appendRows
+    (
+        out,
+        "the header and " + bodySim::rowOf(runTime.value()),
+        [&](Ostream& os)
+        {
+            writeHeader(os, names);
+            writeRow(os, runTime.value(), motions);
+        }
+    );
 
     while (runTime.run())
     {
@@ -205,10 +211,14 @@ int main(int argc, char *argv[])
             }
         }
 
-        writeRow(out, runTime.value(), motions);
         // The step is complete: its row reaches the file now, so that a run
         // ended by an error, a crash or a kill keeps it
-        out.flush();
+        bodySim::appendRows
+        (
+            out,
+            bodySim::rowOf(runTime.value()),
+            [&](Ostream& os) { writeRow(os, runTime.value(), motions); }
+        );
 
         // OpenFOAM's uniform/time first: a time directory that has it is
         // known to be written by a run, and a restart from it checks that

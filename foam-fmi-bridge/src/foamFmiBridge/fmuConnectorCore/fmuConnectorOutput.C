@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iostream>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -46,8 +49,18 @@ Foam::label& latestTimeIndex()
     return index;
 }
 
+//- Whether the process is ending (the exit handler runs, or a destructor
+//  while an exception unwinds): a row that cannot be written is then
+//  reported on the standard error, not as a FatalError
+bool& ending()
+{
+    static bool value = false;
+    return value;
+}
+
 void writeCompletedRows()
 {
+    ending() = true;
     for (Foam::fmuConnectorOutput* output : liveOutputs())
     {
         output->flush(false);
@@ -142,19 +155,26 @@ void Foam::fmuConnectorOutput::commit()
     buffer_ += '\n';
     pending_ = false;
 
-    writeBuffer();
+    std::string what("the row of t = ");
+    appendNumber(what, pendingTime_);
+    writeBuffer(what + " s of connector " + name_);
 }
 
 
-void Foam::fmuConnectorOutput::writeBuffer()
+void Foam::fmuConnectorOutput::writeBuffer(const std::string& what)
 {
-    if (buffer_.empty())
-    {
-        return;
-    }
     // Flushed: the row is in the file before the next step calls the FMU
-    file_.write(buffer_.data(), buffer_.size());
-    file_.flush();
+    if (!ending() && !std::uncaught_exceptions())
+    {
+        file_->append(buffer_, what);
+    }
+    else if (const int error = file_->tryAppend(buffer_))
+    {
+        std::cerr
+            << "--> FOAM Serious Error: cannot write " << what << " to "
+            << file_->path() << ": " << std::strerror(error)
+            << " (a full disk, or a file-size limit: ulimit -f)" << std::endl;
+    }
     buffer_.clear();
 }
 
@@ -195,15 +215,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
        /(startTimeName.empty() ? runTime.timeName() : startTimeName)
     );
     mkDir(dir);
-    const fileName path(dir/(name + ".dat"));
-
-    file_.open(path);
-    if (!file_)
-    {
-        FatalErrorInFunction
-            << "connector " << name << ": cannot open " << path
-            << " for writing" << exit(FatalError);
-    }
+    file_.reset(new rowFile(dir/(name + ".dat")));
 
     buffer_ = "# " + description + "\n# Time";
     for (const word& output : fmu_.outputNames())
@@ -211,7 +223,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
         buffer_ += ' ' + output;
     }
     buffer_ += '\n';
-    writeBuffer();
+    writeBuffer("the header of connector " + name_);
 
     static const bool handlerInstalled =
         (std::atexit(writeCompletedRows) == 0);
@@ -219,7 +231,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     {
         WarningInFunction
             << "cannot install the exit handler: a run ended by an error"
-            << " may lose the last completed row of " << path << endl;
+            << " may lose the last completed row of " << file_->path() << endl;
     }
     liveOutputs().append(this);
 }
@@ -280,7 +292,6 @@ void Foam::fmuConnectorOutput::flush(const bool final)
     {
         commit();
     }
-    writeBuffer();
 }
 
 
@@ -299,7 +310,7 @@ bool Foam::fmuConnectorOutput::writeObject
     // The time is written after the step's last solve: its row is final
     const_cast<fmuConnectorOutput&>(*this).flush(true);
     writeShape();
-    return file_.good();
+    return true;
 }
 
 

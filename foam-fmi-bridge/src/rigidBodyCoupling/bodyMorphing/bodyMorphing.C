@@ -66,10 +66,17 @@ Foam::tmp<Foam::scalarField> scaledDistance
     List<triFaceList> procTriangles(Pstream::nProcs());
     procPoints[Pstream::myProcNo()] = localPoints;
     procTriangles[Pstream::myProcNo()] = localTriangles;
+    // Pstream::scatterList is deprecated in v2506 for allGatherList (in
+    // v2312)
+    #if OPENFOAM >= 2312
+    Pstream::allGatherList(procPoints);
+    Pstream::allGatherList(procTriangles);
+    #else
     Pstream::gatherList(procPoints);
     Pstream::scatterList(procPoints);
     Pstream::gatherList(procTriangles);
     Pstream::scatterList(procTriangles);
+    #endif
 
     // All processors' triangles in one surface
     DynamicList<point> points;

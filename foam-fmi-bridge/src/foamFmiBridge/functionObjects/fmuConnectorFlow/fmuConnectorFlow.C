@@ -102,7 +102,12 @@ void Foam::functionObjects::fmuConnectorFlow::startFlow(const bool restored)
                     ->startShapePoints();
         }
     }
+    // Pstream::scatter is deprecated from v2406 for broadcast (in v2312)
+    #if OPENFOAM >= 2312
+    Pstream::broadcast(points);
+    #else
     Pstream::scatter(points);
+    #endif
 
     bool any = false;
     forAll(points, i)
@@ -320,7 +325,12 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
                 fmuConnectorCore::find(time_, connectors_[i])->shapePoints();
         }
     }
+    // Pstream::scatter is deprecated from v2406 for broadcast (in v2312)
+    #if OPENFOAM >= 2312
+    Pstream::broadcast(points);
+    #else
     Pstream::scatter(points);
+    #endif
 
     const List<vectorField> flows(sample(points));
     if (Pstream::master())

@@ -1,0 +1,165 @@
+"""No row lost without a word: rigidBodySim and sixDoFSim run under a
+file-size limit (ulimit -f, SIGXFSZ ignored, so that the write fails with
+EFBIG as on a full disk instead of killing the process).
+
+Five cases: rigidBodySim with a spring to the world (linearSpring.fmu),
+with a catenary line (catenary.fmu) and with OpenFOAM's own spring;
+sixDoFSim with the spring FMU and with OpenFOAM's own. A connector's rows
+are the longer, so its file reaches the limit first; without one,
+bodies.dat does. Each run must
+ - stop with a non-zero exit code and a FatalError that names the file
+   that reached the limit, the row's time and the cause;
+ - leave every file it wrote (bodies.dat, the connector's .dat) with whole
+   rows only: each ends in a newline and every row has the header's
+   number of columns;
+ - leave the file it names within one row of the limit (the limit was
+   hit there, not elsewhere).
+Without the checks, the run ended with exit code 0 and a cut row.
+"""
+import os
+import resource
+import signal
+import subprocess
+import sys
+
+from foamfmi.bridgecase import (Case, check, fmu_path, fmu_restraint, linear_spring, rigid_body,
+                                rigid_body_model, summary)
+from foamfmi.mooringcase import DEPTH, catenary_parameters
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body, vec
+
+LIMIT = 2000000  # bytes: above an FMU's library (1.6 MB), which is unpacked too
+SPRING = {"stiffness": 50.0, "damping": 0.5, "restLength": 0.5}
+
+
+def limited():
+    """In the child: the file-size limit, and SIGXFSZ ignored."""
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (LIMIT, LIMIT))
+
+
+def whole_rows(path):
+    """(rows, longest row in bytes) of a table, or raise AssertionError."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data and not data.endswith(b"\n"):
+        raise AssertionError(f"{path}: ends in a cut row: {data[-80:]!r}")
+    columns, rows, longest = None, 0, 0
+    for line in data.decode().splitlines():
+        if line.startswith("#"):
+            columns = len(line[1:].split())
+            continue
+        if len(line.split()) != columns:
+            raise AssertionError(f"{path}: row {rows + 1} has {len(line.split())} "
+                                 f"columns, the header {columns}")
+        rows += 1
+        longest = max(longest, len(line) + 1)
+    return rows, longest
+
+
+def run_limited(command):
+    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True, preexec_fn=limited)
+    return result.returncode, result.stdout
+
+
+def verdict(name, returncode, log, files, expected=None):
+    """Checks of one run (1 for each that failed); files: {label: path};
+    expected: the label of the file that must reach the limit first (None:
+    any of them)."""
+    checks = [check(f"{name}: stops with an error", returncode != 0, f"exit code {returncode}")]
+    message = [line for line in log.splitlines() if "cannot write" in line]
+    named = [label for label, path in files.items() if any(path in line for line in message)]
+    checks.append(check(
+        f"{name}: the FatalError names the file, the row's time and the cause",
+        len(named) == 1 and (expected is None or named == [expected])
+        and any("the row of t = " in line and "File too large" in line for line in message),
+        " / ".join(message[:2]) or log[-600:]))
+    for label, path in files.items():
+        try:
+            rows, longest = whole_rows(path)
+            ok, detail = True, f"{rows} whole rows, {os.path.getsize(path)} bytes"
+            if label in named:
+                ok = LIMIT - longest < os.path.getsize(path) <= LIMIT
+                detail += f", within one row ({longest} bytes) of the limit {LIMIT}"
+        except AssertionError as error:
+            ok, detail = False, str(error)
+        checks.append(check(f"{name}: {label} has whole rows only", ok, detail))
+    return checks
+
+
+def rigid_case(name, restraint, body):
+    return Case(name, rigid_body_model(body, restraint, g=(0, 0, -9.81)), 100.0, 0.001)
+
+
+def main():
+    checks = []
+    cases = []
+    spring = fmu_restraint("spring", fmu_path("linearSpring"), "hull",
+                           {**SPRING, "A.p": "(0 0 0)", "B.p": "(0 0 1.2)"}, report="off")
+    line = fmu_restraint("line", fmu_path("catenary"), "hull",
+                         {**catenary_parameters(seabedFriction=0), "A.p": "(0 0 0)",
+                          "B.p": (-80.0, 0.0, -DEPTH)}, report="off")
+    # The spring's body hangs from it and bobs; the line's body, heavy, slides
+    # on x 80 m from the anchor, the line partly on the seabed. A
+    # connector's rows are the longer (180 bytes against bodies.dat's 90):
+    # its file reaches the limit first; with OpenFOAM's own spring instead,
+    # bodies.dat does.
+    builtin = linear_spring("spring", "hull", (0, 0, 1.2), (0, 0, 0), 50.0, 0.5, 0.5)
+    for name, restraint, connector, body, expected in [
+            ("rigidBodySim spring", spring, "spring",
+             rigid_body("hull", 2.0, 0.1, (0, 0, 0.6), "Pz"), "connector"),
+            ("rigidBodySim catenary", line, "line",
+             rigid_body("hull", 1e6, 1e5, (0, 0, 0), "Px"), "connector"),
+            ("rigidBodySim built-in spring", builtin, None,
+             rigid_body("hull", 2.0, 0.1, (0, 0, 0.6), "Pz"), "bodies")]:
+        case = rigid_case(name.replace(" ", "."), restraint, body)
+        cases.append(case)
+        returncode, log = run_limited(["rigidBodySim", "-case", case.dir])
+        files = {"bodies": os.path.join(case.dir, "postProcessing", "rigidBodySim", "0", "bodies.dat")}
+        if connector:
+            files["connector"] = os.path.join(case.dir, "postProcessing", "fmuConnectors", "0",
+                                              connector + ".dat")
+        checks += verdict(name, returncode, log, files, expected)
+
+    sixdof_spring = f"""            spring
+            {{
+                sixDoFRigidBodyMotionRestraint fmuConnector;
+                fmu "{fmu_path('linearSpring')}";
+                body hull;
+                report off;
+                parameters
+                {{
+                    stiffness 50; damping 0.5; restLength 0.5;
+                    A.p (0 0 0); B.p {vec((0.0, 0.0, 1.2))};
+                }}
+            }}
+"""
+    sixdof_builtin = """            spring
+            {
+                sixDoFRigidBodyMotionRestraint linearSpring;
+                anchor (0 0 1.2); refAttachmentPt (0 0 0.6);
+                stiffness 50; damping 0.5; restLength 0.5;
+            }
+"""
+    for name, restraints, expected in [("sixDoFSim spring", sixdof_spring, "connector"),
+                                       ("sixDoFSim built-in spring", sixdof_builtin, "bodies")]:
+        case = SixDoFCase(name.replace(" ", "."),
+                          {"hull": sixdof_body(2.0, 0.1, (0.0, 0.0, 0.6), "Newmark", restraints)},
+                          100.0, 0.001, g=(0, 0, -9.81))
+        cases.append(case)
+        returncode, log = run_limited(["sixDoFSim", "-case", case.dir])
+        files = {"bodies": os.path.join(case.dir, "postProcessing", "sixDoFSim", "0", "bodies.dat")}
+        if expected == "connector":
+            files["connector"] = os.path.join(case.dir, "postProcessing", "fmuConnectors", "0",
+                                              "spring.dat")
+        checks += verdict(name, returncode, log, files, expected)
+
+    failures = sum(checks)
+    if not failures:
+        for case in cases:
+            case.cleanup()
+    return summary(len(checks), failures)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
