@@ -27,6 +27,11 @@ def main():
 
     cases = {
         "missing fmu file": (model("/nonexistent/spring.fmu", GOOD), ["mooring", "/nonexistent/spring.fmu"]),
+        "space in the fmu path": (
+            model("/tmp/my fmus/spring.fmu", GOOD),
+            ["restraint mooring: entry 'fmu' \"/tmp/my fmus/spring.fmu\" holds a space",
+             "OpenFOAM file name cannot hold"],
+        ),
         "not a zip": (model(not_a_zip.name, GOOD), ["mooring", not_a_zip.name]),
         "undeclared parameter": (
             model(spring, GOOD + " stiffnes 3;"),

@@ -182,7 +182,23 @@ void Foam::fmuConnectorSettings::restraintEntries::read
     const dictionary& dict
 )
 {
-    dict.readEntry("fmu", fmu);
+    // Read as a string first: a fileName drops what a file name of
+    // OpenFOAM's cannot hold (a space, a quote) with a message naming
+    // neither the restraint nor the entry
+    const string path(dict.get<string>("fmu"));
+    for (const char c : path)
+    {
+        if (!fileName::valid(c))
+        {
+            FatalIOErrorInFunction(dict)
+                << "restraint " << restraintName << ": entry 'fmu' \""
+                << path.c_str() << "\" holds "
+                << (c == ' ' ? "a space" : "a quote or a blank")
+                << ", which an OpenFOAM file name cannot hold: rename the"
+                << " file or the folder" << exit(FatalIOError);
+        }
+    }
+    fmu = path;
     parameters = dict.subOrEmptyDict("parameters");
     report = dict.lookupOrDefault<Switch>("report", false);
     restart = restartModeNames.getOrDefault
