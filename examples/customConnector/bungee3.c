@@ -838,3 +838,87 @@ fmi3Status fmi3GetIntervalFraction(fmi3Instance instance,
     (void)qualifiers;
     return NOT_PROVIDED("fmi3GetIntervalFraction", noClocks);
 }
+
+/* --------------- model exchange and scheduled execution: fmi3Error */
+
+/* bungee3 gives no instance for them (fmi3InstantiateModelExchange and
+   fmi3InstantiateScheduledExecution return NULL), but importers such as
+   the Reference FMUs' fmusim load every function of the standard's headers
+   before they instantiate, and refuse a binary that lacks one. */
+static fmi3Status coSimulationOnly(fmi3Instance instance, const char* function)
+{
+    if (!instance)
+        return fmi3Error;
+    return fail((Instance*)instance, "%s: bungee3 is a co-simulation FMU only",
+                function);
+}
+
+fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance)
+{
+    return coSimulationOnly(instance, "fmi3EnterContinuousTimeMode");
+}
+
+fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance,
+                                       fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                                       fmi3Boolean* enterEventMode,
+                                       fmi3Boolean* terminateSimulation)
+{
+    (void)noSetFMUStatePriorToCurrentPoint;
+    (void)enterEventMode;
+    (void)terminateSimulation;
+    return coSimulationOnly(instance, "fmi3CompletedIntegratorStep");
+}
+
+fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time)
+{
+    (void)time;
+    return coSimulationOnly(instance, "fmi3SetTime");
+}
+
+fmi3Status fmi3SetContinuousStates(fmi3Instance instance,
+                                   const fmi3Float64 continuousStates[],
+                                   size_t nContinuousStates)
+{
+    (void)continuousStates;
+    (void)nContinuousStates;
+    return coSimulationOnly(instance, "fmi3SetContinuousStates");
+}
+
+/* fmi3GetContinuousStateDerivatives, fmi3GetEventIndicators,
+   fmi3GetContinuousStates and fmi3GetNominalsOfContinuousStates: an
+   array and its size */
+#define MODEL_EXCHANGE_ARRAY(function)                                         \
+    fmi3Status function(fmi3Instance instance, fmi3Float64 values[], size_t n) \
+    {                                                                          \
+        (void)values;                                                          \
+        (void)n;                                                               \
+        return coSimulationOnly(instance, #function);                          \
+    }
+
+MODEL_EXCHANGE_ARRAY(fmi3GetContinuousStateDerivatives)
+MODEL_EXCHANGE_ARRAY(fmi3GetEventIndicators)
+MODEL_EXCHANGE_ARRAY(fmi3GetContinuousStates)
+MODEL_EXCHANGE_ARRAY(fmi3GetNominalsOfContinuousStates)
+
+fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance,
+                                          size_t* nEventIndicators)
+{
+    (void)nEventIndicators;
+    return coSimulationOnly(instance, "fmi3GetNumberOfEventIndicators");
+}
+
+fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance,
+                                           size_t* nContinuousStates)
+{
+    (void)nContinuousStates;
+    return coSimulationOnly(instance, "fmi3GetNumberOfContinuousStates");
+}
+
+fmi3Status fmi3ActivateModelPartition(fmi3Instance instance,
+                                      fmi3ValueReference clockReference,
+                                      fmi3Float64 activationTime)
+{
+    (void)clockReference;
+    (void)activationTime;
+    return coSimulationOnly(instance, "fmi3ActivateModelPartition");
+}

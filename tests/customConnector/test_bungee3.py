@@ -165,6 +165,28 @@ def same_motion(folder, check):
             shutil.rmtree(case, ignore_errors=True)
 
 
+def exports_every_function(fmu, check):
+    """The binary exports every function of the FMI 3.0 headers (the names
+    fmi3Functions.h defines), as importers that load them all before they
+    instantiate need (the Reference FMUs' fmusim refused the example for
+    fmi3EnterContinuousTimeMode)."""
+    headers = os.environ.get("FMI3_HEADERS_DIR",
+                             os.path.join(customfmu.TOP, "..", "shared", "fmi3", "headers"))
+    with open(os.path.join(headers, "fmi3Functions.h")) as f:
+        functions = set(re.findall(r"^#define (fmi3\w+) +fmi3FullName\(", f.read(), re.M))
+    folder = os.path.dirname(fmu)
+    subprocess.run(["unzip", "-o", "-q", fmu, "binaries/*", "-d", os.path.join(folder, "unzipped")],
+                   check=True)
+    library = os.path.join(folder, "unzipped", "binaries", "x86_64-linux", "bungee3.so")
+    listing = subprocess.run(["nm", "-D", "--defined-only", library], capture_output=True,
+                             text=True, check=True).stdout
+    exported = {line.split()[-1] for line in listing.splitlines() if line.strip()}
+    missing = sorted(functions - exported)
+    check(len(functions) > 50 and not missing,
+          "exports every function of the FMI 3.0 headers",
+          f"{len(functions)} functions in fmi3Functions.h" + (f"; missing {missing}" if missing else ""))
+
+
 def main(fmusim_path):
     sameAnswers.FMUSIM = fmusim_path
     check = customfmu.Checks()
@@ -176,6 +198,8 @@ def main(fmusim_path):
     problems = customfmu.fmi3_schema_errors(fmu3)
     check(not problems, "modelDescription.xml and terminalsAndIcons.xml against the FMI 3.0 XSD",
           problems or "valid (tests/fmu/validateSchema.cmake)")
+
+    exports_every_function(fmu3, check)
 
     code, report, _ = fmusim(folder, "check", "bungee3.fmu")
     code2, report2, _ = fmusim(folder, "check", "bungee.fmu")
