@@ -30,6 +30,12 @@ public:
                                        nullptr, this},
                 loggingOn, "fmi3")
     {
+        // Messages name the FMI 3.0 variable (an array), not its element
+        core_.setVariableNames([this](fmi2ValueReference element) {
+            const ArrayVariable& v = variables_.owner(element);
+            return v.name + " (value reference "
+                + std::to_string(v.valueReference) + ")";
+        });
     }
 
     Fmi3Instance(const Fmi3Instance&) = delete;

@@ -147,9 +147,13 @@ void FmuInstance::reset()
     state_ = instantiated;
 }
 
-const std::string& FmuInstance::variableName(fmi2ValueReference vr) const
+std::string FmuInstance::describe(fmi2ValueReference vr) const
 {
-    return model_->variables().variables()[vr].name;
+    if (names_) {
+        return names_(vr);
+    }
+    return model_->variables().variables()[vr].name + " (value reference "
+        + std::to_string(vr) + ")";
 }
 
 const ScalarVariable& FmuInstance::variable(fmi2ValueReference vr,
@@ -200,20 +204,17 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
     for (std::size_t i = 0; i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);
         if (access == RealAccess::output) {
-            throw UsageError("variable " + variableName(vr[i])
-                             + " (value reference " + std::to_string(vr[i])
-                             + ") is an output and cannot be set");
+            throw UsageError("variable " + describe(vr[i])
+                             + " is an output and cannot be set");
         }
         if (access == RealAccess::local) {
-            throw UsageError("variable " + variableName(vr[i])
-                             + " (value reference " + std::to_string(vr[i])
-                             + ") is calculated by the FMU and cannot be set");
+            throw UsageError("variable " + describe(vr[i])
+                             + " is calculated by the FMU and cannot be set");
         }
         if (access == RealAccess::parameter
             && (state_ & (instantiated | initializationMode)) == 0) {
-            throw UsageError("parameter " + variableName(vr[i])
-                             + " (value reference " + std::to_string(vr[i])
-                             + ") is fixed: set it before " + fmiPrefix_
+            throw UsageError("parameter " + describe(vr[i])
+                             + " is fixed: set it before " + fmiPrefix_
                              + "ExitInitializationMode");
         }
     }
@@ -249,10 +250,13 @@ void FmuInstance::rejectValueReferences(const char* type,
                                         std::size_t n) const
 {
     if (n > 0) {
+        // The types' names of the interface in use
+        const bool fmi3 = std::string(fmiPrefix_) == "fmi3";
         throw UsageError("value reference " + std::to_string(vr[0])
                          + " is not of type " + type + ": "
-                         + model_->identity().modelIdentifier
-                         + " has only Real and Boolean variables");
+                         + model_->identity().modelIdentifier + " has only "
+                         + (fmi3 ? "Float64" : "Real")
+                         + " and Boolean variables");
     }
 }
 

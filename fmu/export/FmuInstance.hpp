@@ -4,6 +4,7 @@
 #ifndef FMU_EXPORT_FMUINSTANCE_HPP
 #define FMU_EXPORT_FMUINSTANCE_HPP
 
+#include <functional>
 #include <memory>
 #include <new>
 #include <string>
@@ -44,6 +45,12 @@ public:
     void exitInitializationMode();
     void terminate();
     void reset();
+
+    //- How messages name the variable of an element's value reference
+    //  (its name and value reference in the interface the importer uses):
+    //  by default the element's own, as FMI 2.0 declares it
+    using VariableNames = std::function<std::string(fmi2ValueReference)>;
+    void setVariableNames(VariableNames names) { names_ = std::move(names); }
 
     void getReal(const fmi2ValueReference vr[], std::size_t n,
                  fmi2Real value[]);
@@ -104,7 +111,8 @@ private:
     //- Whether the parameters in `values` are those in values_
     bool sameParameters(const std::vector<double>& values) const;
     void computeOutputs();
-    const std::string& variableName(fmi2ValueReference vr) const;
+    //- "<name> (value reference <vr>)" of vr's variable (names_)
+    std::string describe(fmi2ValueReference vr) const;
 
     std::unique_ptr<Model> model_;
     std::string instanceName_;
@@ -113,6 +121,7 @@ private:
     bool logCalls_;
     bool logRefusals_;
     const char* fmiPrefix_;
+    VariableNames names_;
     ModelState state_ = instantiated;
     double time_ = 0.0;
     bool outputsValid_ = false;

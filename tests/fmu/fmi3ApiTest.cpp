@@ -113,12 +113,23 @@ TEST_P(Fmi3Functions, RefusesWrongValueCountsAndElementReferences)
     EXPECT_NE(in.lastMessage().find("not a variable of the FMI 3.0"),
               std::string::npos)
         << in.lastMessage();
+    // The messages name the FMI 3.0 variable and its value reference, and
+    // FMI 3.0's types
     EXPECT_EQ(fmu3->api.SetFloat64(in.c, &F, 1, values, 3), fmi3Error);
-    EXPECT_NE(in.lastMessage().find("is an output"), std::string::npos);
+    EXPECT_NE(in.lastMessage().find("variable A.F (value reference "
+                                    + std::to_string(F)
+                                    + ") is an output and cannot be set"),
+              std::string::npos)
+        << in.lastMessage();
     EXPECT_EQ(fmu3->api.GetInt32(in.c, &F, 1, nullptr, 1), fmi3Error);
+    EXPECT_NE(in.lastMessage().find("has only Float64 and Boolean variables"),
+              std::string::npos)
+        << in.lastMessage();
     const fmi3ValueReference p = fmu3->variable("A.p").valueReference;
     EXPECT_EQ(fmu3->api.SetFloat64(in.c, &p, 1, values, 3), fmi3Error);
-    EXPECT_NE(in.lastMessage().find("set it before fmi3ExitInitialization"),
+    EXPECT_NE(in.lastMessage().find(
+                  "parameter A.p (value reference " + std::to_string(p)
+                  + ") is fixed: set it before fmi3ExitInitialization"),
               std::string::npos)
         << in.lastMessage();
     // The instance is still usable
