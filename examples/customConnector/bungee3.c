@@ -858,10 +858,9 @@ fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance)
     return coSimulationOnly(instance, "fmi3EnterContinuousTimeMode");
 }
 
-fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance,
-                                       fmi3Boolean noSetFMUStatePriorToCurrentPoint,
-                                       fmi3Boolean* enterEventMode,
-                                       fmi3Boolean* terminateSimulation)
+fmi3Status fmi3CompletedIntegratorStep(
+    fmi3Instance instance, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+    fmi3Boolean* enterEventMode, fmi3Boolean* terminateSimulation)
 {
     (void)noSetFMUStatePriorToCurrentPoint;
     (void)enterEventMode;

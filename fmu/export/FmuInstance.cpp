@@ -252,11 +252,10 @@ void FmuInstance::rejectValueReferences(const char* type,
     if (n > 0) {
         // The types' names of the interface in use
         const bool fmi3 = std::string(fmiPrefix_) == "fmi3";
-        throw UsageError("value reference " + std::to_string(vr[0])
-                         + " is not of type " + type + ": "
-                         + model_->identity().modelIdentifier + " has only "
-                         + (fmi3 ? "Float64" : "Real")
-                         + " and Boolean variables");
+        throw UsageError(
+            "value reference " + std::to_string(vr[0]) + " is not of type "
+            + type + ": " + model_->identity().modelIdentifier + " has only "
+            + (fmi3 ? "Float64" : "Real") + " and Boolean variables");
     }
 }
 
