@@ -22,7 +22,13 @@ printed), with FOAM FATAL IO ERROR, the entry's path in the dictionary
   dictionary's: mooringLine with seabedContact 1 refuses the inputs' start
   values (the fairlead below the anchor), but the case's body holds the
   fairlead above it, so the run goes on as before.
+
+And what the restraint uses is in the log when it starts (reported): the
+FMU's file, FMI version, model and SHA-256, and every parameter's value,
+those the case does not give marked as the FMU's defaults (linearSpring
+without damping: 0).
 """
+import hashlib
 import os
 import sys
 
@@ -90,8 +96,30 @@ CASES = {
 }
 
 
+def reported():
+    """1 if the restraint's report of its FMU and parameters is wrong."""
+    fmu = fmu_path("linearSpring")
+    with open(fmu, "rb") as f:
+        sha256 = hashlib.sha256(f.read()).hexdigest()
+    case = Case("parameterReport", model(fmu, f"stiffness 10; restLength 1; A.p {vec((0, 0, 0.1))}; "
+                                              f"B.p {vec((0, 0, 2))};"), 0.02, 0.01)
+    log = case.run()
+    expected = [f"Restraint mooring: FMU \"{fmu}\" (FMI 2.0, linearSpring, SHA-256 {sha256})\n",
+                "\n    stiffness 10\n", "\n    restLength 1\n",
+                "\n    damping 0  (not given: the FMU's default)\n",
+                "\n    A.p (0 0 0.1)\n", "\n    B.p (0 0 2)\n"]
+    missing = [e.strip() for e in expected if e not in log]
+    case.cleanup()
+    if missing:
+        start = log.find("Restraint mooring: FMU")
+        print(f"FAIL reported: the log lacks {missing}\n{log[start:start + 800]}")
+        return 1
+    print("PASS reported: the FMU with its SHA-256, the given parameters, damping 0 as the FMU's default")
+    return 0
+
+
 def main():
-    failures = 0
+    failures = reported()
     for name, (fmu, parameters, z, words) in CASES.items():
         print(f"-- {name}", flush=True)
         case = Case("parameterCheck", model(fmu_path(fmu), parameters, z), 0.02, 0.01)
@@ -113,7 +141,7 @@ def main():
             error = [line.strip() for line in log.splitlines() if "refuses" in line]
             print(f"PASS {name}" + (f": {error[0][:200]}" if error else ": runs"))
         case.cleanup()
-    print(f"{len(CASES) - failures} passed, {failures} failed")
+    print(f"{len(CASES) + 1 - failures} passed, {failures} failed")
     return 1 if failures else 0
 
 

@@ -293,6 +293,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
         instance_->setupExperiment(startTime);
         instance_->enterInitializationMode();
         setParameters(*instance_, parameters_);
+        reportSetup(*instance_);
     }
     catch (const fmuImport::Error& err)
     {
