@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <vector>
 
@@ -155,13 +156,21 @@ void Foam::fmuConnectorOutput::commit()
     buffer_ += '\n';
     pending_ = false;
 
-    std::string what("the row of t = ");
-    appendNumber(what, pendingTime_);
-    writeBuffer(what + " s of connector " + name_);
+    // The message of a failure, made only then
+    const scalar t = pendingTime_;
+    writeBuffer([this, t]()
+    {
+        std::string what("the row of t = ");
+        appendNumber(what, t);
+        return what + " s of connector " + name_;
+    });
 }
 
 
-void Foam::fmuConnectorOutput::writeBuffer(const std::string& what)
+void Foam::fmuConnectorOutput::writeBuffer
+(
+    const std::function<std::string()>& what
+)
 {
     // Flushed: the row is in the file before the next step calls the FMU
     if (!ending() && !std::uncaught_exceptions())
@@ -171,7 +180,7 @@ void Foam::fmuConnectorOutput::writeBuffer(const std::string& what)
     else if (const int error = file_->tryAppend(buffer_))
     {
         std::cerr
-            << "--> FOAM Serious Error: cannot write " << what << " to "
+            << "--> FOAM Serious Error: cannot write " << what() << " to "
             << file_->path() << ": " << std::strerror(error)
             << " (a full disk, or a file-size limit: ulimit -f)" << std::endl;
     }
@@ -223,7 +232,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
         buffer_ += ' ' + output;
     }
     buffer_ += '\n';
-    writeBuffer("the header of connector " + name_);
+    writeBuffer([this]() { return "the header of connector " + name_; });
 
     static const bool handlerInstalled =
         (std::atexit(writeCompletedRows) == 0);
