@@ -6,6 +6,7 @@
 #include "Time.H"
 #include "IOstreams.H"
 #include "stringList.H"
+#include "IFstream.H"
 
 #include <cstring>
 
@@ -46,7 +47,72 @@ int hexValue(const char c)
     return (c && p) ? int(p - hexDigits) : -1;
 }
 
+
+//- Names joined by ", ", as a message lists them
+std::string joined(const Foam::wordList& names)
+{
+    std::string text;
+    for (const Foam::word& name : names)
+    {
+        text += (text.empty() ? "" : ", ") + name;
+    }
+    return text;
+}
+
+
+//- The entry connectors of a complete state file, or an empty list (a
+//  file cut short, or written without the entry)
+Foam::wordList connectorsIn(const Foam::fileName& file)
+{
+    using namespace Foam;
+
+    const wordList entries({"fmu", "time", "state", "connectors"});
+    if (restartFiles::problem(file, entries).size())
+    {
+        return wordList();
+    }
+    IFstream is(file);
+    return dictionary(is).get<wordList>("connectors");
+}
+
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::fileName Foam::fmuConnectorState::folder() const
+{
+    return time().path()/instance()/local();
+}
+
+
+void Foam::fmuConnectorState::readWritten()
+{
+    // Every complete file lists the same connectors; files of states
+    // written before the entry existed list none
+    for (const fileName& f : readDir(folder(), fileName::FILE))
+    {
+        if (f.ext() != "tmp" && written_.empty())
+        {
+            written_ = connectorsIn(folder()/f);
+        }
+    }
+}
+
+
+void Foam::fmuConnectorState::refuseNew(const dictionary& restraintDict) const
+{
+    FatalIOErrorInFunction(restraintDict)
+        << "restraint " << name() << ": the run starts from t = "
+        << instance().c_str() << ", written by an earlier run whose"
+        << " connectors were " << joined(written_).c_str() << " (their states"
+        << " are in " << folder() << "); " << name() << " is not one of"
+        << " them, so it has no state to restore: it is new since, or one"
+        << " of them renamed. A new restraint: set 'restart fresh;' in it"
+        << " to start its connector from its initial state. A renamed one:"
+        << " give it its old name for this restart, so that its state is"
+        << " restored" << exit(FatalIOError);
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -73,13 +139,19 @@ Foam::fmuConnectorState::fmuConnectorState
             IOobject::AUTO_WRITE
         )
     ),
-    fmu_(fmu)
+    fmu_(fmu),
+    unusedChecked_(false)
 {
     // A time written by an earlier run (restartFiles::restarted); a case's
     // initial time is none, even when it gives the bodies' state
     const Time& runTime = time.time();
     const bool restarted = restartFiles::restarted(runTime, instance());
     const bool stateFile = isFile(objectPath());
+
+    if (restarted)
+    {
+        readWritten();
+    }
 
     if (fresh)
     {
@@ -113,6 +185,17 @@ Foam::fmuConnectorState::fmuConnectorState
             << " connector would start from its initial state while the"
             << " bodies continue. Set 'restart fresh;' in the restraint to"
             << " accept that" << exit(FatalIOError);
+    }
+
+    if
+    (
+        restarted
+     && !stateFile
+     && written_.size()
+     && !written_.found(name)
+    )
+    {
+        refuseNew(restraintDict);
     }
 
     // Missing, cut short or incomplete: the time was not written to the
@@ -205,7 +288,62 @@ bool Foam::fmuConnectorState::writeData(Ostream& os) const
     }
     os.writeEntry("state", lines);
 
+    // The connectors whose states this time holds, for a restart to tell a
+    // time written in part from a restraint added since
+    const HashTable<const fmuConnectorState*> states
+    (
+        db().lookupClass<fmuConnectorState>()
+    );
+    wordList connectors;
+    forAllConstIters(states, iter)
+    {
+        if (iter.val()->writable())
+        {
+            connectors.append(iter.key());
+        }
+    }
+    Foam::sort(connectors);
+    os.writeEntry("connectors", connectors);
+
     return os.good();
+}
+
+
+void Foam::fmuConnectorState::reportUnused() const
+{
+    if (unusedChecked_)
+    {
+        return;
+    }
+    unusedChecked_ = true;
+
+    const wordList current
+    (
+        db().lookupClass<fmuConnectorState>().sortedToc()
+    );
+    if (written_.empty() || current.empty() || current.first() != name())
+    {
+        return;
+    }
+
+    wordList unused;
+    for (const word& w : written_)
+    {
+        if (!current.found(w))
+        {
+            unused.append(w);
+        }
+    }
+    if (unused.size())
+    {
+        WarningInFunction
+            << "the run starts from t = " << instance().c_str() << ", which"
+            << " holds the states of connectors " << joined(unused).c_str()
+            << " in " << folder() << ": no restraint of the case has those"
+            << " names (removed or renamed since), so they are not used."
+            << " A renamed restraint restores its state only under its old"
+            << " name" << endl;
+    }
 }
 
 

@@ -228,6 +228,7 @@ void Foam::RBD::restraints::fmuConnector::restrain
     {
         return;
     }
+    stateIO_->reportUnused();
 
     const fmuConnectorCore::kinematics A(bodyKinematics(bodyID_));
     const fmuConnectorCore::kinematics B

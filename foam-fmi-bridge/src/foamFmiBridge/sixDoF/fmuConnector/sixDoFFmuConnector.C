@@ -123,6 +123,28 @@ const Foam::dictionary* samePlace
     return found;
 }
 
+
+//- The first fmuConnector restraint of a restraints dictionary
+Foam::word firstConnector(const Foam::dictionary& restraints)
+{
+    for (const Foam::entry& e : restraints)
+    {
+        if
+        (
+            e.isDict()
+         && e.dict().getOrDefault<Foam::word>
+            (
+                "sixDoFRigidBodyMotionRestraint",
+                Foam::word::null
+            ) == "fmuConnector"
+        )
+        {
+            return e.keyword();
+        }
+    }
+    return Foam::word::null;
+}
+
 } // End anonymous namespace
 
 
@@ -244,6 +266,21 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
                 connector_->compareWithCase
                 (
                     *caseRestraint,
+                    caseFile,
+                    top->objectPath()
+                );
+            }
+
+            // Every restraint of the body, once: by its first connector
+            const dictionary& copyRestraints = sDoFRBMRDict.parent();
+            const dictionary* caseRestraints =
+                samePlace(*topDict, copyRestraints, caseDict);
+            if (caseRestraints && firstConnector(copyRestraints) == name_)
+            {
+                sixDoFConnector::compareRestraints
+                (
+                    *caseRestraints,
+                    copyRestraints,
                     caseFile,
                     top->objectPath()
                 );
