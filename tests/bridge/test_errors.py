@@ -8,7 +8,9 @@ import os
 import sys
 import tempfile
 
-from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model, vec
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, linear_spring, rigid_body, rigid_body_model, vec
+from foamfmi.sixdofcase import SixDoFCase, sixdof_body
+from test_sixdof_spring_world import CENTRE, M, J, fmu_spring
 
 
 def model(fmu, parameters, body_b=None, body="hull", extra=""):
@@ -78,6 +80,21 @@ def main():
             ["restraint mooring", "body and bodyB are the same body hull"],
         ),
         "negative stiffness": (model(spring, GOOD.replace("stiffness 10", "stiffness -10")), ["mooring", "stiffness"]),
+        # OpenFOAM merges two entries of one keyword into one, silently;
+        # any fmuConnector in the restraints dictionary checks every name
+        "restraint named twice": (
+            rigid_body_model(rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+                             linear_spring("mooring", "hull", (0, 0, 2), (0, 0, 0), 5, 0, 1)
+                             + fmu_restraint("mooring", spring, "hull", GOOD), g=None),
+            ["restraint mooring is given twice in", "constant/dynamicMeshDict\" (lines "],
+        ),
+        "built-in restraint named twice beside a connector": (
+            rigid_body_model(rigid_body("hull", 2, 0.1, (0, 0, 0), "floating"),
+                             linear_spring("tie", "hull", (0, 0, 2), (0, 0, 0), 5, 0, 1)
+                             + fmu_restraint("mooring", spring, "hull", GOOD)
+                             + linear_spring("tie", "hull", (0, 0, 3), (0, 0, 0), 5, 0, 1), g=None),
+            ["restraint tie is given twice in", "constant/dynamicMeshDict\" (lines "],
+        ),
     }
 
     failures = 0
@@ -95,7 +112,23 @@ def main():
             print(f"PASS {name}: {message[0].strip()[:150] if message else ''}")
         case.cleanup()
     os.unlink(not_a_zip.name)
-    print(f"{len(cases) - failures} passed, {failures} failed")
+
+    # The same in a sixDoF body's restraints
+    builtin = """            spring_fmu
+            {
+                sixDoFRigidBodyMotionRestraint linearSpring;
+                anchor (0 0 2); refAttachmentPt (0 0 0.5); stiffness 5; damping 0; restLength 1;
+            }
+"""
+    case = SixDoFCase("errors.sixdof", {"fmu": sixdof_body(M, J, CENTRE, "Newmark", builtin + fmu_spring("fmu"))},
+                      0.1, 0.01)
+    log = case.run(expect_failure=True)
+    expected = "restraint spring_fmu is given twice in"
+    ok = expected in log and "constant/sixDoFBodies\" (lines " in log
+    failures += 0 if ok else 1
+    print(f"{'PASS' if ok else 'FAIL'} sixDoF restraint named twice" + ("" if ok else f"\n{log[-1500:]}"))
+    case.cleanup()
+    print(f"{len(cases) + 1 - failures} passed, {failures} failed")
     return 1 if failures else 0
 
 

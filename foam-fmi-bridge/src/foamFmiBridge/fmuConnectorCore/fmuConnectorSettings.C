@@ -3,6 +3,7 @@
 // (see LICENSE at the project's top).
 
 #include "fmuConnectorSettings.H"
+#include "uniqueRestraintNames.H"
 #include "Time.H"
 #include "error.H"
 
@@ -105,6 +106,8 @@ void Foam::fmuConnectorSettings::checkEntries
     const word& typeKeyword
 )
 {
+    checkUniqueRestraintNames(dict);
+
     const wordList keywords
     ({
         typeKeyword, "body", "bodyB", "fmu", "parameters", "report",
