@@ -6,7 +6,8 @@
 #include "Time.H"
 #include "OSspecific.H"
 #include "DynamicList.H"
-#include "OFstream.H"
+#include "OStringStream.H"
+#include "restartFiles.H"
 #include "IFstream.H"
 #include "foamVtkSeriesWriter.H"
 
@@ -66,15 +67,6 @@ void writeCompletedRows()
     {
         output->flush(false);
     }
-}
-
-//- Append the shortest decimal form that reads back as the same double
-void appendNumber(std::string& s, const double x)
-{
-    char digits[32];
-    const std::to_chars_result r =
-        std::to_chars(digits, digits + sizeof(digits), x);
-    s.append(digits, r.ptr);
 }
 
 //- The joints of a line of sections whose connector reports them as
@@ -147,23 +139,31 @@ void Foam::fmuConnectorOutput::commit()
         return;
     }
 
-    appendNumber(buffer_, pendingTime_);
+    rowFile::appendNumber(buffer_, pendingTime_);
     for (const scalar value : pendingValues_)
     {
         buffer_ += ' ';
-        appendNumber(buffer_, value);
+        rowFile::appendNumber(buffer_, value);
     }
     buffer_ += '\n';
     pending_ = false;
 
+    writeBuffer(rowOf(pendingTime_));
+}
+
+
+std::function<std::string()> Foam::fmuConnectorOutput::rowOf
+(
+    const scalar t
+) const
+{
     // The message of a failure, made only then
-    const scalar t = pendingTime_;
-    writeBuffer([this, t]()
+    return [this, t]()
     {
         std::string what("the row of t = ");
-        appendNumber(what, t);
+        rowFile::appendNumber(what, t);
         return what + " s of connector " + name_;
-    });
+    };
 }
 
 
@@ -215,6 +215,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     pending_(false),
     pendingIndex_(-1),
     pendingTime_(0),
+    provisionalSize_(-1),
     name_(name),
     reportBodies_(reportBodies)
 {
@@ -266,9 +267,10 @@ Foam::fmuConnectorOutput::~fmuConnectorOutput()
 void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 {
     latestTimeIndex() = max(latestTimeIndex(), timeIndex);
-    if (pending_ && timeIndex != pendingIndex_)
+    if (timeIndex != pendingIndex_)
     {
         commit();
+        provisionalSize_ = -1;
     }
 }
 
@@ -276,10 +278,31 @@ void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 {
     stepBegins(timeIndex);
+
+    // A further solve of a step whose row is in the file already (a write
+    // time's): its row replaces that one
+    const bool replace = provisionalSize_ >= 0 && timeIndex == pendingIndex_;
+    if (replace)
+    {
+        file_->cutTo(provisionalSize_, rowOf(t));
+    }
+    provisionalSize_ = -1;
+
     pending_ = true;
     pendingIndex_ = timeIndex;
     pendingTime_ = t;
     pendingValues_ = fmu_.outputs();
+
+    // The step's time is written once its last solve is done: the row goes
+    // to the file now, before the time folder is begun, so that a kill
+    // while the time is written loses no row the bodies' files have (each
+    // further solve replaces it)
+    const Time& runTime = time();
+    if (runTime.writeTime() && timeIndex == runTime.timeIndex())
+    {
+        provisionalSize_ = file_->size();
+        commit();
+    }
 
     if (reportBodies_.size())
     {
@@ -350,8 +373,13 @@ void Foam::fmuConnectorOutput::writeShape() const
     }
     const label nJoints = joints.size();
 
+    const std::string when
+    (
+        " of connector " + name_ + " at t = "
+      + std::string(runTime.timeName()) + " s"
+    );
     {
-        OFstream os(dir/file);
+        OStringStream os;
         os.precision(IOstream::defaultPrecision());
         os  << "# vtk DataFile Version 2.0" << nl
             << "connector " << name_ << " at t = " << runTime.timeName() << nl
@@ -411,17 +439,12 @@ void Foam::fmuConnectorOutput::writeShape() const
                 os  << k << nl;
             }
         }
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "connector " << name_ << ": cannot write " << os.name()
-                << exit(FatalError);
-        }
+        // To a temporary name, renamed: a reader never sees half a file
+        restartFiles::writeText(dir/file, os.str(), "the line shape" + when);
     }
 
     // The series: the entries of earlier times (a restarted run drops
-    // those from its start on), then this one; written to a temporary file
-    // and renamed, so that a reader never sees half a file
+    // those from its start on), then this one
     const fileName series(dir/(name_ + ".vtk.series"));
     vtk::seriesWriter entries;
     entries.load
@@ -432,19 +455,10 @@ void Foam::fmuConnectorOutput::writeShape() const
     );
     entries.append(runTime.value(), file);
 
-    const fileName tmp(series + ".tmp");
-    {
-        OFstream os(tmp);
-        os.precision(IOstream::defaultPrecision());
-        entries.print(os);
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "connector " << name_ << ": cannot write " << tmp
-                << exit(FatalError);
-        }
-    }
-    Foam::mv(tmp, series);
+    OStringStream os;
+    os.precision(IOstream::defaultPrecision());
+    entries.print(os);
+    restartFiles::writeText(series, os.str(), "the VTK series" + when);
 }
 
 
