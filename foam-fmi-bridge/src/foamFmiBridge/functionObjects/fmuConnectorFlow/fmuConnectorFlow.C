@@ -264,7 +264,12 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
         }
     }
     os  << nl;
-    appendRows(i, os.str(), "the header");
+    appendRows
+    (
+        i,
+        os.str(),
+        "the header, at t = " + std::string(time_.timeName()) + " s,"
+    );
 }
 
 
