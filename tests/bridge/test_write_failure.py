@@ -33,6 +33,7 @@ import signal
 import subprocess
 import sys
 
+from foamfmi.postprocessing import PostProcessingError, whole_rows
 from foamfmi.bridgecase import (Case, check, fmu_path, fmu_restraint, linear_spring, rigid_body,
                                 rigid_body_model, summary)
 from foamfmi.mooringcase import DEPTH, catenary_parameters
@@ -46,25 +47,6 @@ def limited():
     """In the child: the file-size limit, and SIGXFSZ ignored."""
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
     resource.setrlimit(resource.RLIMIT_FSIZE, (LIMIT, LIMIT))
-
-
-def whole_rows(path):
-    """(rows, longest row in bytes) of a table, or raise AssertionError."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data and not data.endswith(b"\n"):
-        raise AssertionError(f"{path}: ends in a cut row: {data[-80:]!r}")
-    columns, rows, longest = None, 0, 0
-    for line in data.decode().splitlines():
-        if line.startswith("#"):
-            columns = len(line[1:].split())
-            continue
-        if len(line.split()) != columns:
-            raise AssertionError(f"{path}: row {rows + 1} has {len(line.split())} "
-                                 f"columns, the header {columns}")
-        rows += 1
-        longest = max(longest, len(line) + 1)
-    return rows, longest
 
 
 def run_limited(command):
@@ -92,7 +74,7 @@ def verdict(name, returncode, log, files, expected=None):
             if label in named:
                 ok = LIMIT - longest < os.path.getsize(path) <= LIMIT
                 detail += f", within one row ({longest} bytes) of the limit {LIMIT}"
-        except AssertionError as error:
+        except PostProcessingError as error:
             ok, detail = False, str(error)
         checks.append(check(f"{name}: {label} has whole rows only", ok, detail))
     return checks
@@ -132,7 +114,7 @@ def full_disk_checks(cases):
                 rows, _ = whole_rows(os.path.join(case.dir, *table_path))
                 # 25 steps to 0.25 (bodies.dat: and the start row)
                 ok, detail = rows >= 25, f"{rows} whole rows"
-            except (AssertionError, OSError) as error:
+            except (PostProcessingError, OSError) as error:
                 ok, detail = False, str(error)
             checks.append(check(f"{name}: {table} rows whole, to 0.25 at least", ok, detail))
     return checks

@@ -27,6 +27,7 @@ import tempfile
 import threading
 import time
 
+from foamfmi.postprocessing import PostProcessingError, whole_rows
 from foamfmi.bridgecase import check, summary
 
 CONNECTORS = ["line1", "line2", "line3", "line4"]
@@ -83,26 +84,6 @@ def data_rows(path):
         return 0
 
 
-def whole_rows(path):
-    """(rows, longest row in bytes), or raise AssertionError: every row ends
-    in a newline and has the last header line's number of columns."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data and not data.endswith(b"\n"):
-        raise AssertionError(f"{path}: ends in a cut row: {data[-80:]!r}")
-    columns, rows, longest = None, 0, 0
-    for line in data.decode().splitlines():
-        if line.startswith("#"):
-            columns = len(line[1:].split())
-            continue
-        if len(line.split()) != columns:
-            raise AssertionError(f"{path}: row {rows + 1} has {len(line.split())} columns, "
-                                 f"the header {columns}")
-        rows += 1
-        longest = max(longest, len(line) + 1)
-    return rows, longest
-
-
 def ignore_sigxfsz():
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
 
@@ -157,7 +138,7 @@ def limit_checks(set_up_case, work, isolation):
             if label in named and limit is not None:
                 ok = limit - longest < os.path.getsize(path) <= limit
                 detail += f", within one row ({longest} bytes) of the limit {limit}"
-        except (AssertionError, OSError) as error:
+        except (PostProcessingError, OSError) as error:
             ok, detail = False, str(error)
         checks.append(check(f"{name}: {label} has whole rows only", ok, detail))
     return checks
