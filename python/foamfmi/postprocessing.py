@@ -33,6 +33,28 @@ def read_table(path):
     return rows
 
 
+def whole_rows(path):
+    """(rows, longest row in bytes) of a table written in whole rows (a
+    connector's, bodies.dat, fmuConnectorFlow's samples); PostProcessingError
+    when it ends in a cut row or a row has another number of columns than
+    its last '#' header line names."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data and not data.endswith(b"\n"):
+        raise PostProcessingError(f"{path}: ends in a cut row: {data[-80:]!r}")
+    columns, rows, longest = None, 0, 0
+    for line in data.decode().splitlines():
+        if line.startswith("#"):
+            columns = len(line[1:].split())
+            continue
+        if len(line.split()) != columns:
+            raise PostProcessingError(f"{path}: row {rows + 1} has {len(line.split())} "
+                                      f"columns, the header {columns}")
+        rows += 1
+        longest = max(longest, len(line) + 1)
+    return rows, longest
+
+
 def read_header(path):
     """The column names of the '# Time ...' header line of a table (a
     connector's output), Time first; PostProcessingError without one."""

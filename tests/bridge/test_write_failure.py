@@ -15,6 +15,17 @@ bodies.dat does. Each run must
  - leave the file it names within one row of the limit (the limit was
    hit there, not elsewhere).
 Without the checks, the run ended with exit code 0 and a cut row.
+
+Then a full disk for the files written at a write time, one at a time:
+the file's temporary name (each is written to <file>.tmp and renamed) is
+a link to /dev/full, whose writes fail with ENOSPC. rigidBodySim with
+catenary.fmu writes 0.25 and 0.5; at 0.25 the connector's state
+(uniform/fmuConnectors/<name>), the line's VTK file (line_25.vtk: time
+index 25) or the VTK series is on the full disk. Each run must stop with a
+FatalError that names what was written, the file, t = 0.25 and "No space
+left on device" (before: the VTK series was renamed unchecked, and the
+state's message named neither the time nor the cause), and leave the
+connector's and the bodies' rows whole, up to 0.25 at least.
 """
 import os
 import resource
@@ -22,6 +33,7 @@ import signal
 import subprocess
 import sys
 
+from foamfmi.postprocessing import PostProcessingError, whole_rows
 from foamfmi.bridgecase import (Case, check, fmu_path, fmu_restraint, linear_spring, rigid_body,
                                 rigid_body_model, summary)
 from foamfmi.mooringcase import DEPTH, catenary_parameters
@@ -35,25 +47,6 @@ def limited():
     """In the child: the file-size limit, and SIGXFSZ ignored."""
     signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
     resource.setrlimit(resource.RLIMIT_FSIZE, (LIMIT, LIMIT))
-
-
-def whole_rows(path):
-    """(rows, longest row in bytes) of a table, or raise AssertionError."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data and not data.endswith(b"\n"):
-        raise AssertionError(f"{path}: ends in a cut row: {data[-80:]!r}")
-    columns, rows, longest = None, 0, 0
-    for line in data.decode().splitlines():
-        if line.startswith("#"):
-            columns = len(line[1:].split())
-            continue
-        if len(line.split()) != columns:
-            raise AssertionError(f"{path}: row {rows + 1} has {len(line.split())} "
-                                 f"columns, the header {columns}")
-        rows += 1
-        longest = max(longest, len(line) + 1)
-    return rows, longest
 
 
 def run_limited(command):
@@ -81,9 +74,49 @@ def verdict(name, returncode, log, files, expected=None):
             if label in named:
                 ok = LIMIT - longest < os.path.getsize(path) <= LIMIT
                 detail += f", within one row ({longest} bytes) of the limit {LIMIT}"
-        except AssertionError as error:
+        except PostProcessingError as error:
             ok, detail = False, str(error)
         checks.append(check(f"{name}: {label} has whole rows only", ok, detail))
+    return checks
+
+
+def full_disk_checks(cases):
+    """The files of a write time on a full disk (see the module's text)."""
+    checks = []
+    line = fmu_restraint("line", fmu_path("catenary"), "hull",
+                         {**catenary_parameters(seabedFriction=0), "A.p": "(0 0 0)",
+                          "B.p": (-80.0, 0.0, -DEPTH)}, report="off")
+    for label, relative, what in [
+            ("connector state", ("0.25", "uniform", "fmuConnectors", "line"), "the state line"),
+            ("VTK file", ("VTK", "fmuConnectors", "line_25.vtk"), "the line shape of connector line"),
+            ("VTK series", ("VTK", "fmuConnectors", "line.vtk.series"),
+             "the VTK series of connector line")]:
+        name = f"rigidBodySim, {label} on a full disk"
+        case = Case(name.replace(" ", ".").replace(",", ""),
+                    rigid_body_model(rigid_body("hull", 1e6, 1e5, (0, 0, 0), "Px"), line,
+                                     g=(0, 0, -9.81)), 0.5, 0.01, write_interval=0.25)
+        cases.append(case)
+        path = os.path.join(case.dir, *relative)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        os.symlink("/dev/full", path + ".tmp")
+        result = subprocess.run(["rigidBodySim", "-case", case.dir], stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True)
+        message = [l for l in result.stdout.splitlines() if "cannot write" in l]
+        expected = [what, path, "t = 0.25", "No space left on device"]
+        checks.append(check(
+            f"{name}: stops, the FatalError names what, the file, the time and the cause",
+            result.returncode != 0 and len(message) == 1 and all(e in message[0] for e in expected),
+            f"exit code {result.returncode}: " + (" / ".join(message) or result.stdout[-600:])))
+        for table, table_path in [
+                ("bodies", ("postProcessing", "rigidBodySim", "0", "bodies.dat")),
+                ("connector", ("postProcessing", "fmuConnectors", "0", "line.dat"))]:
+            try:
+                rows, _ = whole_rows(os.path.join(case.dir, *table_path))
+                # 25 steps to 0.25 (bodies.dat: and the start row)
+                ok, detail = rows >= 25, f"{rows} whole rows"
+            except (PostProcessingError, OSError) as error:
+                ok, detail = False, str(error)
+            checks.append(check(f"{name}: {table} rows whole, to 0.25 at least", ok, detail))
     return checks
 
 
@@ -153,6 +186,8 @@ def main():
             files["connector"] = os.path.join(case.dir, "postProcessing", "fmuConnectors", "0",
                                               "spring.dat")
         checks += verdict(name, returncode, log, files, expected)
+
+    checks += full_disk_checks(cases)
 
     failures = sum(checks)
     if not failures:

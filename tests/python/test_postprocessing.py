@@ -1,5 +1,6 @@
 """foamfmi.postprocessing: probes with a restart, the elevation of a gauge
-line of equal and of graded cells, tables with a line cut short."""
+line of equal and of graded cells, tables with a line cut short, tables
+of whole rows only."""
 import os
 import shutil
 import tempfile
@@ -90,6 +91,18 @@ class Tables(unittest.TestCase):
         self.assertEqual(len(rows), 2)
         with self.assertRaisesRegex(postprocessing.PostProcessingError, "no column force"):
             postprocessing.read_columns(self.path, ["force"])
+
+    def test_whole_rows(self):
+        # The file of setUp ends in a cut row (no newline): refused
+        with self.assertRaisesRegex(postprocessing.PostProcessingError, "ends in a cut row"):
+            postprocessing.whole_rows(self.path)
+        # Whole rows: counted, the longest with its newline ("0.02 0.21 1.0\n": 14 bytes)
+        write(self.path, "# Time length tension\n0.01 0.2 0\n0.02 0.21 1.0\n")
+        self.assertEqual(postprocessing.whole_rows(self.path), (2, 14))
+        # A row of other columns than the header: refused, named
+        write(self.path, "# Time length tension\n0.01 0.2 0\n0.02 0.21\n")
+        with self.assertRaisesRegex(postprocessing.PostProcessingError, "row 2 has 2 columns"):
+            postprocessing.whole_rows(self.path)
 
     def test_solver_log(self):
         log = os.path.join(self.folder, "log.interFoam")

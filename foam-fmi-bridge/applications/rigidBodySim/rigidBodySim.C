@@ -223,13 +223,7 @@ int main(int argc, char *argv[])
                 bodySim::uniformIO(runTime, "rigidBodyMotionState")
             );
             motion.state().write(stateDict);
-            if (!restartFiles::write(stateDict))
-            {
-                FatalErrorInFunction
-                    << "cannot write the rigid-body state to "
-                    << stateDict.objectPath() << " (disk full?)"
-                    << exit(FatalError);
-            }
+            restartFiles::write(stateDict, "the rigid-body state");
         }
 
         if (motion.report())

@@ -248,13 +248,7 @@ int main(int argc, char *argv[])
                 }
                 motions[i].state().write(b);
             }
-            if (!restartFiles::write(state))
-            {
-                FatalErrorInFunction
-                    << "cannot write the bodies' state to "
-                    << state.objectPath() << " (disk full?)"
-                    << exit(FatalError);
-            }
+            restartFiles::write(state, "the bodies' state");
         }
     }
 

@@ -6,18 +6,12 @@
 #include "Time.H"
 #include "OSspecific.H"
 #include "DynamicList.H"
-#include "OFstream.H"
-#include "IFstream.H"
-#include "foamVtkSeriesWriter.H"
 
-#include <algorithm>
-#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <functional>
 #include <iostream>
-#include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -68,73 +62,6 @@ void writeCompletedRows()
     }
 }
 
-//- Append the shortest decimal form that reads back as the same double
-void appendNumber(std::string& s, const double x)
-{
-    char digits[32];
-    const std::to_chars_result r =
-        std::to_chars(digits, digits + sizeof(digits), x);
-    s.append(digits, r.ptr);
-}
-
-//- The joints of a line of sections whose connector reports them as
-//  outputs: joint k (of sections k and k + 1, from B) at joint.x/y/z[k]
-//  (an FMI 3.0 FMU: the rows of the array joint, joint[k,1..3]), the
-//  tension at the lower end of section k + 1 above it; none when any of
-//  them is not an output
-void lineJoints
-(
-    const Foam::fmuConnectorCore& fmu,
-    const Foam::label nJoints,
-    Foam::pointField& joints,
-    Foam::scalarField& tension
-)
-{
-    using namespace Foam;
-    const wordList& names = fmu.outputNames();
-    auto output = [&names](const std::string& name)
-    {
-        return names.find(word(name, false));
-    };
-    auto indexed = [](const std::string& base, const label k)
-    {
-        return base + '[' + std::to_string(k) + ']';
-    };
-
-    joints.setSize(nJoints);
-    tension.setSize(nJoints);
-    for (label k = 1; k <= nJoints; ++k)
-    {
-        label i[4] =
-        {
-            output(indexed("joint.x", k)),
-            output(indexed("joint.y", k)),
-            output(indexed("joint.z", k)),
-            output(indexed("section.lowerTension", k + 1))
-        };
-        for (label d = 0; d < 3; ++d)
-        {
-            if (i[d] < 0)
-            {
-                i[d] = output
-                (
-                    "joint[" + std::to_string(k) + ','
-                  + std::to_string(d + 1) + ']'
-                );
-            }
-        }
-        if (std::min({i[0], i[1], i[2], i[3]}) < 0)
-        {
-            joints.clear();
-            tension.clear();
-            return;
-        }
-        const scalarList& values = fmu.outputs();
-        joints[k - 1] = point(values[i[0]], values[i[1]], values[i[2]]);
-        tension[k - 1] = values[i[3]];
-    }
-}
-
 } // End anonymous namespace
 
 
@@ -147,23 +74,31 @@ void Foam::fmuConnectorOutput::commit()
         return;
     }
 
-    appendNumber(buffer_, pendingTime_);
+    rowFile::appendNumber(buffer_, pendingTime_);
     for (const scalar value : pendingValues_)
     {
         buffer_ += ' ';
-        appendNumber(buffer_, value);
+        rowFile::appendNumber(buffer_, value);
     }
     buffer_ += '\n';
     pending_ = false;
 
+    writeBuffer(rowOf(pendingTime_));
+}
+
+
+std::function<std::string()> Foam::fmuConnectorOutput::rowOf
+(
+    const scalar t
+) const
+{
     // The message of a failure, made only then
-    const scalar t = pendingTime_;
-    writeBuffer([this, t]()
+    return [this, t]()
     {
         std::string what("the row of t = ");
-        appendNumber(what, t);
+        rowFile::appendNumber(what, t);
         return what + " s of connector " + name_;
-    });
+    };
 }
 
 
@@ -215,6 +150,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     pending_(false),
     pendingIndex_(-1),
     pendingTime_(0),
+    provisionalSize_(-1),
     name_(name),
     reportBodies_(reportBodies)
 {
@@ -266,9 +202,10 @@ Foam::fmuConnectorOutput::~fmuConnectorOutput()
 void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 {
     latestTimeIndex() = max(latestTimeIndex(), timeIndex);
-    if (pending_ && timeIndex != pendingIndex_)
+    if (timeIndex != pendingIndex_)
     {
         commit();
+        provisionalSize_ = -1;
     }
 }
 
@@ -276,10 +213,31 @@ void Foam::fmuConnectorOutput::stepBegins(const label timeIndex)
 void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 {
     stepBegins(timeIndex);
+
+    // A further solve of a step whose row is in the file already (a write
+    // time's): its row replaces that one
+    const bool replace = provisionalSize_ >= 0 && timeIndex == pendingIndex_;
+    if (replace)
+    {
+        file_->cutTo(provisionalSize_, rowOf(t));
+    }
+    provisionalSize_ = -1;
+
     pending_ = true;
     pendingIndex_ = timeIndex;
     pendingTime_ = t;
     pendingValues_ = fmu_.outputs();
+
+    // The step's time is written once its last solve is done: the row goes
+    // to the file now, before the time folder is begun, so that a kill
+    // while the time is written loses no row the bodies' files have (each
+    // further solve replaces it)
+    const Time& runTime = time();
+    if (runTime.writeTime() && timeIndex == runTime.timeIndex())
+    {
+        provisionalSize_ = file_->size();
+        commit();
+    }
 
     if (reportBodies_.size())
     {
@@ -320,131 +278,6 @@ bool Foam::fmuConnectorOutput::writeObject
     const_cast<fmuConnectorOutput&>(*this).flush(true);
     writeShape();
     return true;
-}
-
-
-void Foam::fmuConnectorOutput::writeShape() const
-{
-    const label n = fmu_.nShapePoints();
-    if (n < 2)
-    {
-        return;
-    }
-
-    const Time& runTime = time();
-    const fileName dir(runTime.globalPath()/"VTK"/"fmuConnectors");
-    mkDir(dir);
-    const word file
-    (
-        name_ + '_' + Foam::name(runTime.timeIndex()) + ".vtk"
-    );
-
-    // A line of sections: its joints after the shape points, when reported
-    labelList sections;
-    pointField joints;
-    scalarField jointTension;
-    if (fmu_.reportsShapeSections())
-    {
-        sections = fmu_.shapeSections();
-        lineJoints(fmu_, max(sections), joints, jointTension);
-    }
-    const label nJoints = joints.size();
-
-    {
-        OFstream os(dir/file);
-        os.precision(IOstream::defaultPrecision());
-        os  << "# vtk DataFile Version 2.0" << nl
-            << "connector " << name_ << " at t = " << runTime.timeName() << nl
-            << "ASCII" << nl
-            << "DATASET POLYDATA" << nl
-            << "POINTS " << n + nJoints << " double" << nl;
-        for (const point& p : fmu_.shapePoints())
-        {
-            os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
-        }
-        for (const point& p : joints)
-        {
-            os  << p.x() << ' ' << p.y() << ' ' << p.z() << nl;
-        }
-        if (nJoints)
-        {
-            os  << "VERTICES " << nJoints << ' ' << 2*nJoints << nl;
-            for (label k = 0; k < nJoints; ++k)
-            {
-                os  << "1 " << n + k << nl;
-            }
-        }
-        os  << "LINES 1 " << n + 1 << nl << n;
-        for (label k = 0; k < n; ++k)
-        {
-            os  << ' ' << k;
-        }
-        os  << nl;
-
-        if (fmu_.reportsShapeTension() || fmu_.reportsShapeSections())
-        {
-            os  << "POINT_DATA " << n + nJoints << nl;
-        }
-        if (fmu_.reportsShapeTension())
-        {
-            os  << "SCALARS tension double 1" << nl
-                << "LOOKUP_TABLE default" << nl;
-            for (const scalar T : fmu_.shapeTension())
-            {
-                os  << T << nl;
-            }
-            for (const scalar T : jointTension)
-            {
-                os  << T << nl;
-            }
-        }
-        if (fmu_.reportsShapeSections())
-        {
-            os  << "SCALARS section int 1" << nl
-                << "LOOKUP_TABLE default" << nl;
-            for (const label k : sections)
-            {
-                os  << k << nl;
-            }
-            for (label k = 1; k <= nJoints; ++k)
-            {
-                os  << k << nl;
-            }
-        }
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "connector " << name_ << ": cannot write " << os.name()
-                << exit(FatalError);
-        }
-    }
-
-    // The series: the entries of earlier times (a restarted run drops
-    // those from its start on), then this one; written to a temporary file
-    // and renamed, so that a reader never sees half a file
-    const fileName series(dir/(name_ + ".vtk.series"));
-    vtk::seriesWriter entries;
-    entries.load
-    (
-        series,
-        false,
-        runTime.value() - 0.5*runTime.deltaTValue()
-    );
-    entries.append(runTime.value(), file);
-
-    const fileName tmp(series + ".tmp");
-    {
-        OFstream os(tmp);
-        os.precision(IOstream::defaultPrecision());
-        entries.print(os);
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "connector " << name_ << ": cannot write " << tmp
-                << exit(FatalError);
-        }
-    }
-    Foam::mv(tmp, series);
 }
 
 

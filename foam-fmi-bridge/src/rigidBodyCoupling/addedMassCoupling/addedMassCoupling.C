@@ -438,12 +438,7 @@ void Foam::addedMassCoupling::writeStateFile
 
     // ASCII, to a temporary file renamed over the state file: a kill
     // leaves the old file or the new one, never half of it
-    if (!restartFiles::write(dict))
-    {
-        FatalErrorInFunction
-            << "cannot write the " << what.c_str() << " to "
-            << dict.objectPath() << " (disk full?)" << exit(FatalError);
-    }
+    restartFiles::write(dict, "the " + what);
 }
 
 

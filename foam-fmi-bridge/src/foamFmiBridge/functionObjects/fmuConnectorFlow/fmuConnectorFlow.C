@@ -9,7 +9,12 @@
 #include "volFields.H"
 #include "IFstream.H"
 #include "OFstream.H"
+#include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -196,12 +201,47 @@ void Foam::functionObjects::fmuConnectorFlow::writeFlow
         os.writeEntry(connectors_[i], flows[i]);
     }
     // To a temporary name, renamed: a kill never leaves half of it
-    if (!restartFiles::writeText(path, os.str()))
+    restartFiles::writeText
+    (
+        path,
+        os.str(),
+        "the water velocity at the lines of t = "
+      + std::string(time_.timeName()) + " s (function object "
+      + std::string(name()) + ')'
+    );
+}
+
+
+void Foam::functionObjects::fmuConnectorFlow::appendRows
+(
+    const label i,
+    const std::string& rows,
+    const std::string& what
+)
+{
+    std::ostream& os = files(i).stdStream();
+    const std::streamoff whole = os.tellp();
+    errno = 0;
+    os.write(rows.data(), std::streamsize(rows.size()));
+    os.flush();
+    if (os.good())
     {
-        FatalErrorInFunction
-            << "function object " << name() << ": cannot write " << path
-            << " (disk full?)" << exit(FatalError);
+        return;
     }
+
+    const int error = errno ? errno : EIO;
+    if (whole >= 0 && ::truncate(files(i).name().c_str(), off_t(whole)) != 0)
+    {
+        WarningInFunction
+            << "cannot cut " << files(i).name() << " back to its last whole"
+            << " row: " << std::strerror(errno) << endl;
+    }
+    FatalErrorInFunction
+        << "function object " << name() << ": cannot write " << what.c_str()
+        << " to " << files(i).name() << ": " << std::strerror(error)
+        << " (a full disk, or a file-size limit: ulimit -f)."
+        << " The file keeps every whole row written before"
+        << exit(FatalError);
 }
 
 
@@ -210,10 +250,10 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
     const label i
 )
 {
-    OFstream& os = files(i);
     const fmuConnectorCore& core =
         *fmuConnectorCore::find(time_, connectors_[i]);
 
+    OStringStream os;
     writeHeader(os, "Water velocity at the shape points of " + connectors_[i]);
     writeCommented(os, "Time");
     for (label k = 1; k <= core.nShapePoints(); ++k)
@@ -223,7 +263,13 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
             writeTabbed(os, word(c) + '[' + Foam::name(k) + ']');
         }
     }
-    os  << endl;
+    os  << nl;
+    appendRows
+    (
+        i,
+        os.str(),
+        "the header, at t = " + std::string(time_.timeName()) + " s,"
+    );
 }
 
 
@@ -340,14 +386,22 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
             const vectorField& flow = flows[i];
             fmuConnectorCore::find(time_, connectors_[i])->setFlow(flow);
 
-            OFstream& os = files(i);
-            // The time to the file's precision, not the time name's
+            // Formatted as the file's stream formats (initStream), the time
+            // to the file's precision, not the time name's
+            OStringStream os;
+            initStream(os);
             os  << setw(charWidth()) << time_.value();
             for (const vector& u : flow)
             {
                 os  << tab << u.x() << tab << u.y() << tab << u.z();
             }
-            os  << endl;
+            os  << nl;
+            appendRows
+            (
+                i,
+                os.str(),
+                "the row of t = " + std::string(time_.timeName()) + " s"
+            );
         }
 
         // A run restarted from this time starts with these velocities
