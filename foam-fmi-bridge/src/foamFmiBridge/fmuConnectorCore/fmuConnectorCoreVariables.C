@@ -460,6 +460,8 @@ void Foam::fmuConnectorCore::writeDiagnostics(Ostream& os) const
             os  << ' ' << diagnostic << ' ' << output(diagnostic, 0);
         }
     }
+    os  << " (global frame; each moment about its body's reference point,"
+        << " the world's about the origin)";
 }
 
 
