@@ -96,6 +96,17 @@ Foam::wordList ownBodyNames(const Foam::dictionary& motion)
 }
 
 
+//- The dictionary of the body a motion moves: the motion's, or its
+//  parent's for a sixDoFRigidBodyMotionCoeffs sub-dictionary
+const Foam::dictionary& bodyDict(const Foam::dictionary& motion)
+{
+    return
+        motion.dictName() == "sixDoFRigidBodyMotionCoeffs"
+     && &motion.parent() != &Foam::dictionary::null
+      ? motion.parent() : motion;
+}
+
+
 //- The bodies of the case a restraint in the motion can name: the motions
 //  beside it in the dictionary that holds it (the patches of
 //  pointDisplacement's boundaryField with a sixDoF condition, the solvers
@@ -105,10 +116,7 @@ Foam::wordList caseBodyNames(const Foam::dictionary& motion)
 {
     using namespace Foam;
 
-    const dictionary& body =
-        motion.dictName() == "sixDoFRigidBodyMotionCoeffs"
-     && &motion.parent() != &dictionary::null
-      ? motion.parent() : motion;
+    const dictionary& body = bodyDict(motion);
 
     wordList names;
     if (&body.parent() != &dictionary::null)
@@ -423,11 +431,17 @@ bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
     // The bodies named must be the case's: a connector to the world has
     // its restraint in its body's motion, one between two bodies in the
     // motions of both (checked at construction, where the dictionary is
-    // still in the case's)
+    // still in the case's; a motion built from a copy of its dictionary
+    // knows no other body, and the constructor refuses a connector between
+    // two bodies there)
     const dictionary& motion = motionDict(sDoFRBMRDict);
-    if (&motion != &dictionary::null)
+    const bool twoBody = sDoFRBMRDict.found("bodyB", keyType::LITERAL);
+    if
+    (
+        &motion != &dictionary::null
+     && (!twoBody || &bodyDict(motion).parent() != &dictionary::null)
+    )
     {
-        const bool twoBody = sDoFRBMRDict.found("bodyB", keyType::LITERAL);
         const wordList valid
         (
             twoBody ? caseBodyNames(motion) : ownBodyNames(motion)
