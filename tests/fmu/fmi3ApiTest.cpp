@@ -25,13 +25,11 @@ protected:
     void prepare(Instance3& in)
     {
         ASSERT_NE(in.c, nullptr) << in.lastMessage();
-        ASSERT_EQ(
-            in.initialize(arrayValues(genericParameters(*fmu), *fmu3)),
-            fmi3OK)
+        ASSERT_EQ(in.initialize(arrayValues(genericParameters(*fmu), *fmu3)),
+                  fmi3OK)
             << in.lastMessage();
-        ASSERT_EQ(
-            in.set(arrayValues(inputs(genericA(), genericB()), *fmu3)),
-            fmi3OK)
+        ASSERT_EQ(in.set(arrayValues(inputs(genericA(), genericB()), *fmu3)),
+                  fmi3OK)
             << in.lastMessage();
         ASSERT_EQ(in.doStep(0.0, 0.5), fmi3OK) << in.lastMessage();
     }

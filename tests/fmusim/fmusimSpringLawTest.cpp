@@ -22,8 +22,8 @@ TEST_P(SpringLaw, RunReproducesTheAnalyticLaw)
     harness::writeFile(in, "time,B.r[1],B.r[2]\n0,0.2,0.5\n1,3,0.5\n");
     const harness::Result r = harness::fmusim(
         "run " + GetParam()
-        + " --set stiffness=200 --set restLength=1 --set B.p[1]=0 --input-file " + in
-        + " --stop-time 1 --step-size 0.01 --output-file " + out
+        + " --set stiffness=200 --set restLength=1 --set B.p[1]=0 --input-file "
+        + in + " --stop-time 1 --step-size 0.01 --output-file " + out
         + " --output-variables \"A.F[1],A.F[2],A.F[3],B.F[1],B.F[2],A.M[3],B.M[3],potentialEnergy\"");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const harness::Table t = harness::readTable(out);
