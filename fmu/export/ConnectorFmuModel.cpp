@@ -30,10 +30,11 @@ ConnectorFmuModel::ConnectorFmuModel(ModelIdentity identity,
                             {0, 0, 0});
 }
 
-void ConnectorFmuModel::declareBodies(const std::vector<double>& B_r0)
+void ConnectorFmuModel::declareBodies(const std::vector<double>& B_p0)
 {
+    table().setStart(B_p, B_p0);
     A = declareBodyInputs(table(), "A", {0, 0, 0});
-    B = declareBodyInputs(table(), "B", B_r0);
+    B = declareBodyInputs(table(), "B", {0, 0, 0});
     bodiesDeclared_ = true;
 }
 

@@ -107,9 +107,12 @@ protected:
     //- Declares the parameters A.p and B.p
     ConnectorFmuModel(ModelIdentity identity, ConnectorWording wording = {});
 
-    //- Declares the inputs of A (at the origin) and of B (its reference point
-    //  at `B_r0`); both start with identity orientation and at rest
-    void declareBodies(const std::vector<double>& B_r0);
+    //- Declares the inputs of A and of B, both starting at the origin with
+    //  identity orientation and at rest (B as the bridge feeds the fixed
+    //  world to a connector without a body B), and sets the start value of
+    //  B.p to `B_p0`: the attachment on B, the anchor in the world, where
+    //  the start values are a configuration without load
+    void declareBodies(const std::vector<double>& B_p0);
 
     //- Declares the Boolean constant inputsStartAtRest = true: the start
     //  values of the inputs and parameters are a configuration without load

@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <limits>
-#include <utility>
 
 namespace fmuExport {
 
@@ -89,41 +88,6 @@ std::string arrayDescription(const std::string& base, std::size_t n,
         + "]; element 1: " + firstDescription;
 }
 
-//- X.x, X.y, X.z, three vectors of one length n and kind, as one n x 3
-//  array X
-bool mergePoints(std::vector<ArrayVariable>& arrays)
-{
-    const std::size_t k = arrays.size();
-    if (k < 3) {
-        return false;
-    }
-    ArrayVariable& x = arrays[k - 3];
-    const ArrayVariable& y = arrays[k - 2];
-    const ArrayVariable& z = arrays[k - 1];
-    const std::string base = withoutSuffix(x.name, ".x");
-    if (base.empty() || y.name != base + ".y" || z.name != base + ".z"
-        || x.dimensions.size() != 1 || y.dimensions != x.dimensions
-        || z.dimensions != x.dimensions || !sameKind(*x.first, *y.first)
-        || !sameKind(*x.first, *z.first)) {
-        return false;
-    }
-    const std::size_t n = x.dimensions[0];
-    std::vector<fmi2ValueReference> elements;
-    for (std::size_t i = 0; i < n; ++i) {
-        for (const ArrayVariable* axis : {&std::as_const(x), &y, &z}) {
-            elements.push_back(axis->elements[i]);
-        }
-    }
-    x.description = "x y z (columns) of points 1 to " + std::to_string(n)
-        + " (rows): FMI 2.0's " + base + ".x[i], " + base + ".y[i], " + base
-        + ".z[i] (" + x.first->description + ")";
-    x.name = base;
-    x.dimensions = {n, 3};
-    x.elements = std::move(elements);
-    arrays.resize(k - 2);
-    return true;
-}
-
 } // namespace
 
 Fmi3Variables::Fmi3Variables(const VariableTable& table)
@@ -169,7 +133,6 @@ Fmi3Variables::Fmi3Variables(const VariableTable& table)
             ++k;
         }
         variables_.push_back(std::move(array));
-        mergePoints(variables_);
     }
     ownerIndex_.assign(scalars.size(), std::numeric_limits<std::size_t>::max());
     for (std::size_t i = 0; i < variables_.size(); ++i) {

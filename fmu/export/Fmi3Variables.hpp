@@ -4,8 +4,10 @@
 // (docs/connector-fmu-interface.md, "FMI 3.0"):
 //   X[1], X[2], ... X[n]           -> X, Float64 array of dimension n
 //   X[1,1], X[1,2], ... X[r,c]     -> X, r x c (row-major, as FMI 3.0)
-//   X.x[1..n], X.y[1..n], X.z[1..n] -> X, n x 3 (row i: point i)
-// Anything else stays a scalar. An array variable's value reference is that
+// Anything else stays a scalar. A line's points stay three vectors,
+// shape.x, shape.y and shape.z, beside shape.tension: FMI 3.0's structured
+// names allow an array only as a leaf of the name hierarchy, so shape
+// cannot be both an n x 3 array and the parent of shape.tension. An array variable's value reference is that
 // of its first element, so that every FMI 3.0 value reference is also an
 // FMI 2.0 one and both interfaces share one value array.
 #ifndef FMU_EXPORT_FMI3VARIABLES_HPP

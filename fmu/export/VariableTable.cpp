@@ -99,6 +99,26 @@ Block VariableTable::booleanConstant(const std::string& name,
     return Block {v.valueReference, 1};
 }
 
+void VariableTable::setStart(const Block& block,
+                             const std::vector<double>& start)
+{
+    if (start.size() != block.size
+        || block.first + block.size > variables_.size()) {
+        throw std::logic_error("setStart: " + std::to_string(start.size())
+                               + " start values for a block of "
+                               + std::to_string(block.size));
+    }
+    for (std::size_t i = 0; i < block.size; ++i) {
+        ScalarVariable& v = variables_[block.first + i];
+        if (v.causality != Causality::parameter
+            && v.causality != Causality::input) {
+            throw std::logic_error("setStart: " + v.name
+                                   + " is no parameter or input");
+        }
+        v.start = start[i];
+    }
+}
+
 Block VariableTable::add(const std::string& name, Shape shape,
                          Causality causality, const std::string& unit,
                          const std::string& description,

@@ -71,6 +71,10 @@ public:
     Block booleanConstant(const std::string& name,
                           const std::string& description, bool value);
 
+    //- Change the start values of a declared parameter or input block,
+    //  one per element
+    void setStart(const Block& block, const std::vector<double>& start);
+
     const std::vector<ScalarVariable>& variables() const { return variables_; }
 
     std::size_t size() const { return variables_.size(); }

@@ -131,8 +131,7 @@ fmi3Status Instance3::doStep(double t, double h)
     return s;
 }
 
-std::vector<std::string> fmi2ElementNames(const Variable3& v,
-                                          const LoadedFmu& fmu2)
+std::vector<std::string> fmi2ElementNames(const Variable3& v)
 {
     const auto index = [](std::size_t i) { return std::to_string(i + 1); };
     std::vector<std::string> names;
@@ -141,12 +140,6 @@ std::vector<std::string> fmi2ElementNames(const Variable3& v,
     } else if (v.dimensions.size() == 1) {
         for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
             names.push_back(v.name + "[" + index(i) + "]");
-        }
-    } else if (v.dimensions[1] == 3 && fmu2.vr.count(v.name + ".x[1]")) {
-        for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
-            for (const char* axis : {".x[", ".y[", ".z["}) {
-                names.push_back(v.name + axis + index(i) + "]");
-            }
         }
     } else {
         for (std::size_t i = 0; i < v.dimensions[0]; ++i) {
@@ -160,12 +153,12 @@ std::vector<std::string> fmi2ElementNames(const Variable3& v,
 
 std::map<std::string, std::vector<double>>
 arrayValues(const std::map<std::string, double>& scalars,
-            const LoadedFmu3& fmu3, const LoadedFmu& fmu2)
+            const LoadedFmu3& fmu3)
 {
     std::map<std::string, std::vector<double>> arrays;
     std::size_t used = 0;
     for (const Variable3& v : fmu3.variables) {
-        const std::vector<std::string> names = fmi2ElementNames(v, fmu2);
+        const std::vector<std::string> names = fmi2ElementNames(v);
         std::vector<double> values = v.start;
         values.resize(names.size());
         bool any = false;

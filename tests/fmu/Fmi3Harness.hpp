@@ -97,21 +97,17 @@ private:
     const LoadedFmu3& fmu_;
 };
 
-class LoadedFmu;
-
 //- The FMI 2.0 scalar names of the elements of an FMI 3.0 variable, in
 //  its (row-major) order, by the mapping of docs/connector-fmu-interface.md:
-//  X -> X; X of n -> X[1..n]; X of r x c -> X[i,j]; X of n x 3 where the
-//  2.0 FMU has X.x[1] -> X.x[i], X.y[i], X.z[i] for i = 1..n
-std::vector<std::string> fmi2ElementNames(const Variable3& v,
-                                          const LoadedFmu& fmu2);
+//  X -> X; X of n -> X[1..n]; X of r x c -> X[i,j]
+std::vector<std::string> fmi2ElementNames(const Variable3& v);
 
 //- FMI 2.0 scalar values (name -> value) as FMI 3.0 array values: every
 //  3.0 variable with an element in `scalars`, the other elements at their
 //  start values
 std::map<std::string, std::vector<double>>
 arrayValues(const std::map<std::string, double>& scalars,
-            const LoadedFmu3& fmu3, const LoadedFmu& fmu2);
+            const LoadedFmu3& fmu3);
 
 } // namespace fmuTest
 

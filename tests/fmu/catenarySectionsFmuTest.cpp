@@ -26,7 +26,8 @@ const std::map<std::string, double> chainClumpRope
        {"joint1.weight", 2e4},
        {"section2.unstretchedLength", 60.0},
        {"section2.EA", 5e7},
-       {"section2.weight", 50.0}};
+       {"section2.weight", 50.0},
+       {"B.p[1]", 0.0}}; // the anchor at B's reference point
 
 connectors::CatenaryParameters lawParameters()
 {

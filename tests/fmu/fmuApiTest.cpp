@@ -192,8 +192,10 @@ TEST_P(FmuApi, VariableStepSize)
 TEST_P(FmuApi, OutputsFollowTheInputsSetBeforeGetReal)
 {
     // Direct feedthrough: no doStep needed between SetReal and GetReal.
+    // B.p at B's reference point (its start value is the world's anchor
+    // 1 m from A.p)
     Instance in(*fmu);
-    ASSERT_EQ(in.initialize({}), fmi2OK);
+    ASSERT_EQ(in.initialize({{"B.p[1]", 0.0}}), fmi2OK);
     ASSERT_EQ(in.set({{"B.r[1]", 3.0}, {"B.r[2]", 4.0}}), fmi2OK);
     EXPECT_EQ(in.get("length"), 5.0); // |(3,4,0)|, exact
     ASSERT_EQ(in.set({{"B.r[2]", 0.0}}), fmi2OK);

@@ -71,7 +71,8 @@ TEST(LinearSpringFmu, BadParametersAreNamedAtExitInitializationMode)
 TEST(LinearSpringFmu, ZeroLengthLimit)
 {
     LoadedFmu fmu("linearSpring");
-    const std::map<std::string, double> coincident = {{"B.r[1]", 0.0}};
+    // B.p (start value (1, 0, 0)) on A.p (start value the origin)
+    const std::map<std::string, double> coincident = {{"B.r[1]", -1.0}};
     {
         // restLength > 0 (start value 1 m): the force direction is undefined.
         Instance in(fmu);

@@ -31,7 +31,8 @@ inline const std::map<std::string, double> chainParameters
        {"normalAddedMass", 1.0},
        {"seabedContact", 1.0},
        {"segments", 10.0},
-       {"A.p[3]", -2.0}};
+       {"A.p[3]", -2.0},
+       {"B.p[1]", 0.0}}; // the anchor at B's reference point
 
 inline connectors::MooringLineParameters lawParameters()
 {

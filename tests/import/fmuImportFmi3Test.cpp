@@ -107,8 +107,6 @@ TEST(Fmi3Import, DescriptionShowsArraysAsElements)
     // Every 2.0 variable is there, with its value reference, type,
     // causality, variability and unit
     for (const fmuImport::Variable& v : fmu2.modelDescription().variables) {
-        if (v.name.compare(0, 6, "shape.") == 0)
-            continue; // X.x/y/z[i]: the 3.0 array X of n x 3
         ASSERT_TRUE(fmu3.hasVariable(v.name)) << v.name;
         const fmuImport::Variable& w = fmu3.variable(v.name);
         EXPECT_EQ(w.valueReference, v.valueReference) << v.name;

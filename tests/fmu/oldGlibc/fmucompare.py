@@ -40,7 +40,8 @@ def compare(results, reference):
 def compare_versions(results):
     """(summary, failures) of the 2.0 and 3.0 FMUs of each modelIdentifier
     of results: the same outputs, bitwise. 2.0's X.x[i], X.y[i], X.z[i]
-    (a line's shape) are the 3.0 array X's row i."""
+    (a line's shape) are the 3.0 arrays X.x, X.y, X.z; FMUs built before
+    those had the n x 3 array X, whose row i they are."""
     summary, failures = [], []
     for identifier in sorted(set(results) & {k[len("fmi3/"):] for k in results
                                              if k.startswith("fmi3/")}):

@@ -25,7 +25,7 @@ modelDescription.xml. A 3.0 FMU's arrays (Dimension elements: a start, or
 a structural parameter's valueReference) are taken apart into elements
 under FMI 2.0's names (docs/connector-fmu-interface.md, "FMI 3.0"): B.r[2]
 is element 2 of the 3-array B.r, A.R[1,2] element 2 of the 3 x 3 array
-A.R (row-major), shape[i,1] is 2.0's shape.x[i]; an array is set and got
+A.R (row-major), shape.x[i] element i of the 11-array shape.x; an array is set and got
 whole. After initialization body B moves away from its start position with
 velocity U_B (m/s) and both bodies turn, for STEPS steps of H seconds; the
 inputs are set to their values at t + h before the step from t to t + h

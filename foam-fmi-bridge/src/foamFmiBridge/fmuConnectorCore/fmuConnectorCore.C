@@ -194,6 +194,11 @@ Foam::fmuConnectorCore::fmuConnectorCore
     regIOobject(registryIO(runTime, restraintName)),
     file_(caseFile(entries.fmu, runTime)),
     restraintName_(restraintName),
+    bodyNames_
+    ({
+        restraintDict.getOrDefault<word>("body", word::null),
+        restraintDict.getOrDefault<word>("bodyB", "world")
+    }),
     canRollback_(false),
     initialised_(false),
     stepStartTime_(startTime),
@@ -372,6 +377,10 @@ void Foam::fmuConnectorCore::evaluate
             instance_->exitInitializationMode();
             initialised_ = true;
             restorePending(A, B);
+            {
+                const runMessageLevel audible;
+                reportStart(A, B);
+            }
             if (newStep && canRollback_)
             {
                 stepStartState_ = instance_->getState();

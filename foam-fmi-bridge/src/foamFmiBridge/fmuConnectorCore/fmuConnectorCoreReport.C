@@ -4,7 +4,12 @@
 //
 // What a connector tells the user when it starts: the FMU it loaded and
 // the value of every parameter it uses, given in the case or the FMU's
-// default (a parameter left out silently takes the default otherwise).
+// default (a parameter left out silently takes the default otherwise);
+// and, at its first evaluation, where the bodies are: each body's
+// reference point (rigidBodyMotion: the origin of the body's frame, which
+// its transform sets; sixDoF: the centre of rotation) and its attachment
+// point, global coordinates, so that a point given in the wrong frame or
+// from the wrong origin shows at once.
 
 #include "fmuConnectorCore.H"
 #include "Map.H"
@@ -105,6 +110,48 @@ void Foam::fmuConnectorCore::reportSetup(fmuImport::Instance& instance) const
         }
         Info<< "    " << l.name.c_str() << ' ' << text.str().c_str()
             << (l.given ? "" : "  (not given: the FMU's default)") << nl;
+    }
+    Info<< endl;
+}
+
+
+void Foam::fmuConnectorCore::reportStart
+(
+    const kinematics& A,
+    const kinematics& B
+) const
+{
+    Info<< "Restraint " << restraintName_ << ": the bodies at its first"
+        << " evaluation, global coordinates (a body's reference point: the"
+        << " origin of its frame; under sixDoF the centre of rotation; the"
+        << " world's: the origin)" << nl;
+
+    const kinematics* bodies[2] = {&A, &B};
+    forAll(bodyNames_, i)
+    {
+        const kinematics& body = *bodies[i];
+        const std::string side(i == 0 ? "A" : "B");
+        Info<< "    body " << side.c_str() << ' ' << bodyNames_[i]
+            << ": reference point " << body.r;
+
+        // The attachment, where the FMU declares one
+        std::vector<unsigned int> refs;
+        for (label d = 1; d <= 3; ++d)
+        {
+            const std::string name(side + ".p[" + std::to_string(d) + ']');
+            if (fmu_->hasVariable(name))
+            {
+                refs.push_back(fmu_->variable(name).valueReference);
+            }
+        }
+        if (refs.size() == 3)
+        {
+            const std::vector<double> p(instance_->getReal(refs));
+            const vector local(p[0], p[1], p[2]);
+            Info<< ", attachment " << side.c_str() << ".p " << local
+                << " (its frame) at " << (body.r + (body.R & local));
+        }
+        Info<< nl;
     }
     Info<< endl;
 }

@@ -140,8 +140,11 @@ void Foam::fmuConnectorCore::lookupShape()
         return word(std::string(base) + '[' + std::to_string(k) + ']', false);
     };
 
-    // The points: shape.x/y/z[k] (FMI 2.0), or the rows of the n x 3 array
-    // shape of an FMI 3.0 FMU, shape[k,1..3]
+    // The points: shape.x/y/z[k], in FMI 2.0 and 3.0 alike; or the rows
+    // of an n x 3 array shape, shape[k,1..3], as the project's FMI 3.0
+    // FMUs built before shape.x/y/z had it (an array that was also the
+    // parent of shape.tension, which FMI 3.0's structured names forbid),
+    // so that cases holding such a copy keep running and restarting
     for (label k = 1; ; ++k)
     {
         labelList xyz
@@ -457,6 +460,8 @@ void Foam::fmuConnectorCore::writeDiagnostics(Ostream& os) const
             os  << ' ' << diagnostic << ' ' << output(diagnostic, 0);
         }
     }
+    os  << " (global frame; each moment about its body's reference point,"
+        << " the world's about the origin)";
 }
 
 

@@ -8,6 +8,8 @@
 #include "Time.H"
 #include "IFstream.H"
 #include "restartFiles.H"
+#include "wordRes.H"
+#include "fmuConnectorCore.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -56,6 +58,125 @@ Foam::word motionName(const Foam::dictionary& motion)
     return motion.dictName();
 }
 
+
+//- Whether a dictionary is a motion's: it, or its sub-dictionary
+//  sixDoFRigidBodyMotionCoeffs, has a mass and a momentOfInertia
+bool isMotion(const Foam::dictionary& dict)
+{
+    const Foam::dictionary& coeffs =
+        dict.optionalSubDict("sixDoFRigidBodyMotionCoeffs");
+    return
+        coeffs.found("mass", Foam::keyType::LITERAL)
+     && coeffs.found("momentOfInertia", Foam::keyType::LITERAL);
+}
+
+
+//- The names of the motion's own body: the name of its dictionary (unless
+//  that is a copy of sixDoFRigidBodyMotionCoeffs, which names nothing) and
+//  the patches it moves (a sixDoFRigidBodyMotion solver's)
+Foam::wordList ownBodyNames(const Foam::dictionary& motion)
+{
+    Foam::wordList names;
+    const Foam::word name(motionName(motion));
+    if (name != "sixDoFRigidBodyMotionCoeffs")
+    {
+        names.append(name);
+    }
+    if (motion.found("patches", Foam::keyType::LITERAL))
+    {
+        for (const Foam::wordRe& patch : motion.get<Foam::wordRes>("patches"))
+        {
+            if (patch.isLiteral() && !names.found(patch))
+            {
+                names.append(patch);
+            }
+        }
+    }
+    return names;
+}
+
+
+//- The dictionary of the body a motion moves: the motion's, or its
+//  parent's for a sixDoFRigidBodyMotionCoeffs sub-dictionary
+const Foam::dictionary& bodyDict(const Foam::dictionary& motion)
+{
+    return
+        motion.dictName() == "sixDoFRigidBodyMotionCoeffs"
+     && &motion.parent() != &Foam::dictionary::null
+      ? motion.parent() : motion;
+}
+
+
+//- The bodies of the case a restraint in the motion can name: the motions
+//  beside it in the dictionary that holds it (the patches of
+//  pointDisplacement's boundaryField with a sixDoF condition, the solvers
+//  of dynamicMotionSolverListFvMesh, sixDoFSim's bodies) by their keywords,
+//  with the motion's own names (where it is a copy, only those)
+Foam::wordList caseBodyNames(const Foam::dictionary& motion)
+{
+    using namespace Foam;
+
+    const dictionary& body = bodyDict(motion);
+
+    wordList names;
+    if (&body.parent() != &dictionary::null)
+    {
+        for (const entry& e : body.parent())
+        {
+            if (e.isDict() && isMotion(e.dict()))
+            {
+                names.append(e.keyword());
+            }
+        }
+    }
+    for (const word& name : ownBodyNames(motion))
+    {
+        if (!names.found(name))
+        {
+            names.append(name);
+        }
+    }
+    return names;
+}
+
+
+//- FatalIOError unless the restraint's entry key names one of the valid
+//  bodies; which those are is said in the message
+void checkBody
+(
+    const Foam::word& restraintName,
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::wordList& valid,
+    const char* which
+)
+{
+    using namespace Foam;
+
+    const bool given = dict.found(key, keyType::LITERAL);
+    const word body(given ? dict.get<word>(key) : word::null);
+    if (given && valid.found(body))
+    {
+        return;
+    }
+    FatalIOErrorInFunction(dict)
+        << "restraint " << restraintName << ": entry " << key;
+    if (given)
+    {
+        FatalIOError<< " names " << body << ", which is not a body of the case";
+    }
+    else
+    {
+        FatalIOError<< " is missing";
+    }
+    FatalIOError
+        << ". A sixDoF body is named by its motion: the patch of its"
+        << " sixDoFRigidBodyDisplacement condition, the solver's name in"
+        << " dynamicMotionSolverListFvMesh, a patch a sixDoFRigidBodyMotion"
+        << " solver moves. " << which << ": "
+        << (valid.empty() ? string("none found") : fmuConnectorCore::listed(valid)).c_str()
+        << exit(FatalIOError);
+}
 
 
 //- At a restart from a motion dictionary written by an earlier run (the
@@ -343,6 +464,43 @@ bool Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::read
 )
 {
     sixDoFRigidBodyMotionRestraint::read(sDoFRBMRDict);
+
+    // The bodies named must be the case's: a connector to the world has
+    // its restraint in its body's motion, one between two bodies in the
+    // motions of both (checked at construction, where the dictionary is
+    // still in the case's; a motion built from a copy of its dictionary
+    // knows no other body, and the constructor refuses a connector between
+    // two bodies there)
+    const dictionary& motion = motionDict(sDoFRBMRDict);
+    const bool twoBody = sDoFRBMRDict.found("bodyB", keyType::LITERAL);
+    if
+    (
+        &motion != &dictionary::null
+     && (!twoBody || &bodyDict(motion).parent() != &dictionary::null)
+    )
+    {
+        const wordList valid
+        (
+            twoBody ? caseBodyNames(motion) : ownBodyNames(motion)
+        );
+        checkBody
+        (
+            name_,
+            sDoFRBMRDict,
+            "body",
+            valid,
+            twoBody
+          ? "The bodies of the case"
+          : "A connector to the fixed world is in its body's motion, here"
+        );
+        if (twoBody)
+        {
+            checkBody
+            (
+                name_, sDoFRBMRDict, "bodyB", valid, "The bodies of the case"
+            );
+        }
+    }
 
     fmuConnectorCore::checkEntries
     (
