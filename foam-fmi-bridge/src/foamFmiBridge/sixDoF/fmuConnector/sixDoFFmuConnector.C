@@ -341,9 +341,12 @@ Foam::sixDoFRigidBodyMotionRestraints::fmuConnector::fmuConnector
                 << " condition, the solver's name in"
                 << " dynamicMotionSolverListFvMesh" << exit(FatalIOError);
         }
+    }
 
-        // The kinematics the body starts from, for the other body's
-        // evaluations before this one's first solve
+    // The kinematics the body starts from (a line's start shape, the other
+    // body's evaluations before this one's first solve) and its mass
+    // properties
+    {
         dictionary startDict(motion);
         startDict.remove("restraints");
         const sixDoFRigidBodyMotion startMotion
