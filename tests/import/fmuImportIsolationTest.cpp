@@ -113,6 +113,31 @@ TEST(ChildProcess, TimeLimitLetsShorterCallsThrough)
         spring.instance.doStep(0.25 * k, 0.25);
 }
 
+// Requests and replies longer than the call page holds (64 KiB) go on the
+// socket: 10000 values, 120 kB of a set, 80 kB of a get
+TEST(ChildProcess, LongMessagesGoThrough)
+{
+    FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "crashTime",
+                        1e300);
+    const unsigned int force = spring.fmu.variable("A.F[1]").valueReference;
+    const std::vector<unsigned int> vrs(10000, force);
+    spring.instance.doStep(0.0, 0.25);
+    const std::vector<double> values = spring.instance.getReal(vrs);
+    ASSERT_EQ(values.size(), vrs.size());
+    EXPECT_EQ(values.front(), spring.instance.getReal({force}).front());
+    EXPECT_EQ(values.back(), values.front());
+    spring.instance.reset();
+    const unsigned int crash
+        = spring.fmu.variable("crashTime").valueReference;
+    spring.instance.setReal(std::vector<unsigned int>(10000, crash),
+                            std::vector<double>(10000, 0.5));
+    spring.instance.setupExperiment(0.0);
+    spring.instance.enterInitializationMode();
+    spring.instance.exitInitializationMode();
+    EXPECT_EQ(spring.stepUntilLost().reason(),
+              fmuImport::LostCall::Reason::crashed);
+}
+
 TEST(ChildProcess, ErrorOfTheBinaryComesWithTheFirstInstance)
 {
     const fmuImport::Fmu fmu(fmuPath("missingSymbol"),
