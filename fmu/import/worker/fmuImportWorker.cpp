@@ -1,5 +1,6 @@
 // fmuImportWorker: runs one instance of an FMU for another process
-// (fmuImport's Isolation::process; ChildInstance.hpp starts it).
+// (fmuImport's Isolation::process; ChildInstance.hpp starts it): the
+// process and the transport of requests; Requests.hpp runs them.
 //
 //   fmuImportWorker <parent pid>
 //
@@ -15,8 +16,8 @@
 // (PR_SET_PDEATHSIG). Terminal signals (SIGINT, SIGTERM, SIGHUP, SIGQUIT)
 // are the parent's to act on: ignored here. Not a program to run by hand.
 #include "Channel.hpp"
-#include "FmuImpl.hpp"
 #include "Protocol.hpp"
+#include "Requests.hpp"
 
 #include "fmuImport/fmuImport.hpp"
 
@@ -35,9 +36,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
-#include <map>
-#include <memory>
-#include <optional>
 
 namespace {
 
@@ -46,6 +44,7 @@ using protocol::FrameReader;
 using protocol::FrameWriter;
 using protocol::Kind;
 using protocol::Op;
+using worker::Requests;
 
 // How long the child reads the page for the next request before it sleeps:
 // the calls of one motion solve come within microseconds of each other
@@ -87,7 +86,14 @@ void closeInherited()
 
 class Worker {
 public:
-    Worker(protocol::CallPage& page, int socket) : page_(page), socket_(socket)
+    Worker(protocol::CallPage& page, int socket)
+        : page_(page), socket_(socket),
+          requests_(page.reading,
+                    [this](const std::string& instance, int status,
+                           const std::string& category,
+                           const std::string& message) {
+                        log(instance, status, category, message);
+                    })
     {
     }
 
@@ -172,7 +178,7 @@ private:
         std::string error;
         page_.started.store(seq);
         try {
-            run(op, frame, w);
+            requests_.run(op, frame, w);
         } catch (const std::exception& e) {
             error = e.what();
         }
@@ -189,162 +195,6 @@ private:
         return op == Op::freeInstance;
     }
 
-    // The results go after the FMU's last message: run writes the
-    // message first.
-    void run(Op op, FrameReader& in, FrameWriter& out)
-    {
-        if (op == Op::load) {
-            const std::string directory = in.getString();
-            const std::string fmuPath = in.getString();
-            fmu_.emplace(Fmu::Impl::openUnpacked(directory, fmuPath));
-            out.put(std::string());
-            return;
-        }
-        if (op == Op::instantiate) {
-            const std::string name = in.getString();
-            const bool loggingOn = in.get<std::uint8_t>() != 0;
-            instance_ = std::make_unique<Instance>(
-                *fmu_, name,
-                [this](const std::string& instance, int status,
-                       const std::string& category,
-                       const std::string& message) {
-                    log(instance, status, category, message);
-                },
-                loggingOn);
-            out.put(std::string());
-            return;
-        }
-        Instance& i = *instance_;
-        // A get's reply: the instance's last message, then the values
-        const auto reply
-            = [&](const auto& values) { out.put(i.lastMessage()).put(values); };
-        switch (op) {
-        case Op::setupExperiment: {
-            const double start = in.get<double>();
-            const bool stopDefined = in.get<std::uint8_t>() != 0;
-            i.setupExperiment(start, stopDefined, in.get<double>());
-            break;
-        }
-        case Op::enterInitializationMode:
-            i.enterInitializationMode();
-            break;
-        case Op::exitInitializationMode:
-            i.exitInitializationMode();
-            break;
-        case Op::terminate:
-            i.terminate();
-            break;
-        case Op::reset:
-            i.reset();
-            break;
-        case Op::setReal: {
-            const auto vrs = in.getVector<unsigned int>();
-            i.setReal(vrs, in.getVector<double>());
-            break;
-        }
-        case Op::setInteger: {
-            const auto vrs = in.getVector<unsigned int>();
-            i.setInteger(vrs, in.getVector<int>());
-            break;
-        }
-        case Op::setBoolean: {
-            const auto vrs = in.getVector<unsigned int>();
-            i.setBoolean(vrs, in.getBools());
-            break;
-        }
-        case Op::setString: {
-            const auto vrs = in.getVector<unsigned int>();
-            i.setString(vrs, in.getStrings());
-            break;
-        }
-        case Op::getReal:
-            return reply(i.getReal(in.getVector<unsigned int>()));
-        case Op::getInteger:
-            return reply(i.getInteger(in.getVector<unsigned int>()));
-        case Op::getBoolean:
-            return reply(i.getBoolean(in.getVector<unsigned int>()));
-        case Op::getString:
-            return reply(i.getString(in.getVector<unsigned int>()));
-        case Op::doStep: {
-            const double t = in.get<double>(), h = in.get<double>();
-            const bool noSet = in.get<std::uint8_t>() != 0;
-            const bool mayDiscard = in.get<std::uint8_t>() != 0;
-            const auto readAfter = in.getVector<unsigned int>();
-            Instance::StepResult result = Instance::StepResult::completed;
-            if (mayDiscard)
-                result = i.tryDoStep(t, h, noSet);
-            else
-                i.doStep(t, h, noSet);
-            out.put(i.lastMessage()).put(static_cast<std::uint8_t>(result));
-            readAfterStep(i, result, readAfter, out);
-            return;
-        }
-        case Op::lastSuccessfulTime: {
-            const double t = i.lastSuccessfulTime();
-            out.put(i.lastMessage()).put(t);
-            return;
-        }
-        case Op::getState:
-            states_[in.get<std::uint64_t>()] = i.getState();
-            break;
-        case Op::setState:
-            i.setState(state(in.get<std::uint64_t>()));
-            break;
-        case Op::freeState:
-            states_.erase(in.get<std::uint64_t>());
-            break;
-        case Op::serializeState: {
-            const auto bytes = i.serializeState(state(in.get<std::uint64_t>()));
-            out.put(i.lastMessage()).put(bytes);
-            return;
-        }
-        case Op::deserializeState: {
-            const std::uint64_t id = in.get<std::uint64_t>();
-            states_[id] = i.deserializeState(in.getVector<char>());
-            break;
-        }
-        case Op::freeInstance:
-            states_.clear();
-            instance_.reset();
-            out.put(std::string());
-            return;
-        case Op::load:
-        case Op::instantiate:
-            break;
-        }
-        out.put(i.lastMessage());
-    }
-
-    // The read that follows a completed step (Protocol.hpp): a flag, then
-    // the values and the FMU's last message
-    void readAfterStep(Instance& i, Instance::StepResult result,
-                       const std::vector<unsigned int>& vrs, FrameWriter& out)
-    {
-        std::vector<double> values;
-        bool read = false;
-        if (result == Instance::StepResult::completed && !vrs.empty()) {
-            page_.reading.store(1);
-            try {
-                values = i.getReal(vrs);
-                read = true;
-            } catch (const std::exception&) {
-                // asked again, as a call of its own
-            }
-            page_.reading.store(0);
-        }
-        out.put(std::uint8_t(read));
-        if (read)
-            out.put(values).put(i.lastMessage());
-    }
-
-    const Instance::State& state(std::uint64_t id) const
-    {
-        const auto found = states_.find(id);
-        if (found == states_.end())
-            throw Error("fmuImportWorker: no FMU state " + std::to_string(id));
-        return found->second;
-    }
-
     void postError(const std::string& error)
     {
         out_.clear();
@@ -352,7 +202,7 @@ private:
         w.put(Kind::reply)
             .put(std::uint8_t(0))
             .put(error)
-            .put(instance_ ? instance_->lastMessage() : std::string());
+            .put(requests_.lastMessage());
         w.finish();
         postReply();
     }
@@ -408,9 +258,7 @@ private:
     protocol::Inbox inbox_;
     std::vector<char> out_;
     std::string failed_; // the error of a failed request without reply
-    std::optional<Fmu> fmu_;
-    std::unique_ptr<Instance> instance_;
-    std::map<std::uint64_t, Instance::State> states_;
+    Requests requests_;
 };
 
 } // namespace
