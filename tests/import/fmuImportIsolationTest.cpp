@@ -127,8 +127,7 @@ TEST(ChildProcess, LongMessagesGoThrough)
     EXPECT_EQ(values.front(), spring.instance.getReal({force}).front());
     EXPECT_EQ(values.back(), values.front());
     spring.instance.reset();
-    const unsigned int crash
-        = spring.fmu.variable("crashTime").valueReference;
+    const unsigned int crash = spring.fmu.variable("crashTime").valueReference;
     spring.instance.setReal(std::vector<unsigned int>(10000, crash),
                             std::vector<double>(10000, 0.5));
     spring.instance.setupExperiment(0.0);

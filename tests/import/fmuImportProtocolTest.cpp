@@ -23,7 +23,10 @@ using fmuImport::protocol::Inbox;
 std::vector<char> twoFrames()
 {
     std::vector<char> bytes;
-    FrameWriter(bytes, 7).put(std::int32_t(-3)).put(std::string("spring")).finish();
+    FrameWriter(bytes, 7)
+        .put(std::int32_t(-3))
+        .put(std::string("spring"))
+        .finish();
     FrameWriter(bytes, 8).put(std::vector<double> {0.5, 1e300}).finish();
     return bytes;
 }

@@ -104,9 +104,8 @@ void ChildInstance::readSocket(bool wait, bool afterPost)
         if (!wait)
             return;
         pollfd p {socket_, POLLIN, 0};
-        const int timeoutMs = timeout_ > 0
-            ? static_cast<int>(std::ceil(timeout_ * 1000))
-            : -1;
+        const int timeoutMs
+            = timeout_ > 0 ? static_cast<int>(std::ceil(timeout_ * 1000)) : -1;
         if (::poll(&p, 1, timeoutMs) == 0)
             lose(Fault::timedOut, afterPost);
     }

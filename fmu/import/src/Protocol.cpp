@@ -215,13 +215,12 @@ Garbled Inbox::cutShort() const
     FrameHeader header {0, 0, 0};
     std::memcpy(&header, data_.data() + begin_,
                 std::min(pending(), sizeof header));
-    return Garbled("ended within a message (" + std::to_string(pending())
-                   + " of its "
-                   + (pending() < sizeof header
-                          ? std::to_string(sizeof header) + "-byte header"
-                          : std::to_string(sizeof header + header.length)
-                              + " bytes")
-                   + ")");
+    return Garbled(
+        "ended within a message (" + std::to_string(pending()) + " of its "
+        + (pending() < sizeof header
+               ? std::to_string(sizeof header) + "-byte header"
+               : std::to_string(sizeof header + header.length) + " bytes")
+        + ")");
 }
 
 } // namespace protocol
