@@ -9,10 +9,16 @@
 
 #include <gtest/gtest.h>
 
+#include <dirent.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <thread>
 
 namespace {
 
@@ -101,6 +107,51 @@ TEST(ChildProcess, CallOverTheTimeLimitIsKilled)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
             .count(),
         5.0);
+    EXPECT_TRUE(noChildLeft());
+}
+
+// The helper program this process started; -1 when there is none
+pid_t workerChild()
+{
+    DIR* proc = opendir("/proc");
+    pid_t found = -1;
+    while (const dirent* e = proc ? readdir(proc) : nullptr) {
+        std::ifstream stat(std::string("/proc/") + e->d_name + "/stat");
+        std::string pid, comm, state;
+        long parent = 0;
+        if (stat >> pid >> comm >> state >> parent && parent == getpid()
+            && comm == "(fmuImportWorker)")
+            found = std::atoi(pid.c_str());
+    }
+    if (proc)
+        closedir(proc);
+    return found;
+}
+
+// A child killed while its FMU hangs in a call, without a time limit: the
+// call ends within moments, named; it does not wait for ever on the page.
+TEST(ChildProcess, DeathInAHangingCallIsNoticedAtOnce)
+{
+    FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "hangTime",
+                        0.5);
+    const pid_t child = workerChild();
+    ASSERT_GT(child, 0);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point killed;
+    std::thread killer([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        killed = Clock::now();
+        ::kill(child, SIGKILL);
+    });
+    const fmuImport::LostCall lost = spring.stepUntilLost();
+    const Clock::time_point end = Clock::now();
+    killer.join();
+    const double after = std::chrono::duration<double>(end - killed).count();
+    EXPECT_EQ(std::string(lost.what()),
+              "the FMU crashed (SIGKILL, killed) in fmi2DoStep at t = 0.5 in "
+              "FMU '"
+                  + fmuPath("faultySpring") + "', instance 'spring'");
+    EXPECT_LT(after, 0.5);
     EXPECT_TRUE(noChildLeft());
 }
 
