@@ -76,9 +76,9 @@ def main(argv):
     print(f"  isolation none (in process)     {f[0]:8.0f}  {f[1]:8.0f}")
     print(f"  isolation process               {p[0]:8.0f}  {p[1]:8.0f}")
     print(f"  difference                      {p[0] - f[0]:8.0f}  {p[1] - f[1]:8.0f}")
-    print("Goal: isolation process within 20000 ns of in process")
-    print(f"  new step {'met' if p[0] - f[0] <= 20000 else 'NOT met'}, "
-          f"repeated solve {'met' if p[1] - f[1] <= 20000 else 'NOT met'}")
+    print("Goal: isolation process within 10000 ns of in process (on an idle machine)")
+    print(f"  new step {'met' if p[0] - f[0] <= 10000 else 'NOT met'}, "
+          f"repeated solve {'met' if p[1] - f[1] <= 10000 else 'NOT met'}")
     print()
     print("The same connector as an FMI 3.0 FMU (fmi3/linearSpring.fmu: whole")
     print("arrays through fmi3Get/SetFloat64) beside the FMI 2.0 FMU, ns:")

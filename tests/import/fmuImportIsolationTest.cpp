@@ -9,10 +9,16 @@
 
 #include <gtest/gtest.h>
 
+#include <dirent.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <thread>
 
 namespace {
 
@@ -104,6 +110,51 @@ TEST(ChildProcess, CallOverTheTimeLimitIsKilled)
     EXPECT_TRUE(noChildLeft());
 }
 
+// The helper program this process started; -1 when there is none
+pid_t workerChild()
+{
+    DIR* proc = opendir("/proc");
+    pid_t found = -1;
+    while (const dirent* e = proc ? readdir(proc) : nullptr) {
+        std::ifstream stat(std::string("/proc/") + e->d_name + "/stat");
+        std::string pid, comm, state;
+        long parent = 0;
+        if (stat >> pid >> comm >> state >> parent && parent == getpid()
+            && comm == "(fmuImportWorker)")
+            found = std::atoi(pid.c_str());
+    }
+    if (proc)
+        closedir(proc);
+    return found;
+}
+
+// A child killed while its FMU hangs in a call, without a time limit: the
+// call ends within moments, named; it does not wait for ever on the page.
+TEST(ChildProcess, DeathInAHangingCallIsNoticedAtOnce)
+{
+    FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "hangTime",
+                        0.5);
+    const pid_t child = workerChild();
+    ASSERT_GT(child, 0);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point killed;
+    std::thread killer([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        killed = Clock::now();
+        ::kill(child, SIGKILL);
+    });
+    const fmuImport::LostCall lost = spring.stepUntilLost();
+    const Clock::time_point end = Clock::now();
+    killer.join();
+    const double after = std::chrono::duration<double>(end - killed).count();
+    EXPECT_EQ(std::string(lost.what()),
+              "the FMU crashed (SIGKILL, killed) in fmi2DoStep at t = 0.5 in "
+              "FMU '"
+                  + fmuPath("faultySpring") + "', instance 'spring'");
+    EXPECT_LT(after, 0.5);
+    EXPECT_TRUE(noChildLeft());
+}
+
 // A time limit does not end calls that take less, however many
 TEST(ChildProcess, TimeLimitLetsShorterCallsThrough)
 {
@@ -111,6 +162,30 @@ TEST(ChildProcess, TimeLimitLetsShorterCallsThrough)
                         1e300);
     for (int k = 0; k < 200; ++k)
         spring.instance.doStep(0.25 * k, 0.25);
+}
+
+// Requests and replies longer than the call page holds (64 KiB) go on the
+// socket: 10000 values, 120 kB of a set, 80 kB of a get
+TEST(ChildProcess, LongMessagesGoThrough)
+{
+    FaultySpring spring({fmuImport::Isolation::process, 0, ""}, "crashTime",
+                        1e300);
+    const unsigned int force = spring.fmu.variable("A.F[1]").valueReference;
+    const std::vector<unsigned int> vrs(10000, force);
+    spring.instance.doStep(0.0, 0.25);
+    const std::vector<double> values = spring.instance.getReal(vrs);
+    ASSERT_EQ(values.size(), vrs.size());
+    EXPECT_EQ(values.front(), spring.instance.getReal({force}).front());
+    EXPECT_EQ(values.back(), values.front());
+    spring.instance.reset();
+    const unsigned int crash = spring.fmu.variable("crashTime").valueReference;
+    spring.instance.setReal(std::vector<unsigned int>(10000, crash),
+                            std::vector<double>(10000, 0.5));
+    spring.instance.setupExperiment(0.0);
+    spring.instance.enterInitializationMode();
+    spring.instance.exitInitializationMode();
+    EXPECT_EQ(spring.stepUntilLost().reason(),
+              fmuImport::LostCall::Reason::crashed);
 }
 
 TEST(ChildProcess, ErrorOfTheBinaryComesWithTheFirstInstance)

@@ -1,8 +1,10 @@
 // An instance in a child process of its own (Isolation::process): the
 // helper program fmuImportWorker, started with posix_spawn, loads the
 // FMU's binary from this process's unpack directory and runs an in-process
-// instance of it; this side sends it the calls (Protocol.hpp) and turns
-// its death, or a call that outlasts the time limit, into LostCall.
+// instance of it; this side posts it the calls in a shared page
+// (Channel.hpp, Protocol.hpp; ChildExchange.cpp) and turns its death, a
+// call that outlasts the time limit, or an FMU that writes to or closes
+// the socket between the two, into LostCall.
 //
 // posix_spawn, not fork: the child is a fresh program, not a copy of the
 // host. A forked copy of an OpenFOAM solver would share its MPI library's
@@ -14,6 +16,7 @@
 #ifndef FMUIMPORT_CHILDINSTANCE_HPP
 #define FMUIMPORT_CHILDINSTANCE_HPP
 
+#include "Channel.hpp"
 #include "InstanceImpl.hpp"
 #include "Protocol.hpp"
 
@@ -89,10 +92,11 @@ private:
                                   double endTime
                                   = std::numeric_limits<double>::quiet_NaN());
 
-    // Sends the queue and returns the reply of its last request, after
+    // Posts the queue and returns the reply of its last request, after
     // the ok flag and the FMU's last message; the FMU's log messages on
     // the way go to the logger. Error for a failed request, LostCall when
-    // the child dies or a call outlasts the time limit.
+    // the child dies, a call outlasts the time limit, or the socket holds
+    // what the child did not send.
     protocol::FrameReader exchange();
 
     // A call that changes nothing but the FMU's state: once initialization
@@ -111,20 +115,50 @@ private:
     // Throws the LostCall of a child that is gone.
     void checkAlive() const;
 
-    // Writes the queue; false if the child is gone.
-    bool sendQueue();
+    // Posts the queue in the page, or on the socket when it is too long
+    void postQueue();
 
-    // Waits until the socket has something to read; false after the time
-    // limit passed with no request of the child making progress.
-    bool waitForReply();
+    // Waits for the child's post of the reply after the seen'th; reads the
+    // socket at each slice's end. LostCall when the child is gone or
+    // the time limit passed with no request of the child making progress.
+    void awaitReply(std::uint32_t seen);
 
-    // Ends the child (killed after a time-out) and throws LostCall naming
-    // the request in progress.
-    [[noreturn]] void lose(bool timedOut);
+    // Reads the socket into the inbox, waiting for bytes when wait is set
+    // (a reply sent on it), else only taking what is there. LostCall at
+    // its end; afterPost: the child posted the reply, so it is alive and
+    // closed its end in the calls of this exchange.
+    void readSocket(bool wait, bool afterPost);
 
-    // Waits for the child's end; kills it if it does not end within a few
-    // seconds of closing its socket. Returns its wait status.
-    int reap();
+    // The next frame of the inbox; LostCall when it is not one of the
+    // protocol (bytes an FMU wrote to the socket)
+    bool nextFrame(protocol::FrameReader& frame, std::uint64_t& seq,
+                   bool afterPost);
+
+    // Passes the FMU's log message in frame to the logger
+    void log(protocol::FrameReader& frame);
+
+    // The reply of the exchange's last request (seq), after its ok flag
+    // and the FMU's last message; Error for a failed request
+    protocol::FrameReader reply(protocol::FrameReader& frame,
+                                std::uint64_t seq);
+
+    // How a call was lost
+    enum class Fault {
+        timedOut, // killed after the time limit
+        ended, // the socket's end: the child died, or closed it
+        closedChannel, // the child is alive and closed its end
+        garbled // the socket carried what is not a frame: detail says what
+    };
+
+    // Ends the child (killed unless it died) and throws LostCall naming
+    // the request in progress, or, afterPost, the exchange's last request.
+    [[noreturn]] void lose(Fault fault, bool afterPost = false,
+                           const std::string& detail = std::string());
+
+    // Waits for the child's end; kills it if it does not end within
+    // graceSeconds of closing its socket. Returns its wait status and
+    // whether it ended by itself.
+    int reap(double graceSeconds, bool* endedItself = nullptr);
 
     Logger logger_;
     std::string site_; // " in FMU 'x.fmu', instance 'x'"

@@ -2,11 +2,12 @@
 
 #include "fmuImport/fmuImport.hpp"
 
-#include <sched.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
-#include <chrono>
+#include <cstddef>
+#include <cstdio>
 
 namespace fmuImport {
 namespace protocol {
@@ -73,30 +74,18 @@ const char* functionOf(Op op, int fmiMajorVersion)
     return f->fmi3;
 }
 
-bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,
-                int microseconds)
+FrameWriter::FrameWriter(std::vector<char>& out, std::uint64_t seq)
+    : out_(out), start_(out.size())
 {
-    using Clock = std::chrono::steady_clock;
-    const Clock::time_point until
-        = Clock::now() + std::chrono::microseconds(microseconds);
-    while (counter.load(std::memory_order_acquire) < value) {
-        if (Clock::now() > until)
-            return false;
-        sched_yield();
-    }
-    return true;
-}
-
-FrameWriter::FrameWriter(std::vector<char>& out) : out_(out), start_(out.size())
-{
-    put(std::uint32_t(0));
+    put(FrameHeader {frameMagic, 0, seq});
 }
 
 void FrameWriter::finish()
 {
-    const std::uint32_t size
-        = static_cast<std::uint32_t>(out_.size() - start_ - sizeof size);
-    std::memcpy(out_.data() + start_, &size, sizeof size);
+    const std::uint32_t size = static_cast<std::uint32_t>(
+        out_.size() - start_ - sizeof(FrameHeader));
+    std::memcpy(out_.data() + start_ + offsetof(FrameHeader, length), &size,
+                sizeof size);
 }
 
 FrameWriter& FrameWriter::put(const std::string& text)
@@ -155,7 +144,7 @@ std::vector<std::string> FrameReader::getStrings()
     return values;
 }
 
-long Inbox::fill(int fd)
+void Inbox::makeRoom(std::size_t n)
 {
     if (begin_ == end_)
         begin_ = end_ = 0;
@@ -164,8 +153,13 @@ long Inbox::fill(int fd)
         end_ -= begin_;
         begin_ = 0;
     }
-    if (data_.size() - end_ < 65536)
-        data_.resize(end_ + 65536);
+    if (data_.size() - end_ < n)
+        data_.resize(end_ + n);
+}
+
+long Inbox::fill(int fd)
+{
+    makeRoom(65536);
     ssize_t n;
     do
         n = ::read(fd, data_.data() + end_, data_.size() - end_);
@@ -175,21 +169,58 @@ long Inbox::fill(int fd)
     return static_cast<long>(n);
 }
 
-bool Inbox::next(FrameReader& frame)
+void Inbox::append(const char* bytes, std::size_t n)
 {
-    std::uint32_t size = 0;
-    if (end_ - begin_ < sizeof size)
+    makeRoom(n);
+    std::memcpy(data_.data() + end_, bytes, n);
+    end_ += n;
+}
+
+bool Inbox::next(FrameReader& frame, std::uint64_t& seq)
+{
+    // The magic word is checked as soon as it is in: stray bytes shorter
+    // than a header are named as such, not awaited as a frame's start
+    FrameHeader header {};
+    const std::size_t in = end_ - begin_;
+    std::memcpy(&header, data_.data() + begin_, std::min(in, sizeof header));
+    if (in >= sizeof header.magic && header.magic != frameMagic) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "carried stray bytes (%zu bytes that are not a message: "
+                      "magic word 0x%08x where a message begins with 0x%08x)",
+                      in, unsigned(header.magic), unsigned(frameMagic));
+        throw Garbled(text);
+    }
+    if (in >= offsetof(FrameHeader, seq) && header.length > longestFrame)
+        throw Garbled("carried stray bytes (a message of "
+                      + std::to_string(header.length)
+                      + " bytes, longer than any: at most "
+                      + std::to_string(longestFrame) + ")");
+    if (in < sizeof header)
         return false;
-    std::memcpy(&size, data_.data() + begin_, sizeof size);
-    if (end_ - begin_ - sizeof size < size) {
-        if (data_.size() - begin_ < sizeof size + size)
-            data_.resize(begin_ + sizeof size + size);
+    if (in - sizeof header < header.length) {
+        if (data_.size() - begin_ < sizeof header + header.length)
+            data_.resize(begin_ + sizeof header + header.length);
         return false;
     }
-    const char* body = data_.data() + begin_ + sizeof size;
-    frame = FrameReader(body, body + size);
-    begin_ += sizeof size + size;
+    const char* body = data_.data() + begin_ + sizeof header;
+    frame = FrameReader(body, body + header.length);
+    seq = header.seq;
+    begin_ += sizeof header + header.length;
     return true;
+}
+
+Garbled Inbox::cutShort() const
+{
+    FrameHeader header {0, 0, 0};
+    std::memcpy(&header, data_.data() + begin_,
+                std::min(pending(), sizeof header));
+    return Garbled(
+        "ended within a message (" + std::to_string(pending()) + " of its "
+        + (pending() < sizeof header
+               ? std::to_string(sizeof header) + "-byte header"
+               : std::to_string(sizeof header + header.length) + " bytes")
+        + ")");
 }
 
 } // namespace protocol

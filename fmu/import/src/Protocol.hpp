@@ -1,16 +1,20 @@
 // What an instance in this process (ChildInstance) and its child process
-// (the helper program fmuImportWorker) say to each other, over a stream
-// socket, and the page of shared memory in which the child marks the
-// request it is running.
+// (the helper program fmuImportWorker) say to each other: frames, posted
+// in the shared call page (Channel.hpp) or, when too long for it, sent on
+// the socket, which also carries the FMU's log messages as they come.
 //
-// Frames: a 32-bit length, then the body. A request is its operation, a
-// flag "reply wanted", its sequence number and its arguments. The child
-// answers only requests that want a reply: with the results, the FMU's
-// last message and the instance's time, or with the error of the request,
-// or of an earlier request without reply that failed (the requests after
-// that one are skipped until the next one that wants a reply). Log
-// messages of the FMU come as frames of their own, before the reply of the
-// call that logged them.
+// A frame is a header (a magic word, the length of the body, a sequence
+// number), then the body. A request is its operation and a flag "reply
+// wanted", then its arguments; its sequence number counts the requests.
+// The child answers only requests that want a reply, with a frame of the
+// same sequence number: the results, the FMU's last message and the
+// instance's time, or the error of the request, or of an earlier request
+// without reply that failed (the requests after that one are skipped until
+// the next one that wants a reply). Log messages of the FMU come as frames
+// of their own, numbered as the request that logged them, before the reply.
+// The magic word, the length and the sequence number make bytes that an
+// FMU writes to the socket, or a frame cut short, an error named as such
+// (Garbled) instead of a misread.
 //
 // A step's request carries the value references of the Reals the parent
 // read right after the previous step (none at first): after a completed
@@ -25,19 +29,15 @@
 #ifndef FMUIMPORT_PROTOCOL_HPP
 #define FMUIMPORT_PROTOCOL_HPP
 
-#include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 namespace fmuImport {
 namespace protocol {
-
-// The child's file descriptors: the socket and the page
-constexpr int socketFd = 3;
-constexpr int pageFd = 4;
 
 enum class Op : std::uint8_t {
     load, // the directory the FMU is unpacked in, the FMU's path
@@ -72,33 +72,27 @@ const char* functionOf(Op op, int fmiMajorVersion);
 
 enum class Kind : std::uint8_t { log, reply };
 
-// The request the child runs: started is its sequence number, set before
-// the request runs; finished is set to it afterwards. A request is in
-// progress while started > finished.
-// While reading is set, the request in progress is a step's read of the
-// outputs (below). The parent waits for finished on the page a few
-// microseconds (waitOnPage) before it waits on the socket: the reply of a
-// fast FMU then costs no sleep and wake-up of the parent.
-struct CallPage {
-    std::atomic<std::uint64_t> started {0};
-    std::atomic<std::uint64_t> finished {0};
-    std::atomic<std::uint32_t> reading {0};
+// The header of every frame
+struct FrameHeader {
+    std::uint32_t magic;
+    std::uint32_t length; // of the body [bytes]
+    std::uint64_t seq;
 };
+constexpr std::uint32_t frameMagic = 0x31554d46; // "FMU1" in memory
+// Longer bodies are not frames of this protocol: bytes of something else
+constexpr std::uint32_t longestFrame = 1u << 30;
 
-// Reads counter until it reaches value, for at most the given
-// microseconds; whether it did. It yields the processor between reads
-// (sched_yield), so that on a machine with more processes than cores the
-// child it waits for can run: a busy loop of pause instructions there
-// took the child's time and made a call ten times slower.
-bool waitOnPage(const std::atomic<std::uint64_t>& counter, std::uint64_t value,
-                int microseconds);
-static_assert(std::atomic<std::uint64_t>::is_always_lock_free,
-              "the page is shared between processes");
+// Bytes that are not what the protocol says: a frame with a wrong magic
+// word or length, a stream that ends within a frame. what() says which,
+// after "the channel": "carried stray bytes (...)".
+struct Garbled : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 // Appends one frame to a buffer.
 class FrameWriter {
 public:
-    explicit FrameWriter(std::vector<char>& out);
+    FrameWriter(std::vector<char>& out, std::uint64_t seq);
     // Fills in the frame's length; call once, at the end.
     void finish();
 
@@ -156,7 +150,8 @@ private:
     const char* end_;
 };
 
-// Frames read from a socket. A frame is complete once all its bytes are in.
+// Frames read from a socket or copied from the call page. A frame is
+// complete once all its bytes are in.
 class Inbox {
 public:
     // Reads what the socket holds, or, for a blocking socket, waits for
@@ -164,11 +159,21 @@ public:
     // when a non-blocking socket has nothing now (errno EAGAIN) or on an
     // error (errno).
     long fill(int fd);
-    // The next complete frame, if one is in; it stays valid until the
-    // next call of fill or next.
-    bool next(FrameReader& frame);
+    // Appends bytes that came another way (the call page).
+    void append(const char* bytes, std::size_t n);
+    // The next complete frame and its sequence number, if one is in; it
+    // stays valid until the next call of fill, append or next. Garbled
+    // when the bytes at hand are not a frame's header.
+    bool next(FrameReader& frame, std::uint64_t& seq);
+    // Bytes in that are not a complete frame: at the end of the stream,
+    // a frame cut short
+    std::size_t pending() const { return end_ - begin_; }
+    // Garbled naming a stream that ended within the frame in
+    Garbled cutShort() const;
 
 private:
+    // Room for n more bytes after those in
+    void makeRoom(std::size_t n);
     std::vector<char> data_;
     std::size_t begin_ = 0, end_ = 0;
 };

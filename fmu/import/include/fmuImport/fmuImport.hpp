@@ -157,15 +157,15 @@ enum class Isolation {
     // fmuImportWorker (started with posix_spawn; found through the
     // environment variable FMUIMPORT_WORKER, beside the running program,
     // in ../bin of the library that holds the importer, in the build tree,
-    // or on PATH), driven through a socket. The FMU's binary is not loaded
-    // in this process. A crash, abort() or exit() of the FMU, or a call
-    // that outlasts the time limit (the child is killed), throws LostCall
-    // from the call; this process goes on. A call costs a round trip to
-    // the child (microseconds): calls that return nothing (fmi2Set*,
-    // fmi2GetFMUstate, fmi2SetFMUstate, fmi2FreeFMUstate) after
-    // initialization are sent with the next call that returns something,
-    // whose Error reports their failure. Not a sandbox: the child runs with
-    // this process's rights.
+    // or on PATH), driven through a page of shared memory. The FMU's
+    // binary is not loaded in this process. A crash, abort() or exit() of
+    // the FMU, a call that outlasts the time limit (the child is killed),
+    // or an FMU that writes to or closes the channel throws LostCall from
+    // the call; this process goes on. A call costs microseconds: calls that
+    // return nothing (fmi2Set*, fmi2GetFMUstate, fmi2SetFMUstate,
+    // fmi2FreeFMUstate) after initialization go with the next call that
+    // returns something, whose Error reports their failure. Not a sandbox:
+    // the child runs with this process's rights.
     process
 };
 
@@ -184,15 +184,15 @@ struct FmuOptions {
 };
 
 // A call into an FMU that did not come back: its process crashed or exited
-// in it, or it outlasted the time limit (Isolation::process). The message
-// names the fmi2 function, the time, the FMU and the instance: "the FMU
-// crashed (SIGSEGV, segmentation fault) in fmi2DoStep at t = 0.75 in FMU
-// 'x.fmu', instance 'x'", "time-out: fmi2DoStep at t = 0.75 in FMU 'x.fmu',
-// instance 'x' did not return within 1 s". The instance is gone: every
-// later call throws the same.
+// in it, it outlasted the time limit, or the FMU wrote to or closed the
+// channel to its process. The message names the fmi2 function, the time,
+// the FMU and the instance: "the FMU crashed (SIGSEGV, segmentation fault)
+// in fmi2DoStep at t = 0.75 in FMU 'x.fmu', instance 'x'", "time-out: ...
+// did not return within 1 s". The instance is gone: every later call
+// throws the same.
 class LostCall : public Error {
 public:
-    enum class Reason { crashed, exited, timedOut };
+    enum class Reason { crashed, exited, timedOut, brokeChannel };
     LostCall(Reason reason, const std::string& message)
         : Error(message), reason_(reason)
     {
