@@ -202,6 +202,16 @@ def read_gauges(case, depth, bottom=None, name="waveGauges"):
     return times, {x: elevation(rows, line, depth, bottom)[0] for x, line in gauge_lines(points)}
 
 
+def case_solver(case):
+    """The solver a tutorial case runs here (tutorialFunctions' caseSolver:
+    its controlDict's application, or on your own OpenFOAM without the
+    rebuilt solvers the solver they are built from); its log is
+    log.<solver>."""
+    functions = os.path.join(os.environ["FOAMFMI_DIR"], "tutorials", "bin", "tutorialFunctions")
+    return subprocess.run(["sh", "-c", '. "$0" && caseSolver', functions], cwd=case,
+                          check=True, stdout=subprocess.PIPE, text=True).stdout.strip()
+
+
 def solver_log(path):
     """Counts of a solver log: time steps ('Time = ' lines), the last
     ExecutionTime (s, None if none) and implicitNewmark's summary line

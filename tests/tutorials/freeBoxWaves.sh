@@ -63,7 +63,7 @@ from foamfmi import dictionary, postprocessing
 case = sys.argv[1]
 rest_time, rest_bound, rest_pitch, min_wave, min_heave, min_pitch = map(float, sys.argv[2:8])
 period = 1.2
-log = postprocessing.solver_log(case + "/log.interFoamAliasSafe")
+log = postprocessing.solver_log(case + "/log." + postprocessing.case_solver(case))
 m = np.array(postprocessing.read_table(case + "/postProcessing/rigidBodyMotion/box.dat"))
 if len(m) != log["timeSteps"]:
     sys.exit("box.dat: %d rows for %d time steps" % (len(m), log["timeSteps"]))

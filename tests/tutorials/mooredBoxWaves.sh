@@ -173,6 +173,6 @@ runTutorial mooredBoxWaves "$dynamic" -mesh-factor 0.375 -end-time 6 \
     -lines dynamic -no-plot
 checkRanToEnd "$dynamic" 6
 python3 "$(dirname "$0")/checkLineOutputs.py" "$dynamic" line1 line2 line3 \
-    line4 --flow lineFlow --solver interFoamAliasSafe > "$workDir/check.out" 2>&1 \
+    line4 --flow lineFlow --solver "$(caseSolverOf "$dynamic")" > "$workDir/check.out" 2>&1 \
     || { cat "$workDir/check.out" 1>&2; fail "dynamic line outputs: see above"; }
 while read -r line; do pass "dynamic $line"; done < "$workDir/check.out"

@@ -52,9 +52,9 @@
 tutorial=mooredBuoyOverset
 endTime=3
 restartTime=1.5
-solver=overInterDyMFoamAliasSafe
+solver=$(caseSolverOf "$FOAMFMI_DIR/tutorials/$tutorial")
 
-requireFile "$FOAM_USER_APPBIN/$solver" "the overset solver (build it: ./Allwmake)"
+command -v "$solver" > /dev/null || fail "the overset solver $solver not found (build it: ./Allwmake)"
 requireFile "$FOAM_USER_LIBBIN/libfoamFmiRigidBodyCoupling.so" \
     "libfoamFmiRigidBodyCoupling.so (build it: ./Allwmake)"
 requireBridge mooringLine "the mooring line FMU (build it: ./Allwmake)"

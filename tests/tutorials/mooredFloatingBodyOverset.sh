@@ -46,8 +46,8 @@ lineWeight=2
 lineEA=5000
 lines="line1:0.1,0,-0.03:1.4,0,0 line2:-0.1,0,-0.03:-1.4,0,0"
 
-requireFile "$FOAM_USER_APPBIN/overInterDyMFoamAliasSafe" \
-    "the overset solver (build it: ./Allwmake)"
+solver=$(caseSolverOf "$FOAMFMI_DIR/tutorials/$tutorial")
+command -v "$solver" > /dev/null || fail "the overset solver $solver not found (build it: ./Allwmake)"
 requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
     "the bridge library (build it: ./Allwmake)"
 requireFile "$FOAMFMI_FMU_DIR/catenary.fmu" \

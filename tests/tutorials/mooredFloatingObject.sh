@@ -160,7 +160,7 @@ pass "moorings hold: $(cat "$workDir/check.out")"
 
 # --- Lines as VTK; the water velocity at the dynamic lines -------------------
 flowArgs=""
-[ "$quasiStatic" = 1 ] || flowArgs="--flow lineFlow --solver interFoamAliasSafe"
+[ "$quasiStatic" = 1 ] || flowArgs="--flow lineFlow --solver $(caseSolverOf "$moored")"
 # shellcheck disable=SC2086
 python3 "$(dirname "$0")/checkLineOutputs.py" "$moored" line1 line2 line3 \
     line4 $flowArgs > "$workDir/check.out" 2>&1 \

@@ -33,6 +33,7 @@ import subprocess
 import sys
 import tempfile
 
+from foamfmi import postprocessing
 from foamfmi.dictionary import set_entry
 
 TOP = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -107,7 +108,7 @@ def run_scene(work, name, connectors, options, states):
     for base in [restarted] + [os.path.join(restarted, p) for p in ("processor0", "processor1") if parallel]:
         shutil.rmtree(os.path.join(base, END), ignore_errors=True)
     set_entry(os.path.join(restarted, "system", "controlDict"), "startFrom", "latestTime")
-    solver = "interFoamAliasSafe"
+    solver = postprocessing.case_solver(full)
     if parallel:
         run(["mpirun", "-np", "2", solver, "-parallel"], restarted, "log.restart")
     else:

@@ -23,6 +23,7 @@ import os
 import re
 import sys
 
+from foamfmi import postprocessing
 from restart import check_scenes
 
 SCENES = {
@@ -43,7 +44,7 @@ def body_state(full, restarted, parallel):
         omegas = re.findall(r"Angular velocity: \(([^)]*)\)", text)[-2:]
         return [float(x) for block in orientations + omegas for x in block.split()]
 
-    return (state(os.path.join(full, "log.interFoamAliasSafe")),
+    return (state(os.path.join(full, "log." + postprocessing.case_solver(full))),
             state(os.path.join(restarted, "log.restart")))
 
 

@@ -27,6 +27,7 @@ import tempfile
 import threading
 import time
 
+from foamfmi import postprocessing
 from foamfmi.postprocessing import PostProcessingError, whole_rows
 from foamfmi.bridgecase import check, summary
 
@@ -92,7 +93,7 @@ def run_limited(case):
     """Run the solver; set the limit once every connector has 5 rows.
     Returns (exit code, log, limit). The log is read through a pipe: a log
     file would reach the limit too."""
-    process = subprocess.Popen(["interFoamAliasSafe", "-case", case], stdout=subprocess.PIPE,
+    process = subprocess.Popen([postprocessing.case_solver(case), "-case", case], stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True, preexec_fn=ignore_sigxfsz)
     log = []
     reader = threading.Thread(target=lambda: log.extend(process.stdout))

@@ -305,6 +305,15 @@ Foam::fmuConnectorCore::loads Foam::sixDoFConnector::restrain
             massSet_ = true;
         }
 
+        // sixDoFRigidBodyMotion has named the restraint when it reports:
+        // the first evaluation's start report goes on lines of its own, and
+        // the restraint is named again for the report line
+        const bool starting = motion.report() && !fmu_->initialised();
+        if (starting)
+        {
+            Info<< "its first evaluation" << endl;
+        }
+
         if (side == 0)
         {
             fmu_->evaluate
@@ -321,6 +330,11 @@ Foam::fmuConnectorCore::loads Foam::sixDoFConnector::restrain
         }
 
         pending_ = twoBody ? other : -1;
+
+        if (starting)
+        {
+            Info<< "Restraint " << name_ << ": ";
+        }
     }
 
     const fmuConnectorCore::loads loads
