@@ -57,6 +57,7 @@ def expanded(case, name):
                           env={**os.environ, "PWD": case}, capture_output=True, text=True)
     if done.returncode != 0:
         message = (done.stderr + done.stdout).strip()
+        message = re.sub(r"\n\s*\n(\s*\n)+", "\n\n", message)
         start = message.find("FOAM FATAL")
         raise ConvertError("%s: OpenFOAM cannot read it (foamDictionary -expand):\n%s"
                            % (name, message[start:] if start >= 0 else message))
@@ -269,13 +270,15 @@ def run(case, dicts, fmu_dir, dry_run, out=print):
             with open(os.path.join(case, name), "w") as f:
                 f.write(text)
             out("%s: written" % name)
+    shown = "$FOAMFMI_FMU_DIR" if os.path.realpath(fmu_dir) == os.path.realpath(
+        os.environ.get("FOAMFMI_FMU_DIR", "")) else fmu_dir
     for source, target in copies:
         if dry_run:
-            out("would copy %s to %s" % (source, target))
+            out("would copy %s to %s" % (os.path.join(shown, os.path.basename(source)), target))
         else:
             os.makedirs(os.path.join(case, "constant", "fmu"), exist_ok=True)
             shutil.copyfile(source, os.path.join(case, target))
-            out("%s: copied from %s" % (target, source))
+            out("%s: copied from %s" % (target, os.path.join(shown, os.path.basename(source))))
     return converted
 
 

@@ -64,8 +64,7 @@ def vector_text(v):
 
 def _entry(restraint, key, where):
     if key not in restraint:
-        raise DictionaryError("%s: no entry %s (a %s restraint needs it)"
-                              % (where, key, restraint.get("_type", "")))
+        raise DictionaryError("%s: no entry %s" % (where, key))
     return restraint[key]
 
 
@@ -94,9 +93,14 @@ def _vector(restraint, key, where, size=3):
 def centre_of_rotation(motion, where):
     """sixDoFRigidBodyMotion's initialCentreOfRotation of the motion
     dictionary motion (module docstring)."""
+    return centre_and_source(motion, where)[0]
+
+
+def centre_and_source(motion, where):
+    """initialCentreOfRotation and the entry it comes from, in words."""
     key = "initialCentreOfMass" if "initialCentreOfMass" in motion else "centreOfMass"
     centre_of_mass = _vector(motion, key, where)
-    centre = centre_of_mass
+    centre, source = centre_of_mass, key
     constraints = motion.get("constraints", {})
     if not isinstance(constraints, dict):
         raise DictionaryError("%s: entry constraints is not a dictionary" % where)
@@ -109,7 +113,8 @@ def centre_of_rotation(motion, where):
             centre = (_vector(constraint, "centreOfRotation",
                               "%s, constraint %s" % (where, name))
                       if "centreOfRotation" in constraint else centre_of_mass)
-    return centre
+            source = "the %s constraint %s" % (kind, name)
+    return centre, source
 
 
 def initial_orientation(motion, where):
@@ -135,15 +140,19 @@ def convert(kind, restraint, framework, motion, where):
     'sixDoF'), or None when it has no twin."""
     if kind == "linearSpring":
         attachment = _vector(restraint, "refAttachmentPt", where)
+        notes = []
         if framework == "sixDoF":
             attachment = sixdof_attachment(attachment, motion, where)
+            centre, source = centre_and_source(motion, where)
+            notes.append("A.p: refAttachmentPt from the centre of rotation %s (%s), in "
+                         "the body's starting orientation" % (vector_text(centre), source))
         return Conversion("linearSpring", {
             "stiffness": number_text(_scalar(restraint, "stiffness", where)),
             "damping": number_text(_scalar(restraint, "damping", where)),
             "restLength": number_text(_scalar(restraint, "restLength", where)),
             "A.p": vector_text(attachment),
             "B.p": vector_text(_vector(restraint, "anchor", where)),
-        })
+        }, notes)
     if kind == "linearDamper":
         # F = -coeff v at the body's reference point (rigidBodyMotion: the
         # origin of its frame; sixDoF: the centre of rotation)
