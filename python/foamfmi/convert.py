@@ -3,7 +3,8 @@
 Replaces each of OpenFOAM's built-in restraints in a case that a connector
 FMU can do by an fmuConnector restraint with the same physics
 (foamfmi.restraintmap, docs/convert.md): linearSpring by linearSpring.fmu,
-linearDamper by translationalDamper.fmu, in rigidBodyMotion and in
+linearDamper by translationalDamper.fmu, sphericalAngularDamper by
+rotationalDamper.fmu, in rigidBodyMotion and in
 sixDoFRigidBodyMotion (the motion solver's coefficients and the
 sixDoFRigidBodyDisplacement patches of a pointDisplacement file). It copies
 the FMUs into CASE/constant/fmu/ and adds libfoamFmiBridge.so to the libs

@@ -37,7 +37,6 @@ LEFT_OUT = {
     "softWall": "a contact with a plane, not a connector law of the project",
     "linearAxialAngularSpring": "no connector FMU does the same yet",
     "sphericalAngularSpring": "no connector FMU does the same yet",
-    "sphericalAngularDamper": "no connector FMU does the same yet",
     "tabulatedAxialAngularSpring": "no connector FMU does the same yet",
     "linearSpringDamper": "no connector FMU does the same yet",
 }
@@ -170,4 +169,11 @@ def convert(kind, restraint, framework, motion, where):
                 "the centre of rotation, does not; a constraint on the rotation "
                 "can remove it (floatingObject's axis constraint does)")
         return conversion
+    if kind == "sphericalAngularDamper":
+        # M = -coeff omega, a couple (both frameworks)
+        return Conversion("rotationalDamper", {
+            "damping": number_text(_scalar(restraint, "coeff", where)),
+            "A.p": "(0 0 0)",
+            "B.p": "(0 0 0)",
+        })
     return None

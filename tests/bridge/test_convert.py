@@ -3,21 +3,22 @@ restraints move the bodies as the built-in ones do, with no fluid.
 
 1. rigidBodyMotion (rigidBodySim): a body on a floating joint, its frame
    turned and its centre of mass off the frame origin, on a built-in
-   linearSpring (attachment off the origin, damping) and a linearDamper,
-   under gravity. The case is converted in a copy (the controlDict without
-   libs, to see the converter add it) and both are run.
+   linearSpring (attachment off the origin, damping), a linearDamper and a
+   sphericalAngularDamper, under gravity. The case is converted in a copy
+   (the controlDict without libs, to see the converter add it) and both
+   are run.
 2. sixDoFRigidBodyMotion (sixDoFSim, constant/sixDoFBodies): one body with
    a line constraint whose centreOfRotation is not the centre of mass (the
    converter must take A.p from that centre, as OpenFOAM's constructor
    does) and a turned orientation, on a linearSpring and a linearDamper;
-   one body with no constraint, turned, on a linearSpring alone, of the
-   same name (two built-in restraints; fmuConnector restraints of one name
-   in two motions would be one connector: the converter renames them). The
-   line
-   runs through the global origin along z and the damper's body moves
-   along it: OpenFOAM's sixDoF linearDamper applies its force at the
-   global origin (a moment centreOfRotation x force about the centre of
-   rotation), which this geometry makes zero, so that the two agree.
+   one body with no constraint, turned, on a linearSpring of the same name
+   (two built-in restraints; fmuConnector restraints of one name in two
+   motions would be one connector: the converter renames them) and a
+   sphericalAngularDamper. The line runs through the global origin along z
+   and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
+   applies its force at the global origin (a moment centreOfRotation x
+   force about the centre of rotation), which this geometry makes zero, so
+   that the two agree.
 3. -dry-run changes no file and prints the diff; the converted case
    names every FMU it copied; a restraint brought in by an #include is
    refused, naming the file and the restraint.
@@ -32,7 +33,7 @@ from foamfmi.sixdofcase import SixDoFCase
 
 CONVERT = os.path.join(os.environ["FOAMFMI_DIR"], "bin", "foamFmiConvert")
 ANCHOR = (0.3, 0.2, 1.2)
-K, C, L0, COEFF = 50.0, 0.5, 0.5, 3.0
+K, C, L0, COEFF, ANGULAR = 50.0, 0.5, 0.5, 3.0, 0.05
 TURNED = "(0 -1 0 1 0 0 0 0 1)"  # 90 deg about z
 
 
@@ -90,7 +91,9 @@ def rigid():
         f"            stiffness {K};\n            damping {C};\n            restLength {L0};\n"
         "        }\n"
         "        damper\n        {\n            type linearDamper;\n            body box;\n"
-        f"            coeff {COEFF};\n        }}\n")
+        f"            coeff {COEFF};\n        }}\n"
+        "        turning\n        {\n            type sphericalAngularDamper;\n"
+        f"            body box;\n            coeff {ANGULAR};\n        }}\n")
     model = (f"\n    solver {{ type Newmark; }}\n    g (0 0 -9.81);\n"
              f"    bodies\n    {{\n{body}    }}\n    restraints\n    {{\n{restraints}    }}\n")
     builtin = Case("convertRigid", model, 2.0, 0.001)
@@ -118,7 +121,8 @@ def rigid():
     out = convert(converted.dir)
     print(out, end="")
     fmus = sorted(os.listdir(os.path.join(converted.dir, "constant", "fmu")))
-    failures += check("FMUs copied", fmus == ["linearSpring.fmu", "translationalDamper.fmu"],
+    failures += check("FMUs copied", fmus == ["linearSpring.fmu", "rotationalDamper.fmu",
+                                                  "translationalDamper.fmu"],
                       f"constant/fmu: {' '.join(fmus)}")
     with open(control.replace(builtin.dir, converted.dir)) as f:
         failures += check("libs added", 'libs            ("libfoamFmiBridge.so");' in f.read(),
@@ -150,6 +154,9 @@ def sixdof():
     damper = ("            damper\n            {\n"
               "                sixDoFRigidBodyMotionRestraint linearDamper;\n"
               f"                coeff {COEFF};\n            }}\n")
+    turning = ("            turning\n            {\n"
+               "                sixDoFRigidBodyMotionRestraint sphericalAngularDamper;\n"
+               f"                coeff {ANGULAR};\n            }}\n")
     line = ("        constraints\n        {\n            along\n            {\n"
             "                sixDoFRigidBodyMotionConstraint line;\n"
             "                centreOfRotation (0 0 0.4);\n"
@@ -157,7 +164,7 @@ def sixdof():
     bodies = {
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
-        "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7))),
+        "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
     converted = copy_case(builtin, "converted")

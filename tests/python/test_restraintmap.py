@@ -119,6 +119,11 @@ class Mapping(unittest.TestCase):
         c = convert("linearDamper", words(coeff="5"), "sixDoF", words(centreOfMass="(0 0 0)"), "d")
         self.assertEqual(len(c.notes), 1)
 
+    def test_angular_damper(self):
+        c = convert("sphericalAngularDamper", words(coeff="0.5"), "sixDoF",
+                    words(centreOfMass="(0 0 0)"), "d")
+        self.assertEqual((c.fmu, c.parameters["damping"], c.notes), ("rotationalDamper", "0.5", []))
+
     def test_left_out(self):
         self.assertIsNone(convert("prescribedRotation", {}, "rigidBody", {}, "d"))
 
