@@ -21,7 +21,9 @@ restraints move the bodies as the built-in ones do, with no fluid.
    that the two agree.
 3. -dry-run changes no file and prints the diff; the converted case
    names every FMU it copied; a restraint brought in by an #include is
-   refused, naming the file and the restraint.
+   refused, naming the file and the restraint; the restraints of a
+   sixDoFRigidBodyDisplacement patch in 0/pointDisplacement are converted
+   with the patch as the body.
 """
 import os
 import shutil
@@ -199,9 +201,51 @@ def include_refused():
                  out.strip().splitlines()[-1] if out.strip() else "no message")
 
 
+def point_patch():
+    """The sixDoF restraints of a sixDoFRigidBodyDisplacement patch in
+    0/pointDisplacement (the default files): the body is the patch."""
+    case = Case("convertPointPatch", "", 1.0, 0.1)
+    os.remove(os.path.join(case.dir, "constant", "dynamicMeshDict"))
+    os.makedirs(os.path.join(case.dir, "0"))
+    with open(os.path.join(case.dir, "0", "pointDisplacement"), "w") as f:
+        f.write(foam_file("pointDisplacement", """dimensions [0 1 0 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    walls { type fixedValue; value uniform (0 0 0); }
+    hull
+    {
+        type            sixDoFRigidBodyDisplacement;
+        centreOfMass    (1 2 3);
+        mass            10;
+        momentOfInertia (1 1 1);
+        restraints
+        {
+            spring
+            {
+                sixDoFRigidBodyMotionRestraint linearSpring;
+                anchor (1 2 5); refAttachmentPt (1 2 3.5);
+                stiffness 10; damping 0; restLength 1;
+            }
+        }
+        value           uniform (0 0 0);
+    }
+}
+"""))
+    out = convert(case.dir)
+    with open(os.path.join(case.dir, "0", "pointDisplacement")) as f:
+        text = f.read()
+    case.cleanup()
+    return check("0/pointDisplacement: the patch's restraint converted, body the patch",
+                 "0/pointDisplacement, restraint spring (linearSpring): fmuConnector "
+                 "linearSpring.fmu, body hull" in out and "A.p        (0 0 0.5);" in text
+                 and "walls { type fixedValue; value uniform (0 0 0); }" in text,
+                 "A.p (0 0 0.5) from the centre of mass (1 2 3), the other patches as written")
+
+
 def main():
-    failures = rigid() + sixdof() + include_refused()
-    return summary(13, failures)
+    failures = rigid() + sixdof() + include_refused() + point_patch()
+    return summary(14, failures)
 
 
 if __name__ == "__main__":
