@@ -48,12 +48,14 @@ def mesh(base):
     return base
 
 
-def sixdof_dictionary(tutorial=TUTORIAL):
-    """The text of the tutorial's constant/dynamicMeshDict.sixDoF with its
-    #codeStream moment of inertia replaced by the value it computes from
-    the same entries: OpenFOAM refuses to compile dynamic code for root
-    (dynamicCode's security check), and tests run as root in containers."""
-    path = os.path.join(tutorial, "constant", "dynamicMeshDict.sixDoF")
+def sixdof_dictionary(tutorial=TUTORIAL, path=None):
+    """The text of the tutorial's constant/dynamicMeshDict.sixDoF (or of
+    the file path, a sixDoF dictionary written alike: OpenFOAM's overset
+    floatingBody) with its #codeStream moment of inertia replaced by the
+    value it computes from the same entries: OpenFOAM refuses to compile
+    dynamic code for root (dynamicCode's security check), and tests run as
+    root in containers."""
+    path = path or os.path.join(tutorial, "constant", "dynamicMeshDict.sixDoF")
     with open(path) as f:
         text = f.read()
     size = []
