@@ -35,10 +35,15 @@ LEFT_OUT = {
                           "function of time, it connects nothing",
     "externalForce": "a force given as a function of time, it connects nothing",
     "softWall": "a contact with a plane, not a connector law of the project",
-    "linearAxialAngularSpring": "no connector FMU does the same yet",
-    "sphericalAngularSpring": "no connector FMU does the same yet",
-    "tabulatedAxialAngularSpring": "no connector FMU does the same yet",
-    "linearSpringDamper": "no connector FMU does the same yet",
+    "linearAxialAngularSpring": "no connector FMU does the same: its angle is measured "
+                                "between projections of a reference direction that "
+                                "switches where it nears the axis (docs/convert.md)",
+    "sphericalAngularSpring": "no connector FMU does the same: its moment is not "
+                              "conservative at finite angles (docs/convert.md)",
+    "tabulatedAxialAngularSpring": "no connector FMU does the same: the angle of "
+                                   "linearAxialAngularSpring, a moment from a table",
+    "linearSpringDamper": "its anchor is a function of time and its force is relaxed "
+                          "against its previous evaluation: not a connector law",
 }
 
 
