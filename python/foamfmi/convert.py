@@ -4,9 +4,10 @@ Replaces each of OpenFOAM's built-in restraints in a case that a connector
 FMU can do by an fmuConnector restraint with the same physics
 (foamfmi.restraintmap, docs/convert.md): linearSpring by linearSpring.fmu,
 linearDamper by translationalDamper.fmu, sphericalAngularDamper by
-rotationalDamper.fmu, in rigidBodyMotion and in
-sixDoFRigidBodyMotion (the motion solver's coefficients and the
-sixDoFRigidBodyDisplacement patches of a pointDisplacement file). It copies
+rotationalDamper.fmu, in rigidBodyMotion and in sixDoFRigidBodyMotion (the
+motion solver's coefficients and the sixDoFRigidBodyDisplacement patches of
+a pointDisplacement file), and sixDoF's linearAxialAngularSpring by
+axialAngularSpring.fmu. It copies
 the FMUs into CASE/constant/fmu/ and adds libfoamFmiBridge.so to the libs
 of system/controlDict.
 
@@ -34,7 +35,7 @@ import tempfile
 from foamfmi import cli, foamdict
 from foamfmi.dictionary import DictionaryError
 from foamfmi.dictspan import dictionary_spans, indentation
-from foamfmi.restraintmap import LEFT_OUT, convert
+from foamfmi.restraintmap import LEFT_OUT, RIGID_LEFT_OUT, convert
 
 PROG = "foamFmiConvert"
 LIBRARY = "libfoamFmiBridge.so"
@@ -151,8 +152,9 @@ def convert_file(case, name, tree, shared, report):
                 continue
             conversion = convert(kind, restraint, framework, motion, where)
             if conversion is None:
-                report("%s (%s): left as it is: %s" % (where, kind, LEFT_OUT.get(
-                    kind, "not a restraint the converter knows")))
+                reason = (RIGID_LEFT_OUT.get(kind) if framework == "rigidBody" else None) \
+                    or LEFT_OUT.get(kind, "not a restraint the converter knows")
+                report("%s (%s): left as it is: %s" % (where, kind, reason))
                 continue
             body = body_of(restraint, motion, path, framework, where)
             if spans is None:

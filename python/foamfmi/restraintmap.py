@@ -35,15 +35,21 @@ LEFT_OUT = {
                           "function of time, it connects nothing",
     "externalForce": "a force given as a function of time, it connects nothing",
     "softWall": "a contact with a plane, not a connector law of the project",
-    "linearAxialAngularSpring": "no connector FMU does the same: its angle is measured "
-                                "between projections of a reference direction that "
-                                "switches where it nears the axis (docs/convert.md)",
     "sphericalAngularSpring": "no connector FMU does the same: its moment is not "
                               "conservative at finite angles (docs/convert.md)",
-    "tabulatedAxialAngularSpring": "no connector FMU does the same: the angle of "
-                                   "linearAxialAngularSpring, a moment from a table",
+    "tabulatedAxialAngularSpring": "no connector FMU does the same yet (the angle of "
+                                   "linearAxialAngularSpring, a moment from a table)",
     "linearSpringDamper": "its anchor is a function of time and its force is relaxed "
                           "against its previous evaluation: not a connector law",
+}
+
+
+# Built-in restraints of rigidBodyMotion alone that are not converted
+RIGID_LEFT_OUT = {
+    "linearAxialAngularSpring": "OpenFOAM's rigidBodyMotion version turns the body away "
+                                "from its reference orientation (it takes the body's "
+                                "global-to-body rotation for body-to-global): no twin "
+                                "(docs/convert.md)",
 }
 
 
@@ -174,6 +180,19 @@ def convert(kind, restraint, framework, motion, where):
                 "the centre of rotation, does not; a constraint on the rotation "
                 "can remove it (floatingObject's axis constraint does)")
         return conversion
+    if kind == "linearAxialAngularSpring":
+        if framework == "rigidBody":
+            return None  # see RIGID_LEFT_OUT
+        orientation = (_vector(restraint, "referenceOrientation", where, size=9)
+                       if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
+        return Conversion("axialAngularSpring", {
+            "stiffness": number_text(_scalar(restraint, "stiffness", where)),
+            "damping": number_text(_scalar(restraint, "damping", where)),
+            "B.axis": vector_text(_vector(restraint, "axis", where)),
+            "referenceOrientation": vector_text(orientation),
+            "A.p": "(0 0 0)",
+            "B.p": "(0 0 0)",
+        })
     if kind == "sphericalAngularDamper":
         # M = -coeff omega, a couple (both frameworks)
         return Conversion("rotationalDamper", {

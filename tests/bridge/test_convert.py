@@ -13,8 +13,9 @@ restraints move the bodies as the built-in ones do, with no fluid.
    does) and a turned orientation, on a linearSpring and a linearDamper;
    one body with no constraint, turned, on a linearSpring of the same name
    (two built-in restraints; fmuConnector restraints of one name in two
-   motions would be one connector: the converter renames them) and a
-   sphericalAngularDamper. The line runs through the global origin along z
+   motions would be one connector: the converter renames them), a
+   sphericalAngularDamper and a linearAxialAngularSpring about a tilted
+   axis, the body starting 90 deg from its reference about z. The line runs through the global origin along z
    and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
    applies its force at the global origin (a moment centreOfRotation x
    force about the centre of rotation), which this geometry makes zero, so
@@ -159,6 +160,12 @@ def sixdof():
     turning = ("            turning\n            {\n"
                "                sixDoFRigidBodyMotionRestraint sphericalAngularDamper;\n"
                f"                coeff {ANGULAR};\n            }}\n")
+    # from identity, the body 90 deg away from it about z at the start
+    axial = ("            twist\n            {\n"
+             "                sixDoFRigidBodyMotionRestraint linearAxialAngularSpring;\n"
+             "                axis (0 0.6 0.8);\n"
+             "                referenceOrientation (1 0 0 0 1 0 0 0 1);\n"
+             "                stiffness 0.4; damping 0.02;\n            }\n")
     line = ("        constraints\n        {\n            along\n            {\n"
             "                sixDoFRigidBodyMotionConstraint line;\n"
             "                centreOfRotation (0 0 0.4);\n"
@@ -166,7 +173,8 @@ def sixdof():
     bodies = {
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
-        "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning),
+        "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning
+                            + axial),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
     converted = copy_case(builtin, "converted")

@@ -124,6 +124,15 @@ class Mapping(unittest.TestCase):
                     words(centreOfMass="(0 0 0)"), "d")
         self.assertEqual((c.fmu, c.parameters["damping"], c.notes), ("rotationalDamper", "0.5", []))
 
+    def test_axial_angular_spring(self):
+        spring = words(axis="(0 1 0)", stiffness="2", damping="0.1")
+        c = convert("linearAxialAngularSpring", spring, "sixDoF", words(centreOfMass="(0 0 0)"),
+                    "d")
+        self.assertEqual((c.fmu, c.parameters["B.axis"], c.parameters["referenceOrientation"]),
+                         ("axialAngularSpring", "(0 1 0)", "(1 0 0 0 1 0 0 0 1)"))
+        # the rigidBodyMotion one turns bodies away from their reference
+        self.assertIsNone(convert("linearAxialAngularSpring", spring, "rigidBody", {}, "d"))
+
     def test_left_out(self):
         self.assertIsNone(convert("prescribedRotation", {}, "rigidBody", {}, "d"))
 
