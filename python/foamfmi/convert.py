@@ -35,7 +35,12 @@ import tempfile
 from foamfmi import cli, foamdict
 from foamfmi.dictionary import DictionaryError
 from foamfmi.dictspan import dictionary_spans, indentation
-from foamfmi.restraintmap import LEFT_OUT, RIGID_LEFT_OUT, convert
+from foamfmi.restraintmap import LEFT_OUT, RIGID_LEFT_OUT, convert, sixdof_frame
+from foamfmi.sixdofcentre import FrameError, openfoam_frame
+
+# Entries of a motion state (a restart's) that make OpenFOAM's state at the
+# start differ from the initial frame the restraints refer to
+STATE_KEYS = ("centreOfRotation", "initialOrientation", "initialCentreOfMass")
 
 PROG = "foamFmiConvert"
 LIBRARY = "libfoamFmiBridge.so"
@@ -84,6 +89,31 @@ def restraints_of(tree, path=()):
             yield path + (key,), tree, "sixDoF"
         else:
             yield from restraints_of(value, path + (key,))
+
+
+def motion_frame(motion, where):
+    """A sixDoF motion's initial centre of rotation and orientation: as
+    OpenFOAM's sixDoFRigidBodyMotion constructs them (sixDoFSim), checked
+    against the constructor's rules (restraintmap.sixdof_frame); by the
+    rules alone where there is no sixDoFSim or the dictionary holds a
+    motion state."""
+    centre, q, source = sixdof_frame(motion, where)
+    if any(key in motion for key in STATE_KEYS):
+        return centre, q, source + "; by OpenFOAM's rules: the dictionary holds a motion state"
+    try:
+        frame = openfoam_frame(motion)
+    except FrameError as err:
+        raise ConvertError("%s: %s" % (where, err)) from None
+    if frame is None:
+        return centre, q, source + "; by OpenFOAM's rules: no sixDoFSim to ask OpenFOAM"
+    differ = max([abs(a - b) for a, b in zip(frame[0], centre)]
+                 + [abs(a - b) for r, s in zip(frame[1], q) for a, b in zip(r, s)])
+    if differ > 1e-9 * (1 + max(abs(c) for c in centre)):
+        raise ConvertError("%s: OpenFOAM gives the motion the centre of rotation %s and the "
+                           "orientation %s, foamFmiConvert's reading of its constructor %s "
+                           "and %s (%s): the converter is wrong here, convert by hand"
+                           % (where, frame[0], frame[1], centre, q, source))
+    return frame[0], frame[1], source + ", as OpenFOAM's sixDoFRigidBodyMotion gives it"
 
 
 def body_of(restraint, motion, path, framework, where):
@@ -139,7 +169,7 @@ def convert_file(case, name, tree, shared, report):
     with open(os.path.join(case, name)) as f:
         text = f.read()
     spans = None
-    replacements, fmus = [], set()
+    replacements, fmus, frames = [], set(), {}
     for path, motion, framework in restraints_of(tree):
         for restraint_name, restraint in foamdict_items(tree, path):
             type_key = "type" if framework == "rigidBody" else "sixDoFRigidBodyMotionRestraint"
@@ -150,7 +180,12 @@ def convert_file(case, name, tree, shared, report):
             kind = foamdict.word(restraint[type_key])
             if kind == "fmuConnector":
                 continue
-            conversion = convert(kind, restraint, framework, motion, where)
+            frame = None
+            if framework == "sixDoF" and kind == "linearSpring":
+                if path not in frames:
+                    frames[path] = motion_frame(motion, "%s, %s" % (name, ".".join(path[:-1])))
+                frame = frames[path]
+            conversion = convert(kind, restraint, framework, motion, where, frame)
             if conversion is None:
                 reason = (RIGID_LEFT_OUT.get(kind) if framework == "rigidBody" else None) \
                     or LEFT_OUT.get(kind, "not a restraint the converter knows")

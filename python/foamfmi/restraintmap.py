@@ -136,26 +136,36 @@ def initial_orientation(motion, where):
     return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
 
 
-def sixdof_attachment(point, motion, where):
-    """A.p of a sixDoF refAttachmentPt: initialQ^T (point - centre)."""
-    centre = centre_of_rotation(motion, where)
-    q = initial_orientation(motion, where)
+def sixdof_frame(motion, where):
+    """(initialCentreOfRotation, initialQ rows, where the centre comes
+    from) by the rules of OpenFOAM's constructor (module docstring)."""
+    centre, source = centre_and_source(motion, where)
+    return centre, initial_orientation(motion, where), source
+
+
+def sixdof_attachment(point, motion, where, frame=None):
+    """A.p of a sixDoF refAttachmentPt: initialQ^T (point - centre), the
+    centre and initialQ those of frame (sixdof_frame, or the same taken
+    from OpenFOAM) or else sixdof_frame's."""
+    centre, q, _ = frame or sixdof_frame(motion, where)
     d = [p - c for p, c in zip(point, centre)]
     return [sum(q[i][j] * d[i] for i in range(3)) for j in range(3)]
 
 
-def convert(kind, restraint, framework, motion, where):
+def convert(kind, restraint, framework, motion, where, frame=None):
     """The Conversion of a built-in restraint of type kind (its entries in
     restraint, its motion dictionary motion; framework 'rigidBody' or
-    'sixDoF'), or None when it has no twin."""
+    'sixDoF'; frame: a sixDoF motion's initial centre of rotation,
+    orientation and their source, default sixdof_frame's), or None when it
+    has no twin."""
     if kind == "linearSpring":
         attachment = _vector(restraint, "refAttachmentPt", where)
         notes = []
         if framework == "sixDoF":
-            attachment = sixdof_attachment(attachment, motion, where)
-            centre, source = centre_and_source(motion, where)
+            frame = frame or sixdof_frame(motion, where)
+            attachment = sixdof_attachment(attachment, motion, where, frame)
             notes.append("A.p: refAttachmentPt from the centre of rotation %s (%s), in "
-                         "the body's starting orientation" % (vector_text(centre), source))
+                         "the body's starting orientation" % (vector_text(frame[0]), frame[2]))
         return Conversion("linearSpring", {
             "stiffness": number_text(_scalar(restraint, "stiffness", where)),
             "damping": number_text(_scalar(restraint, "damping", where)),

@@ -227,6 +227,7 @@ boundaryField
         centreOfMass    (1 2 3);
         mass            10;
         momentOfInertia (1 1 1);
+        solver          { type Newmark; }
         restraints
         {
             spring

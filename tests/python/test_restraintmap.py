@@ -4,7 +4,9 @@ constructor makes it) and where an entry stands in a dictionary's text.
 foamFmiConvert itself, with OpenFOAM's reader, is tested by
 tests/bridge/test_convert.py."""
 import unittest
+from unittest import mock
 
+from foamfmi import convert as converter
 from foamfmi.dictionary import DictionaryError
 from foamfmi.dictspan import dictionary_spans, indentation
 from foamfmi.restraintmap import centre_of_rotation, convert, sixdof_attachment
@@ -147,6 +149,35 @@ class Mapping(unittest.TestCase):
         with self.assertRaisesRegex(DictionaryError, r"entry anchor is \( 0.5 0 \), expected 3 "
                                     r"numbers in \( \)"):
             convert("linearSpring", spring, "rigidBody", {}, "d")
+
+
+class OpenFoamFrame(unittest.TestCase):
+    MOTION = words(centreOfMass="(0.5 0.45 0.35)", constraints={
+        "fixedLine": words(sixDoFRigidBodyMotionConstraint="line",
+                           centreOfRotation="(0.5 0.45 0.1)")})
+
+    def test_openfoam_frame_used_when_it_agrees(self):
+        frame = ([0.5, 0.45, 0.1], [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        with mock.patch.object(converter, "openfoam_frame", return_value=frame):
+            centre, _, source = converter.motion_frame(self.MOTION, "m")
+        self.assertEqual(centre, [0.5, 0.45, 0.1])
+        self.assertIn("as OpenFOAM's sixDoFRigidBodyMotion gives it", source)
+
+    def test_disagreement_stops_the_conversion(self):
+        frame = ([0.5, 0.45, 0.35], [[1, 0, 0], [0, 1, 0], [0, 0, 1]])
+        with mock.patch.object(converter, "openfoam_frame", return_value=frame):
+            with self.assertRaisesRegex(converter.ConvertError,
+                                        r"^m: OpenFOAM gives the motion the centre of rotation "
+                                        r"\[0.5, 0.45, 0.35\].*convert by hand"):
+                converter.motion_frame(self.MOTION, "m")
+
+    def test_state_in_the_dictionary_uses_the_rules(self):
+        motion = dict(self.MOTION, centreOfRotation="( 9 9 9 )".split())
+        with mock.patch.object(converter, "openfoam_frame") as asked:
+            centre, _, source = converter.motion_frame(motion, "m")
+        asked.assert_not_called()
+        self.assertEqual(centre, [0.5, 0.45, 0.1])
+        self.assertIn("the dictionary holds a motion state", source)
 
 
 if __name__ == "__main__":
