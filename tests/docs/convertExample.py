@@ -14,8 +14,9 @@ dynamicMeshDict.sixDoF), to END_TIME.
 floatingBody: OpenFOAM's overset floatingBody (overInterDyMFoam, sixDoF,
 a line constraint along z, rotations free) on meshes 4 times coarser in
 each direction (its cube then 4 cells wide), with a spring to the world
-(attached off the top's centre, so that it turns the body) and a
-sphericalAngularDamper, to OVERSET_END_TIME. OpenFOAM's sixDoF linearDamper
+(attached off the top's centre, so that it turns the body), a
+sphericalAngularDamper and a linearAxialAngularSpring about y (the axis the
+spring turns the body about), to OVERSET_END_TIME. OpenFOAM's sixDoF linearDamper
 is left out here: it applies its force at the global origin, a moment that
 this body, free to turn, would feel and its twin does not
 (docs/convert.md).
@@ -66,6 +67,14 @@ OVERSET_RESTRAINTS = """restraints
     {
         sixDoFRigidBodyMotionRestraint sphericalAngularDamper;
         coeff           0.5;
+    }
+    twist
+    {
+        sixDoFRigidBodyMotionRestraint linearAxialAngularSpring;
+        axis            (0 1 0);
+        referenceOrientation (1 0 0 0 1 0 0 0 1);
+        stiffness       20;
+        damping         0.5;
     }
 }
 """
@@ -238,7 +247,8 @@ def main(scene):
         base = overset_mesh(os.path.join(work, "base"))
         convert_and_run(base, work, "oversetSixDoF",
                         os.path.join(OVERSET, "background", "constant", "dynamicMeshDict"),
-                        OVERSET_RESTRAINTS, ["linearSpring.fmu", "rotationalDamper.fmu"],
+                        OVERSET_RESTRAINTS, ["axialAngularSpring.fmu", "linearSpring.fmu",
+                                             "rotationalDamper.fmu"],
                         "overInterDyMFoam", OVERSET_END_TIME)
     else:
         sys.exit(f"convertExample.py: no scene {scene} (floatingObject, floatingBody)")
