@@ -28,6 +28,7 @@ public:
         for (const auto& [field, block] : scalars_) {
             p.*field = scalar(values, block);
         }
+        setOtherParameters(values, p);
         law_.build(p);
     }
 
@@ -57,6 +58,10 @@ protected:
         vectors_.emplace_back(field, block);
         return block;
     }
+
+    //- Sets the fields of p that are no scalar or vector parameter (a
+    //  matrix), from the value array, before the law is built; none here
+    virtual void setOtherParameters(const double*, Parameters&) const { }
 
     ConnectorOutputs
     evaluate(const double*, const connectors::BodyKinematics& A,

@@ -23,9 +23,11 @@ LOCK = "/tmp/foamfmi-cfd.lock"
 
 
 def run(case, *command):
+    """Run command in case under the CFD lock (one mesh job at a time on
+    this machine), its output to log.<command>; its exit code."""
     log = os.path.join(case, "log." + os.path.basename(command[0]))
     with open(log, "w") as out:
-        return subprocess.run(command, cwd=case, stdout=out,
+        return subprocess.run(["flock", LOCK, *command], cwd=case, stdout=out,
                               stderr=subprocess.STDOUT).returncode
 
 
@@ -44,6 +46,47 @@ def mesh(base):
         if run(base, *command) != 0:
             raise RuntimeError(f"{command[0]} failed in {base}")
     return base
+
+
+def sixdof_dictionary(tutorial=TUTORIAL, path=None):
+    """The text of the tutorial's constant/dynamicMeshDict.sixDoF (or of
+    the file path, a sixDoF dictionary written alike: OpenFOAM's overset
+    floatingBody) with its #codeStream moment of inertia replaced by the
+    value it computes from the same entries: OpenFOAM refuses to compile
+    dynamic code for root (dynamicCode's security check), and tests run as
+    root in containers."""
+    path = path or os.path.join(tutorial, "constant", "dynamicMeshDict.sixDoF")
+    with open(path) as f:
+        text = f.read()
+    size = []
+    for key in ("Lx", "Ly", "Lz", "rhoSolid"):
+        m = re.search(rf"\n\s*{key}\s+([^;]+);", text)
+        if not m:
+            raise RuntimeError(f"{path}: no entry {key}")
+        size.append(float(m.group(1)))
+    mass = size[0] * size[1] * size[2] * size[3]
+    x2, y2, z2 = (v * v for v in size[:3])
+    inertia = (mass * (y2 + z2) / 12, mass * (x2 + z2) / 12, mass * (x2 + y2) / 12)
+    text, n = re.subn(r"momentOfInertia\s+#codeStream\s*\{.*?\n    \};",
+                      "momentOfInertia (%.17g %.17g %.17g);" % inertia, text, flags=re.S)
+    if n != 1:
+        raise RuntimeError(f"{path}: no #codeStream momentOfInertia")
+    return text
+
+
+def add_restraints(case, block):
+    """Put the restraints' text block (a 'restraints { ... }' entry) first
+    in the motion's coefficients of case's constant/dynamicMeshDict."""
+    path = os.path.join(case, "constant", "dynamicMeshDict")
+    with open(path) as f:
+        text = f.read()
+    head = re.search(r"\n(rigidBodyMotionCoeffs|sixDoFRigidBodyMotionCoeffs)\s*\n\{\n", text)
+    if not head:
+        raise RuntimeError(f"{path}: no rigidBodyMotionCoeffs or sixDoFRigidBodyMotionCoeffs")
+    block = "".join("    " + line if line.strip() else line
+                    for line in block.splitlines(True))
+    with open(path, "w") as f:
+        f.write(text[:head.end()] + block + text[head.end():])
 
 
 TETHER = """

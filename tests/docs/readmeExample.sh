@@ -29,6 +29,8 @@ python3 - "$FOAMFMI_DIR/README.md" "$tutorial" "$workDir" "$endTime" \
     "$FOAMFMI_FMU_DIR/linearSpring.fmu" <<'EOF' || fail "cannot make the cases from README.md"
 import os, re, shutil, sys, textwrap
 
+from foamfmi.floatingobject import add_restraints, sixdof_dictionary
+
 readme, tutorial, work, end_time, fmu = sys.argv[1:]
 text = open(readme).read()
 blocks = dict(re.findall(r"<!-- readme example: (\S+) -->\n(.*?)<!-- readme example: end -->",
@@ -61,39 +63,18 @@ if blocks["sixDoFbuiltin"].count("sixDoFRigidBodyMotionRestraint") != 1 \
     sys.exit("README.md: the built-in spring block is not the one this test reads")
 
 solver = "interFoamAliasSafe" if shutil.which("interFoamAliasSafe") else "interFoam"
-for case, block, coeffs in [
-        ("rigidBuiltin", "builtin", "rigidBodyMotionCoeffs"),
-        ("rigidFmu", "rigidBodyMotion", "rigidBodyMotionCoeffs"),
-        ("sixDoFBuiltin", "sixDoFbuiltin", "sixDoFRigidBodyMotionCoeffs"),
-        ("sixDoFFmu", "sixDoFRigidBodyMotion", "sixDoFRigidBodyMotionCoeffs")]:
+for case, block in [("rigidBuiltin", "builtin"), ("rigidFmu", "rigidBodyMotion"),
+                    ("sixDoFBuiltin", "sixDoFbuiltin"), ("sixDoFFmu", "sixDoFRigidBodyMotion")]:
     path = os.path.join(work, case)
     shutil.copytree(tutorial, path)
     constant = os.path.join(path, "constant")
     if case.startswith("sixDoF"):
-        # Its moment of inertia is a #codeStream, which OpenFOAM refuses to
-        # compile for root (dynamicCode's security check; tests run as root
-        # in containers): the value it computes, from the same entries
-        size = [float(re.search(rf"\n\s*{k}\s+([^;]+);", sixdof_dict).group(1))
-                for k in ("Lx", "Ly", "Lz", "rhoSolid")]
-        mass = size[0] * size[1] * size[2] * size[3]
-        squares = [x * x for x in size[:3]]
-        inertia = [mass * (squares[1] + squares[2]) / 12, mass * (squares[0] + squares[2]) / 12,
-                   mass * (squares[0] + squares[1]) / 12]
-        text, n = re.subn(r"momentOfInertia\s+#codeStream\s*\{.*?\n    \};",
-                          "momentOfInertia (%.17g %.17g %.17g);" % tuple(inertia),
-                          sixdof_dict, flags=re.S)
-        if n != 1:
-            sys.exit("dynamicMeshDict.sixDoF: no #codeStream momentOfInertia")
-        open(os.path.join(constant, "dynamicMeshDict"), "w").write(text)
+        # Its #codeStream moment of inertia as the value it computes
+        # (OpenFOAM compiles no dynamic code for root)
+        open(os.path.join(constant, "dynamicMeshDict"), "w").write(sixdof_dictionary(tutorial))
     os.makedirs(os.path.join(constant, "fmu"))
     shutil.copy(fmu, os.path.join(constant, "fmu"))
-    mesh_dict = os.path.join(constant, "dynamicMeshDict")
-    text = open(mesh_dict).read()
-    head = re.search(r"\n" + coeffs + r"\s*\n\{\n", text)
-    if not head:
-        sys.exit(f"{mesh_dict}: no {coeffs}")
-    text = text[:head.end()] + textwrap.indent(blocks[block], "    ") + text[head.end():]
-    open(mesh_dict, "w").write(text)
+    add_restraints(path, blocks[block])
     control = os.path.join(path, "system", "controlDict")
     text = open(control).read()
     text = re.sub(r"\napplication\s+\w+;", f"\napplication     {solver};", text)
