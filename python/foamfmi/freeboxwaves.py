@@ -42,7 +42,7 @@ import os
 
 import numpy as np
 
-from foamfmi import dictionary, harmonics, plots, postprocessing, uncertainty, waves
+from foamfmi import harmonics, plots, postprocessing, uncertainty, waves
 
 PERIOD = 1.2  # s, both wave heights
 DEPTH = 0.4  # m, still water; the experiment's normalising length d
@@ -137,7 +137,7 @@ def read_case(case):
         run[key] = logged[key] if key == "coupling" else float(logged[key])
     _set_defaults(run, logged)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
-    app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
+    app = postprocessing.case_solver(case)
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
     run.update(timeSteps=log["timeSteps"], executionTime=log["executionTime"],
                commit=postprocessing.project_commit(), openfoam=os.environ.get("WM_PROJECT_VERSION", "unknown"))

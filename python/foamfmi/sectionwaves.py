@@ -77,7 +77,7 @@ def read_case(case):
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))
-    app = dictionary.read_word(os.path.join(case, "system", "controlDict"), "application")
+    app = postprocessing.case_solver(case)
     log = postprocessing.solver_log(os.path.join(case, "log." + app))
     run["timeSteps"] = log["timeSteps"]
     run["executionTime"] = log["executionTime"]
