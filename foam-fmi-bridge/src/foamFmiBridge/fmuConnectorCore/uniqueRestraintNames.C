@@ -108,6 +108,18 @@ void Foam::checkUniqueRestraintNames(const dictionary& restraintDict)
         }
         else if (t.isWord() || t.isString())
         {
+            // The header's format: a binary file's lists (a field file's
+            // initialPoints) are read as OpenFOAM reads them
+            if
+            (
+                t.isWord()
+             && lastWord == "format"
+             && open.size() == 1
+             && open.first() == "FoamFile"
+            )
+            {
+                is.format(t.wordToken());
+            }
             lastWord =
                 t.isWord() ? t.wordToken() : word(t.stringToken(), false);
             lastLine = t.lineNumber();
