@@ -17,10 +17,13 @@ processors. Checked for every run:
   interFoam does not restart exactly (docs/restarts.md: MULES keeps its
   previous correction in memory only, Crank-Nicolson restarts its old-time
   derivative); measured here on the uncoupled cubes, which have no
-  connector, their body state at T differs by about 7e-3 relative. The
-  connectors restore exactly (tests/bridge/test_restart_connectors.py, bit
-  for bit), so a coupled scene may differ by no more than that floor times
-  a margin for its different dynamics (10), and by at most 2 %.
+  connector, their body state at T differs by about 7e-3 relative
+  (v2312's interFoam: 5.4e-2). The connectors restore exactly
+  (tests/bridge/test_restart_connectors.py, bit for bit), so a coupled
+  scene may differ by no more than that floor times a margin for its
+  different dynamics (10), and by at most 2 %, or twice the floor where
+  OpenFOAM's own floor is above 1 % (v2312: the coupled cubes 5.0e-2, the
+  damped ones 5.5e-2, against the uncoupled cubes' 5.4e-2).
 
 The dynamic-line scene is the one that could not restart before: its FMU
 computed the line's start shape from an unset fairlead position.
@@ -167,7 +170,7 @@ def check_scenes(scenes, states, prefix):
                   f"body state at t = {END} differs by {difference:.2e} relative {problems}", flush=True)
             failures += 1 if problems else 0
             continue
-        bound = min(max(10 * floor, 1e-12), 0.02)
+        bound = min(max(10 * floor, 1e-12), max(0.02, 2 * floor))
         ok = not problems and difference <= bound
         failures += 0 if ok else 1
         print(f"{'PASS' if ok else 'FAIL'} {name}: restored {connectors}, body state at t = {END} "
