@@ -31,7 +31,7 @@ import os
 import shutil
 import sys
 
-from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model, spring_fmu
+from foamfmi.bridgecase import Case, fmu_path, fmu_restraint, rigid_body, rigid_body_model, spring_fmu, summary
 from foamfmi.sixdofcase import SixDoFCase, sixdof_body
 from test_sixdof_spring_world import CENTRE, M, J, fmu_spring
 from test_restart_incomplete import check_refused, latest_time, run
@@ -161,12 +161,9 @@ def main():
 
     results.append(sixdof_checks())
 
-    failures = 0
     for ok, detail in results:
-        failures += 0 if ok else 1
         print(f"{'PASS' if ok else 'FAIL'} {detail}", flush=True)
-    print(f"{len(results) - failures} passed, {failures} failed")
-    return 1 if failures else 0
+    return summary(len(results), sum(1 for ok, _ in results if not ok))
 
 
 if __name__ == "__main__":
