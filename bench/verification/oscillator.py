@@ -76,7 +76,10 @@ def run(connector, scheme, dt, end, m1=M1, m2=M2, k=K, c=None):
         return out, b["Time"], [x2 - x1 - L0 for x1, x2 in zip(b["body1.c.x"], b["body2.c.x"])]
     options = {"scheme": solver, "step-size": dt, "stop-time": end, "A.mass": m1, "B.mass": m2,
                "B.position": (L0 + s0, 0, 0), "B.velocity": (u0, 0, 0)}
-    out = run_fmusim(fmu, options, params)
+    # Both attachments at the bodies' centres, as in the rigid-body model
+    # (the FMUs' own B.p starts 1 m off, for a connector to the world)
+    at_centres = {f"{side}.p[{i}]": 0.0 for side in "AB" for i in (1, 2, 3)}
+    out = run_fmusim(fmu, options, {**at_centres, **params})
     if not out.ok:
         return out, [], []
     t = out.table

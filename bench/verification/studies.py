@@ -103,7 +103,8 @@ def catenary_study(figures=True, divisions=(25, 50, 100, 200, 400), ref_division
     qs = cat.quasi_static()
     cost_line = cat.cost_per_call("catenary", cat.MOORING,
                                   lambda s: (cat.XA + 5 * math.sin(2 * math.pi * s), 0, cat.ZA))
-    cost_spring = cat.cost_per_call("linearSpring", {"stiffness": 100.0, "restLength": 1.0},
+    cost_spring = cat.cost_per_call("linearSpring", {"stiffness": 100.0, "restLength": 1.0,
+                                                     "B.p[1]": 0.0, "B.p[2]": 0.0, "B.p[3]": 0.0},
                                     lambda s: (1 + 0.1 * math.sin(2 * math.pi * s), 0, 0))
     period = cat.surge_period()
     end = 2 * period
