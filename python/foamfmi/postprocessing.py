@@ -207,7 +207,9 @@ def case_solver(case):
     its controlDict's application, or on your own OpenFOAM without the
     rebuilt solvers the solver they are built from); its log is
     log.<solver>."""
-    functions = os.path.join(os.environ["FOAMFMI_DIR"], "tutorials", "bin", "tutorialFunctions")
+    top = os.environ.get("FOAMFMI_DIR") or os.path.dirname(
+        os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    functions = os.path.join(top, "tutorials", "bin", "tutorialFunctions")
     return subprocess.run(["sh", "-c", '. "$0" && caseSolver', functions], cwd=case,
                           check=True, stdout=subprocess.PIPE, text=True).stdout.strip()
 
