@@ -15,11 +15,18 @@ tension) hold no positions, so the attachment points are placed here:
 
 with A.p, B.p (body frames, from the body frame origin or sixDoF centre of
 rotation) from the restraint's `parameters`, and a body's origin c and
-rotation R at a time from postProcessing/rigidBodyMotion/<body>.dat (the
-bodies' motion that rigidBodyMotionFromLog takes from the solver log; the
-rotation vector's columns, degrees); before its first row (at t = 0 when
-there is none) from the body's initial placement (`transform`, or
-centreOfRotation/centreOfMass and orientation of a sixDoF patch).
+rotation R at a time from postProcessing/rigidBodyMotion/<body>.dat where
+the case has it (the bodies' motion at every step, that
+rigidBodyMotionFromLog takes from the solver log; the rotation vector's
+columns, degrees), else from the state OpenFOAM wrote at that time
+(foamfmi.bodystate: the joints' q of rigidBodyMotion, the centre of
+rotation and orientation of sixDoF); before the first row or written state
+(at t = 0) from the body's initial placement (`transform`,
+centreOfRotation/centreOfMass and orientation of a sixDoF patch, or the
+initial centre of rotation of a sixDoFRigidBodyMotion solver).
+
+The dictionaries are read as OpenFOAM reads them (foamDictionary -expand:
+#include, $macros, #eval and #calc done by OpenFOAM).
 """
 
 import math
@@ -27,8 +34,9 @@ import os
 import re
 import zipfile
 
-from foamfmi import foamdict
+from foamfmi import bodystate, foamdict
 from foamfmi.dictionary import DictionaryError
+from foamfmi.restraintmap import sixdof_frame
 
 KINDS = {"linearSpring": "spring", "linearDamper": "damper", "hinge": "hinge",
          "catenary": "line", "mooringLine": "line"}
@@ -83,13 +91,19 @@ def _restraints(tree):
     return found
 
 
-def _placements(tree, sixdof):
+def _placements(tree, sixdof, where=""):
     """{body: (origin, rotation rows)} of the bodies' initial placement."""
     found = {}
     for key, value in tree.items():
         if not isinstance(value, dict):
             continue
-        if sixdof and value.get("type") == ["sixDoFRigidBodyDisplacement"]:
+        if not sixdof and "patches" in value and "momentOfInertia" in value:
+            # A sixDoFRigidBodyMotion solver: its body is its first patch
+            patches = [t.strip('"') for t in value["patches"] if t not in "()"]
+            if patches:
+                centre, rows, _ = sixdof_frame(value, where)
+                found[patches[0]] = (list(centre), [list(r) for r in rows])
+        elif sixdof and value.get("type") == ["sixDoFRigidBodyDisplacement"]:
             centre = value.get("centreOfRotation", value.get("centreOfMass"))
             rotation = value.get("orientation")
             if centre:
@@ -105,21 +119,29 @@ def _placements(tree, sixdof):
     return found
 
 
-def read_connectors(case):
-    """The connectors of the case and the bodies' initial placements;
+def read_dictionaries(case):
+    """{name: tree} of the case's constant/dynamicMeshDict and its first
+    0.orig/ or 0/pointDisplacement, as OpenFOAM reads them (foamdict.expanded,
+    every digit); DictionaryError for one that cannot be read."""
+    names = ["constant/dynamicMeshDict"]
+    for folder in ("0.orig", "0"):
+        if os.path.isfile(os.path.join(case, folder, "pointDisplacement")):
+            names.append(folder + "/pointDisplacement")
+            break
+    return {name: foamdict.expanded(case, name, precision=17) for name in names
+            if os.path.isfile(os.path.join(case, name))}
+
+
+def read_connectors(case, trees=None):
+    """The connectors of the case and the bodies' initial placements
+    (trees: read_dictionaries' of the case, read here if None);
     DictionaryError for a dictionary that cannot be read."""
     connectors, placements = {}, {}
-    files = [(os.path.join(case, "constant/dynamicMeshDict"), False)]
-    for folder in ("0.orig", "0"):
-        path = os.path.join(case, folder, "pointDisplacement")
-        if os.path.isfile(path):
-            files.append((path, True))
-            break
-    for path, sixdof in files:
-        if not os.path.isfile(path):
-            continue
-        tree = foamdict.parse(path, case)
-        placements.update(_placements(tree, sixdof))
+    if trees is None:
+        trees = read_dictionaries(case)
+    for name, tree in trees.items():
+        sixdof = name.endswith("pointDisplacement")
+        placements.update(_placements(tree, sixdof, name))
         for name, entry in _restraints(tree):
             if name in connectors:
                 continue          # sixDoF: the same restraint in both bodies
@@ -165,11 +187,14 @@ def apply(pose, point):
 class BodyMotion:
     """Bodies' origins and rotations in time from
     postProcessing/rigidBodyMotion/<body>.dat (columns time, origin,
-    angle, rotation vector in degrees)."""
+    angle, rotation vector in degrees), else from the state written at
+    the time (bodystate.written_poses; dynamic_mesh_dict: the case's
+    constant/dynamicMeshDict as read_dictionaries reads it)."""
 
-    def __init__(self, case, placements):
+    def __init__(self, case, placements, dynamic_mesh_dict=None):
+        self.case, self.tree = case, dynamic_mesh_dict or {}
         self.folder = os.path.join(case, "postProcessing/rigidBodyMotion")
-        self.placements, self.rows = placements, {}
+        self.placements, self.rows, self.written = placements, {}, {}
 
     def _rows(self, body):
         if body not in self.rows:
@@ -191,6 +216,25 @@ class BodyMotion:
     def has_rows(self, body):
         return bool(self._rows(body))
 
+    def _written(self, time):
+        """{body: pose} of the state written at time ({} where none is)."""
+        for name in os.listdir(self.case):
+            try:
+                t = float(name)
+            except ValueError:
+                continue
+            if abs(t - time) <= 1e-9*max(1.0, abs(time)):
+                if name not in self.written:
+                    self.written[name] = bodystate.written_poses(self.case, name, self.tree)
+                return self.written[name]
+        return {}
+
+    def has_motion(self, body, times):
+        """Whether the body's place is known at every one of times: rows,
+        or a state written at each time after the start."""
+        return self.has_rows(body) or all(
+            t <= 1e-9 or body in self._written(t) for t in times)
+
     def pose(self, body, time):
         """(origin, rotation rows) of the body at time; None when unknown."""
         rows = self._rows(body)
@@ -202,7 +246,9 @@ class BodyMotion:
             if time >= rows[0][0]:
                 return None
         elif time > 1e-9:
-            return None       # no motion written: only the start is known
+            # No table of the motion: the state written at the time
+            pose = self._written(time).get(body)
+            return (list(pose[0]), [list(r) for r in pose[1]]) if pose else None
         return self.placements.get(body)
 
 

@@ -27,9 +27,7 @@ import difflib
 import os
 import re
 import shutil
-import subprocess
 import sys
-import tempfile
 
 from foamfmi import cli, foamdict
 from foamfmi.dictionary import DictionaryError
@@ -51,28 +49,12 @@ class ConvertError(RuntimeError):
 
 
 def expanded(case, name):
-    """The dictionary file case/name as OpenFOAM reads it (foamDictionary
-    -expand), parsed (foamfmi.foamdict)."""
-    if shutil.which("foamDictionary") is None:
-        raise ConvertError("foamDictionary not found: source OpenFOAM's environment "
-                           "(. etc/bashrc in the project)")
-    case = os.path.abspath(case)
-    # In the case's folder, with PWD saying so (else OpenFOAM warns on
-    # standard output, before the dictionary)
-    done = subprocess.run(["foamDictionary", "-case", case, "-expand", name], cwd=case,
-                          env={**os.environ, "PWD": case}, capture_output=True, text=True)
-    if done.returncode != 0:
-        message = (done.stderr + done.stdout).strip()
-        message = re.sub(r"\n\s*\n(\s*\n)+", "\n\n", message)
-        start = message.find("FOAM FATAL")
-        raise ConvertError("%s: OpenFOAM cannot read it (foamDictionary -expand):\n%s"
-                           % (name, message[start:] if start >= 0 else message))
-    # The dictionary starts at OpenFOAM's banner; a warning may come before it
-    start = done.stdout.find("/*---")
-    with tempfile.NamedTemporaryFile("w", suffix=".expanded") as f:
-        f.write(done.stdout[max(start, 0):])
-        f.flush()
-        return foamdict.parse(f.name, case)
+    """The dictionary file case/name as OpenFOAM reads it, parsed
+    (foamdict.expanded); ConvertError when it cannot be read."""
+    try:
+        return foamdict.expanded(case, name)
+    except DictionaryError as error:
+        raise ConvertError(str(error)) from error
 
 
 def restraints_of(tree, path=()):

@@ -14,11 +14,20 @@ the dictionary `name`, looked up in the enclosing dictionaries, merged in);
 '$name' in a value (its tokens spliced in); 'a.b' in a name reaches into a
 sub-dictionary, '$:a.b' starts at the file's top. Other directives
 (#calc, #codeStream, #includeEtc, ...) and their argument are skipped.
+
+    d = expanded(case, "constant/dynamicMeshDict")
+
+reads a case's dictionary as OpenFOAM does instead (foamDictionary -expand:
+every directive, #eval and #calc included, done by OpenFOAM itself), then
+parses what it prints.
 """
 
 import copy
 import os
 import re
+import shutil
+import subprocess
+import tempfile
 
 from foamfmi.dictionary import DictionaryError, strip_comments
 
@@ -32,6 +41,35 @@ class _Scope(dict):
     def __init__(self, parent=None):
         super().__init__()
         self.parent = parent
+
+
+def expanded(case, name, precision=None):
+    """The dictionary file case/name as OpenFOAM reads it (foamDictionary
+    -expand), parsed; DictionaryError when OpenFOAM cannot read it (its
+    message) or foamDictionary is not found. precision: the digits of the
+    numbers it prints (default OpenFOAM's, 6; 17 gives every double as
+    read)."""
+    if shutil.which("foamDictionary") is None:
+        raise DictionaryError("%s: foamDictionary not found: source OpenFOAM's environment "
+                              "(. etc/bashrc in the project)" % name)
+    case = os.path.abspath(case)
+    # In the case's folder, with PWD saying so (else OpenFOAM warns on
+    # standard output, before the dictionary)
+    digits = [] if precision is None else ["-precision", str(precision)]
+    done = subprocess.run(["foamDictionary", "-case", case, "-expand", name] + digits, cwd=case,
+                          env={**os.environ, "PWD": case}, capture_output=True, text=True)
+    if done.returncode != 0:
+        message = (done.stderr + done.stdout).strip()
+        message = re.sub(r"\n\s*\n(\s*\n)+", "\n\n", message)
+        start = message.find("FOAM FATAL")
+        raise DictionaryError("%s: OpenFOAM cannot read it (foamDictionary -expand):\n%s"
+                              % (name, message[start:] if start >= 0 else message))
+    # The dictionary starts at OpenFOAM's banner; a warning may come before it
+    start = done.stdout.find("/*---")
+    with tempfile.NamedTemporaryFile("w", suffix=".expanded") as f:
+        f.write(done.stdout[max(start, 0):])
+        f.flush()
+        return parse(f.name, case)
 
 
 def parse(path, case=None):

@@ -41,16 +41,25 @@ def read_boundary(case):
     return dictionary.boundary_patches(text)
 
 
-def moving_patch_names(case):
-    """Patch names (or quoted regular expressions) the mesh motion moves."""
+def moving_patch_names(trees):
+    """Patch names (or quoted regular expressions) the mesh motion moves:
+    every `patches` list of constant/dynamicMeshDict and the
+    sixDoFRigidBodyDisplacement patches of pointDisplacement (trees: the
+    case's dictionaries as OpenFOAM reads them,
+    connectorscene.read_dictionaries)."""
     names = []
-    text = read_dict_text(os.path.join(case, "constant/dynamicMeshDict"))
-    for m in re.finditer(r"\bpatches\s*\(([^)]*)\)", text):
-        names += m.group(1).split()
-    for folder in ("0.orig", "0"):
-        text = read_dict_text(os.path.join(case, folder, "pointDisplacement"))
-        names += re.findall(r"([A-Za-z_][\w.:-]*|\"[^\"]*\")\s*\{[^{}]*?"
-                            r"\btype\s+sixDoFRigidBodyDisplacement\s*;", text)
+
+    def walk(tree, in_field):
+        for key, value in tree.items():
+            if isinstance(value, dict):
+                if in_field and value.get("type") == ["sixDoFRigidBodyDisplacement"]:
+                    names.append(key)
+                walk(value, in_field)
+            elif key == "patches" and not in_field:
+                names.extend(t for t in value if t not in "()")
+
+    for name, tree in trees.items():
+        walk(tree, name.endswith("pointDisplacement"))
     return names
 
 

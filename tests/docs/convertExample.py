@@ -29,7 +29,11 @@ Checks, per case:
     at every write interval with 12 digits, agree to 1e-5 of the largest
     displacement of a point over the run (tolerance below);
   - the body moves and the converted spring pulls (so that the comparison
-    is not made on a body at rest or a slack spring).
+    is not made on a body at rest or a slack spring);
+  - tutorials/bin/renderScene draws every connector of the converted case
+    at its last time with no step before it (the bodies placed by the
+    state OpenFOAM wrote: no table of their motion exists), where ParaView
+    is installed.
 The mesh tools and the solver take the CFD lock (/tmp/foamfmi-cfd.lock)
 for each run (foamfmi.floatingobject).
 """
@@ -232,6 +236,27 @@ def convert_and_run(base, work, name, sixdof, restraints, fmus, solver, end_time
     tension = largest_tension(converted)
     # both springs start 0.05-0.1 m over their rest length: 5-20 N
     check(tension > 1.0, f"{name}: the converted spring pulls, largest tension {tension:.3g} N")
+    render(converted, work, name, len(fmus))
+
+
+def render(case, work, name, n_connectors):
+    """renderScene on the converted case as it is after its run: every
+    connector drawn, no body without its motion."""
+    if shutil.which("pvbatch") is None:
+        print(f"SKIP {name}: renderScene (no pvbatch: Debian packages paraview, "
+              "python3-paraview)")
+        return
+    png = os.path.join(work, name + ".png")
+    done = subprocess.run([os.path.join(TOP, "tutorials", "bin", "renderScene"), "-output", png,
+                           case], capture_output=True, text=True)
+    text = done.stdout + done.stderr
+    drawn = [line for line in text.splitlines() if line.startswith("renderScene: wrote")]
+    counts = [(int(a), int(b)) for a, b in re.findall(r"\b(\d+) of (\d+)", "".join(drawn[:1]))]
+    check(done.returncode == 0 and drawn and all(a == b for a, b in counts)
+          and sum(b for a, b in counts) == n_connectors and "no motion of" not in text
+          and not os.path.isdir(os.path.join(case, "postProcessing", "rigidBodyMotion")),
+          f"{name}: renderScene drew every connector from the written state: "
+          f"{drawn[0] if drawn else text[-800:]}")
 
 
 def main(scene):

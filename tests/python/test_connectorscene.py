@@ -108,6 +108,79 @@ class Connectors(unittest.TestCase):
             self.assertAlmostEqual(got, expected)
         self.assertIsNone(connectorscene.positions(found[0], motion, 2.0))
 
+    def written_case(self, tutorial):
+        """A copy of the tutorial's dictionaries, no run's output."""
+        folder = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, folder)
+        shutil.copytree(case(tutorial), os.path.join(folder, "c"),
+                        ignore=shutil.ignore_patterns("postProcessing", "processor*", "log.*",
+                                                      "plots", "VTK", "[1-9]*", "0.[0-9]*"))
+        return os.path.join(folder, "c")
+
+    def test_sixdof_written_state(self):
+        # No table of the motion: the sixDoF patches' state that OpenFOAM
+        # writes into <time>/pointDisplacement places the spring's ends.
+        # floatingObject1 turned by 90 deg about z (orientation body to
+        # global) and moved to (0 0 1): P = c + R A.p, A.p = (0.1 0 0.17)
+        c = self.written_case("coupledFloatingObjectsSixDoF")
+        os.makedirs(os.path.join(c, "1"))
+        patch = ("    %s\n    {\n        type sixDoFRigidBodyDisplacement;\n"
+                 "        centreOfMass %s;\n        mass 1;\n"
+                 "        momentOfInertia (1 1 1);\n        centreOfRotation %s;\n"
+                 "        orientation %s;\n        value uniform (0 0 0);\n    }\n")
+        with open(os.path.join(c, "1", "pointDisplacement"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class pointVectorField;"
+                    " object pointDisplacement; }\ndimensions [0 1 0 0 0 0 0];\n"
+                    "internalField uniform (0 0 0);\nboundaryField\n{\n"
+                    + patch % ("floatingObject1", "(0 0 1)", "(0 0 1)", "(0 -1 0 1 0 0 0 0 1)")
+                    + patch % ("floatingObject2", "(1 0 0)", "(1 0 0)", "(1 0 0 0 1 0 0 0 1)")
+                    + "}\n")
+        trees = connectorscene.read_dictionaries(c)
+        found, placements = connectorscene.read_connectors(c, trees)
+        motion = connectorscene.BodyMotion(c, placements, trees["constant/dynamicMeshDict"])
+        self.assertTrue(motion.has_motion("floatingObject1", [1.0]))
+        P, Q, _ = connectorscene.positions(found[0], motion, 1.0)
+        for got, expected in zip(P + Q, [0, 0.1, 1.17, 0.9, 0, 0.17]):
+            self.assertAlmostEqual(got, expected)
+        # A time with no state written: unknown
+        self.assertFalse(motion.has_motion("floatingObject1", [2.0]))
+        self.assertIsNone(connectorscene.positions(found[0], motion, 2.0))
+
+    def test_sixdof_solver_state(self):
+        # A sixDoFRigidBodyMotion solver (its body the first of its patches):
+        # placed at the start at its centre of rotation, later by
+        # <time>/uniform/sixDoFRigidBodyMotionState
+        c = self.written_case("coupledFloatingObjects")
+        with open(os.path.join(c, "constant", "dynamicMeshDict"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class dictionary;"
+                    " object dynamicMeshDict; }\n"
+                    "dynamicFvMesh dynamicMotionSolverFvMesh;\n"
+                    "motionSolverLibs (sixDoFRigidBodyMotion);\n"
+                    "motionSolver sixDoFRigidBodyMotion;\n"
+                    "sixDoFRigidBodyMotionCoeffs\n{\n    patches (box);\n"
+                    "    innerDistance 0.1;\n    outerDistance 0.3;\n    mass 2;\n"
+                    "    centreOfMass (0.5 0.5 0.5);\n    momentOfInertia (1 1 1);\n"
+                    "    restraints\n    {\n        spring\n        {\n"
+                    "            sixDoFRigidBodyMotionRestraint fmuConnector;\n"
+                    "            fmu \"<constant>/fmu/linearSpring.fmu\";\n"
+                    "            body box;\n"
+                    "            parameters { A.p (0.1 0 0); B.p (2 0 0); }\n"
+                    "        }\n    }\n}\n")
+        os.makedirs(os.path.join(c, "1", "uniform"))
+        with open(os.path.join(c, "1", "uniform", "sixDoFRigidBodyMotionState"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class dictionary;"
+                    " object sixDoFRigidBodyMotionState; }\n"
+                    "centreOfRotation (1 1 1);\norientation (0 -1 0 1 0 0 0 0 1);\n"
+                    "velocity (0 0 0);\n")
+        trees = connectorscene.read_dictionaries(c)
+        found, placements = connectorscene.read_connectors(c, trees)
+        motion = connectorscene.BodyMotion(c, placements, trees["constant/dynamicMeshDict"])
+        self.assertEqual([(x.name, x.body_a, x.body_b) for x in found], [("spring", "box", None)])
+        for time, expected in ((0.0, [0.6, 0.5, 0.5]), (1.0, [1, 1.1, 1])):
+            P, Q, _ = connectorscene.positions(found[0], motion, time)
+            for got, e in zip(P + Q, expected + [2, 0, 0]):
+                self.assertAlmostEqual(got, e)
+
 
 class Shapes(unittest.TestCase):
     def test_coil(self):

@@ -420,6 +420,18 @@ def make_vtk(case):
         print("ok: %s: %d VTK files" % (name, len(files)))
 
 
+def check_same(png, other, what, limit):
+    """Two pictures of the same scene from different sources: at most limit
+    pixels differ (by more than 30 in a channel)."""
+    a, b = read_png(png), read_png(other)
+    if a.shape != b.shape:
+        fail("%s: %s is %s, %s is %s" % (what, png, a.shape, other, b.shape))
+    n = int(differ(a, b).sum())
+    if n > limit:
+        fail("%s: %d pixels differ (at most %d)" % (what, n, limit))
+    print("ok: %s: %d pixels differ (at most %d)" % (what, n, limit))
+
+
 def main(args):
     if args[:1] == ["--"]:
         args = args[1:]
@@ -431,6 +443,8 @@ def main(args):
         add_connectors(args[1])
     elif args[0] == "connectors":
         check_connectors(args[1], args[2], args[3], float(args[4]))
+    elif args[0] == "same":
+        check_same(args[1], args[2], args[3], int(args[4]))
     elif args[0] == "2d":
         check_2d(args[1], args[2], args[3], float(args[4]))
     else:

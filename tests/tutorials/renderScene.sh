@@ -28,7 +28,9 @@
 #    without them only along the segment between its attachment points
 #    (placed independently from the bodies' logged motion, checked against
 #    the connector's length output; the hinge along its axis at the joint),
-#    with enough pixels, and in its colour;
+#    with enough pixels, and in its colour; without the table of the
+#    bodies' motion the connectors are placed by the state written at the
+#    time, in the same picture;
 #  - a time that was not written is an error naming -time.
 # Needs ParaView (pvbatch, pvpython; Debian packages paraview,
 # python3-paraview), xvfb-run without a display (xvfb), ffmpeg or ImageMagick
@@ -121,6 +123,21 @@ do
     renderTo "$conn" "$workDir/conn_$name.png" -time $endTime -size 960x540 -connectors $name
 done
 check connectors "$workDir/conn.png" "$workDir/connNone.png" "$conn" $endTime
+# Without the table of the bodies' motion (postProcessing/rigidBodyMotion,
+# which Allrun makes from the log) the connectors are placed by the state
+# OpenFOAM wrote at the time (the joints' q): the same picture. The table
+# holds the log's 6 digits, the state 17, so an edge pixel may turn: at most
+# 20 of the 518400 (measured: 0)
+mv "$conn/postProcessing/rigidBodyMotion" "$conn/postProcessing/rigidBodyMotion.off"
+renderTo "$conn" "$workDir/connState.png" -time $endTime -size 960x540
+mv "$conn/postProcessing/rigidBodyMotion.off" "$conn/postProcessing/rigidBodyMotion"
+grep -q "springs: 1 of 1; dampers: 1 of 1; hinges: 1 of 1)" "$workDir/connState.png.log" \
+    || fail "from the written state: not the spring, the damper and the hinge drawn:" \
+        "$(head -n 1 "$workDir/connState.png.log")"
+! grep -q "no motion of" "$workDir/connState.png.log" \
+    || fail "from the written state: $(grep "no motion of" "$workDir/connState.png.log")"
+check same "$workDir/conn.png" "$workDir/connState.png" \
+    "the connectors placed by the written state, not the motion's table" 20
 
 # 2D: the overset cube, side view, default picture and animation
 overset=$workDir/mooredFloatingBodyOverset

@@ -29,10 +29,14 @@ written time, as PNG, or at every written time as an animation.
             other connector as a grey rod; one to the fixed world (no
             bodyB) ends in a dark ball at its anchor. The points are A.p,
             B.p of the restraint's parameters (constant/dynamicMeshDict, or
-            the sixDoF patches of 0.orig/pointDisplacement) placed by the
-            bodies' motion, postProcessing/rigidBodyMotion/<body>.dat
-            (rigidBodyMotionFromLog, which the tutorials' Allrun runs);
-            their kinds and numbers are listed below the case name
+            the sixDoF patches of 0.orig/pointDisplacement, read as
+            OpenFOAM reads them: foamDictionary -expand) placed by the
+            bodies' motion: the state OpenFOAM wrote at the rendered time
+            (rigidBodyMotionState, sixDoFRigidBodyMotionState, the sixDoF
+            patches of pointDisplacement), or
+            postProcessing/rigidBodyMotion/<body>.dat where the case has
+            it (rigidBodyMotionFromLog); their kinds and numbers are listed
+            below the case name
 The case name and the time are printed in the top left corner. Cells that
 an overset mesh blanks (cellTypes 2, holes) are left out.
 
@@ -138,13 +142,17 @@ def main():
     if not os.path.isfile(os.path.join(case, "system/controlDict")):
         fail("%s: not an OpenFOAM case (no system/controlDict)" % opts["case"])
     patches = read_boundary(case)
+    try:
+        trees = connectorscene.read_dictionaries(case)
+    except DictionaryError as error:
+        sys.stderr.write("renderScene: warning: %s: bodies (use -bodies), springs, dampers"
+                         " and hinges not drawn\n" % error)
+        trees = None
     if opts["bodies"] is None:
-        bodies = select_patches(moving_patch_names(case), patches, None)
+        bodies = select_patches(moving_patch_names(trees or {}), patches, None)
     else:
         bodies = select_patches(opts["bodies"], patches, "-bodies")
     lines, line_names = connector_lines(case, opts["lines"])
-    connectors, totals, motion = read_connectors(case, lines.names(),
-                                                 opts["connectors"])
     two_d = any(p[1] == "empty" and p[2] > 0 for p in patches)
 
     scene = Scene(case, bodies, two_d, up_direction(case))
@@ -160,6 +168,8 @@ def main():
         if not render_times:
             fail("-time %g: not a written time of the case; written: %s"
                  % (opts["time"], " ".join("%g" % t for t in times)))
+    connectors, totals, motion = read_connectors(case, trees, lines.names(),
+                                                 opts["connectors"], render_times)
     output = opts["output"] or default_output(case, opts)
     os.makedirs(os.path.dirname(os.path.abspath(output)), exist_ok=True)
     scene.set_size(opts["size"])
@@ -195,17 +205,19 @@ def main():
     print(scene.camera_text())
 
 
-def read_connectors(case, line_names, wanted):
+def read_connectors(case, trees, line_names, wanted, times):
     """The connectors without a line shape (springs, dampers, hinges) to
     draw, the case's number of each kind and the bodies' motion that places
-    them. A dictionary that cannot be read is a warning: the picture is
-    drawn without them."""
-    try:
-        found, placements = connectorscene.read_connectors(case)
-    except DictionaryError as error:
-        sys.stderr.write("renderScene: warning: %s: springs, dampers and hinges"
-                         " not drawn\n" % error)
-        found, placements = [], {}
+    them at the times to render (trees: the case's dictionaries,
+    connectorscene.read_dictionaries; None when they could not be read:
+    the picture is drawn without them)."""
+    found, placements = [], {}
+    if trees is not None:
+        try:
+            found, placements = connectorscene.read_connectors(case, trees)
+        except DictionaryError as error:
+            sys.stderr.write("renderScene: warning: %s: springs, dampers and hinges"
+                             " not drawn\n" % error)
     found = [c for c in found if c.name not in line_names and c.kind != "line"]
     names = [c.name for c in found]
     totals = {}
@@ -217,13 +229,14 @@ def read_connectors(case, line_names, wanted):
                 fail("-connectors: no spring, damper or hinge '%s' in the case;"
                      " connectors: %s" % (name, " ".join(names) or "none"))
         found = [c for c in found if c.name in wanted]
-    motion = connectorscene.BodyMotion(case, placements)
+    motion = connectorscene.BodyMotion(case, placements,
+                                       (trees or {}).get("constant/dynamicMeshDict"))
     for c in found:
         for body in (c.body_a, c.body_b):
-            if body and not motion.has_rows(body):
+            if body and not motion.has_motion(body, times):
                 sys.stderr.write(
-                    "renderScene: warning: %s: no motion of %s (postProcessing/"
-                    "rigidBodyMotion/%s.dat, rigidBodyMotionFromLog writes it):"
+                    "renderScene: warning: %s: no motion of %s (neither its state in"
+                    " the written times nor postProcessing/rigidBodyMotion/%s.dat):"
                     " drawn at the start only\n" % (c.name, body, body))
     return found, totals, motion
 
