@@ -18,6 +18,9 @@ the benchmarks and the tests.
   sceneview       its camera and picture
   connectorscene  its springs, dampers and hinges: kinds, attachment
                   points placed by the bodies' motion, their shapes
+  bodystate       the bodies' place from the state written at a time
+                  (rigidBodyMotion's joints' q, sixDoF's centre and
+                  orientation)
   floatingobject  OpenFOAM's floatingObject tutorial as a light-body case
   plots           figures through gnuplot: terminal, window, a body's response
   cli             the scripts' command lines (argparse), error exits and
