@@ -8,6 +8,7 @@
 
 #include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
+#include "common/ReferenceOrientation.hpp"
 
 namespace connectors {
 
@@ -66,18 +67,7 @@ AxialAngularSpring::AxialAngularSpring(
                                    "the law)");
     }
     n_B_ = parameters.axis_B / norm;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const double q = parameters.R_BA0(i, j);
-            if (!std::isfinite(q)) {
-                throw ParameterError(Refusal::notFinite, lawName,
-                                     "referenceOrientation["
-                                         + std::to_string(i + 1) + ","
-                                         + std::to_string(j + 1) + "]",
-                                     q, "1", "finite");
-            }
-        }
-    }
+    requireReferenceOrientation(lawName, parameters.R_BA0);
     requireNonNegative(lawName, "stiffness", parameters.stiffness, "N.m/rad");
     requireNonNegative(lawName, "damping", parameters.damping, "N.m.s/rad");
 }
