@@ -35,8 +35,6 @@ LEFT_OUT = {
                           "function of time, it connects nothing",
     "externalForce": "a force given as a function of time, it connects nothing",
     "softWall": "a contact with a plane, not a connector law of the project",
-    "sphericalAngularSpring": "no connector FMU does the same: its moment is not "
-                              "conservative at finite angles (docs/convert.md)",
     "tabulatedAxialAngularSpring": "no connector FMU does the same yet (the angle of "
                                    "linearAxialAngularSpring, a moment from a table)",
     "linearSpringDamper": "its anchor is a function of time and its force is relaxed "
@@ -190,6 +188,18 @@ def convert(kind, restraint, framework, motion, where, frame=None):
                 "the centre of rotation, does not; a constraint on the rotation "
                 "can remove it (floatingObject's axis constraint does)")
         return conversion
+    if kind == "sphericalAngularSpring" and framework == "sixDoF":
+        # OpenFOAM's law step by step; its moment is no gradient at finite
+        # angles (connectors/sphericalAngularSpring/README.md)
+        orientation = (_vector(restraint, "referenceOrientation", where, size=9)
+                       if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
+        return Conversion("sphericalAngularSpring", {
+            "stiffness": number_text(_scalar(restraint, "stiffness", where)),
+            "damping": number_text(_scalar(restraint, "damping", where)),
+            "referenceOrientation": vector_text(orientation),
+            "A.p": "(0 0 0)",
+            "B.p": "(0 0 0)",
+        })
     if kind == "linearAxialAngularSpring":
         if framework == "rigidBody":
             return None  # see RIGID_LEFT_OUT

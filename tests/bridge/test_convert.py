@@ -15,7 +15,10 @@ restraints move the bodies as the built-in ones do, with no fluid.
    (two built-in restraints; fmuConnector restraints of one name in two
    motions would be one connector: the converter renames them), a
    sphericalAngularDamper and a linearAxialAngularSpring about a tilted
-   axis, the body starting 90 deg from its reference about z. The line runs through the global origin along z
+   axis, the body starting 90 deg from its reference about z; one body
+   pinned at its centre of mass and spun, tumbling on a
+   sphericalAngularSpring alone, 120 deg from its reference at the start
+   (where its moment is no gradient). The line runs through the global origin along z
    and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
    applies its force at the global origin (a moment centreOfRotation x
    force about the centre of rotation), which this geometry makes zero, so
@@ -166,15 +169,26 @@ def sixdof():
              "                axis (0 0.6 0.8);\n"
              "                referenceOrientation (1 0 0 0 1 0 0 0 1);\n"
              "                stiffness 0.4; damping 0.02;\n            }\n")
+    # 90 deg about y: 120 deg from the body's start (TURNED), about no axis
+    # of the reference (90 deg about x would be an equilibrium of the law)
+    spherical = ("            tumble\n            {\n"
+                 "                sixDoFRigidBodyMotionRestraint sphericalAngularSpring;\n"
+                 "                referenceOrientation (0 0 1 0 1 0 -1 0 0);\n"
+                 "                stiffness 0.3; damping 0.005;\n            }\n")
     line = ("        constraints\n        {\n            along\n            {\n"
             "                sixDoFRigidBodyMotionConstraint line;\n"
             "                centreOfRotation (0 0 0.4);\n"
             "                direction (0 0 1);\n            }\n        }\n")
+    pinned = ("        constraints\n        {\n            pin\n            {\n"
+              "                sixDoFRigidBodyMotionConstraint point;\n"
+              "                centreOfRotation (-1 0.5 0.6);\n            }\n        }\n"
+              "        angularMomentum (0.01 -0.02 0.015);\n")
     bodies = {
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
         "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning
                             + axial),
+        "tumbling": sixdof_body((-1.0, 0.5, 0.6), spherical, pinned),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
     converted = copy_case(builtin, "converted")
@@ -191,7 +205,7 @@ def sixdof():
                       "linearDamper applies its force at the global origin" in out,
                       "a note on the converted linearDamper")
     return failures + compare_runs("sixDoFRigidBodyMotion", builtin, converted,
-                                   ["constrained", "free"])
+                                   ["constrained", "free", "tumbling"])
 
 
 def include_refused():
