@@ -7,8 +7,10 @@ linearDamper by translationalDamper.fmu, sphericalAngularDamper by
 rotationalDamper.fmu, in rigidBodyMotion and in sixDoFRigidBodyMotion (the
 motion solver's coefficients and the sixDoFRigidBodyDisplacement patches of
 a pointDisplacement file), and sixDoF's linearAxialAngularSpring by
-axialAngularSpring.fmu. It copies the FMUs into CASE/constant/fmu/ and
-adds libfoamFmiBridge.so to the libs of system/controlDict.
+axialAngularSpring.fmu and tabulatedAxialAngularSpring (its table read from
+its file) by tabulatedAxialAngularSpring.fmu. It copies the FMUs into
+CASE/constant/fmu/ and adds libfoamFmiBridge.so to the libs of
+system/controlDict.
 
 The dictionaries are read by OpenFOAM's own reader (foamDictionary -expand:
 #include, #eval, $macros as the solver reads them); each replaced restraint
@@ -166,7 +168,7 @@ def convert_file(case, name, tree, shared, report):
                 if path not in frames:
                     frames[path] = motion_frame(motion, "%s, %s" % (name, ".".join(path[:-1])))
                 frame = frames[path]
-            conversion = convert(kind, restraint, framework, motion, where, frame)
+            conversion = convert(kind, restraint, framework, motion, where, frame, case)
             if conversion is None:
                 reason = (RIGID_LEFT_OUT.get(kind) if framework == "rigidBody" else None) \
                     or LEFT_OUT.get(kind, "not a restraint the converter knows")

@@ -14,8 +14,10 @@ restraints move the bodies as the built-in ones do, with no fluid.
    one body with no constraint, turned, on a linearSpring of the same name
    (two built-in restraints; fmuConnector restraints of one name in two
    motions would be one connector: the converter renames them), a
-   sphericalAngularDamper and a linearAxialAngularSpring about a tilted
-   axis, the body starting 90 deg from its reference about z. The line runs through the global origin along z
+   sphericalAngularDamper, a linearAxialAngularSpring about a tilted
+   axis, the body starting 90 deg from its reference about z, and a
+   tabulatedAxialAngularSpring about another axis, a softening table in
+   degrees from a file, clamped beyond it. The line runs through the global origin along z
    and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
    applies its force at the global origin (a moment centreOfRotation x
    force about the centre of rotation), which this geometry makes zero, so
@@ -166,6 +168,14 @@ def sixdof():
              "                axis (0 0.6 0.8);\n"
              "                referenceOrientation (1 0 0 0 1 0 0 0 1);\n"
              "                stiffness 0.4; damping 0.02;\n            }\n")
+    # a softening spring in degrees, its table in constant/twistTable
+    tabulated = ("            tabled\n            {\n"
+                 "                sixDoFRigidBodyMotionRestraint tabulatedAxialAngularSpring;\n"
+                 "                axis (0.8 0 0.6);\n"
+                 "                file \"$FOAM_CASE/constant/twistTable\";\n"
+                 "                outOfBounds clamp;\n"
+                 "                angleFormat degrees;\n"
+                 "                damping 0.01;\n            }\n")
     line = ("        constraints\n        {\n            along\n            {\n"
             "                sixDoFRigidBodyMotionConstraint line;\n"
             "                centreOfRotation (0 0 0.4);\n"
@@ -174,9 +184,11 @@ def sixdof():
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
         "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning
-                            + axial),
+                            + axial + tabulated),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
+    with open(os.path.join(builtin.dir, "constant", "twistTable"), "w") as f:
+        f.write("(\n    (-150 0.9)\n    (-60 0.5)\n    (0 0)\n    (45 -0.4)\n    (150 -0.8)\n)\n")
     converted = copy_case(builtin, "converted")
     out = convert(converted.dir, "-dict", "constant/sixDoFBodies")
     print(out, end="")
@@ -190,6 +202,10 @@ def sixdof():
     failures += check("sixDoF: the damper's moment is named", "note: OpenFOAM's sixDoF "
                       "linearDamper applies its force at the global origin" in out,
                       "a note on the converted linearDamper")
+    failures += check("sixDoF: the tabulated spring's table is read from its file",
+                      "tabled (tabulatedAxialAngularSpring): fmuConnector "
+                      "tabulatedAxialAngularSpring.fmu" in out,
+                      "tabled converted to tabulatedAxialAngularSpring.fmu")
     return failures + compare_runs("sixDoFRigidBodyMotion", builtin, converted,
                                    ["constrained", "free"])
 
@@ -254,7 +270,7 @@ boundaryField
 
 def main():
     failures = rigid() + sixdof() + include_refused() + point_patch()
-    return summary(14, failures)
+    return summary(15, failures)
 
 
 if __name__ == "__main__":
