@@ -62,11 +62,7 @@ private:
     //- referenceOrientation[i,j], row by row
     void setOtherParameters(const double* values, Parameters& p) const override
     {
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) {
-                p.R_BA0(i, j) = values[reference_.first + 3 * i + j];
-            }
-        }
+        p.R_BA0 = matrix3(values, reference_);
     }
 
     Block reference_;

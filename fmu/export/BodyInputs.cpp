@@ -28,16 +28,23 @@ connectors::Vector3 blockVector3(const double* values, Block block)
             values[block.first + 2]};
 }
 
+connectors::Matrix3 blockMatrix3(const double* values, Block block)
+{
+    connectors::Matrix3 m;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            m(i, j) = values[block.first + 3 * i + j];
+        }
+    }
+    return m;
+}
+
 connectors::BodyKinematics bodyKinematics(const double* values,
                                           const BodyInputs& body)
 {
     connectors::BodyKinematics k;
     k.p_WKo_W = blockVector3(values, body.r);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            k.R_WK(i, j) = values[body.R.first + 3 * i + j];
-        }
-    }
+    k.R_WK = blockMatrix3(values, body.R);
     k.v_WKo_W = blockVector3(values, body.v);
     k.w_WK_W = blockVector3(values, body.omega);
     return k;

@@ -119,11 +119,7 @@ private:
     //  and outOfBounds
     void setOtherParameters(const double* values, Parameters& p) const override
     {
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) {
-                p.R_BA0(i, j) = values[reference_.first + 3 * i + j];
-            }
-        }
+        p.R_BA0 = matrix3(values, reference_);
         const fmi2ValueReference points = table_.first;
         const int n
             = integer(values, points, 2, maxPoints,

@@ -28,6 +28,19 @@ inline void addVector(std::map<std::string, double>& m, const std::string& name,
     }
 }
 
+//- name[1,1] ... name[3,3], row by row
+inline void addMatrix(std::map<std::string, double>& m, const std::string& name,
+                      const Matrix3& R)
+{
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            m[name + "[" + std::to_string(i + 1) + "," + std::to_string(j + 1)
+              + "]"]
+                = R(i, j);
+        }
+    }
+}
+
 //- FMU input values (A.r ... B.omega) for the given kinematics
 inline std::map<std::string, double> inputs(const BodyKinematics& A,
                                             const BodyKinematics& B)
@@ -39,13 +52,7 @@ inline std::map<std::string, double> inputs(const BodyKinematics& A,
         addVector(m, prefix + ".r", k.p_WKo_W);
         addVector(m, prefix + ".v", k.v_WKo_W);
         addVector(m, prefix + ".omega", k.w_WK_W);
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) {
-                m[prefix + ".R[" + std::to_string(i + 1) + ","
-                  + std::to_string(j + 1) + "]"]
-                    = k.R_WK(i, j);
-            }
-        }
+        addMatrix(m, prefix + ".R", k.R_WK);
     }
     return m;
 }

@@ -22,13 +22,7 @@ TEST(AxialAngularSpringFmu, OutputsEqualTheLaw)
     p.stiffness = 250.0; // genericParameters'
     p.damping = 15.0;
     addVector(parameters, "B.axis", p.axis_B);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            parameters["referenceOrientation[" + std::to_string(i + 1) + ","
-                       + std::to_string(j + 1) + "]"]
-                = p.R_BA0(i, j);
-        }
-    }
+    addMatrix(parameters, "referenceOrientation", p.R_BA0);
     ASSERT_EQ(in.initialize(parameters), fmi2OK) << in.lastMessage();
     const connectors::AxialAngularSpring law(p);
     ASSERT_NO_FATAL_FAILURE(stepBothWays(

@@ -23,13 +23,7 @@ std::map<std::string, double> fmuParameters(const LoadedFmu& fmu,
 {
     std::map<std::string, double> parameters = genericParameters(fmu);
     addVector(parameters, "B.axis", p.axis_B);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            parameters["referenceOrientation[" + std::to_string(i + 1) + ","
-                       + std::to_string(j + 1) + "]"]
-                = p.R_BA0(i, j);
-        }
-    }
+    addMatrix(parameters, "referenceOrientation", p.R_BA0);
     parameters["table.points"] = double(p.angle.size());
     for (std::size_t k = 0; k < p.angle.size(); ++k) {
         const std::string index = "[" + std::to_string(k + 1) + "]";
