@@ -169,7 +169,7 @@ def rows():
             add((f"time step {dt:g} s (k dt^2/mu = {osc.K * dt**2 / osc.MU:.2g})", "linearSpring",
                  scheme[0], *spring_against_exact(scheme, dt, periods, bound=bound)))
     for fmu in ("linearSpring", "linearDamper", "translationalDamper", "rotationalDamper", "axialAngularSpring",
-                "tabulatedAxialAngularSpring", "hinge", "catenary"):
+                "tabulatedAxialAngularSpring", "sphericalAngularSpring", "hinge", "catenary"):
         add(("NaN or infinite kinematic input (fmusim check)", fmu, "FMU C API", *nan_check(fmu)))
     add(("NaN stiffness in the case", "linearSpring", "rigidBodySim", *nan_parameter()))
     susp = {"weight": cat.W, "seabedContact": 1, "seabedFriction": 0}

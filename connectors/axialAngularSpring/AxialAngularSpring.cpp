@@ -3,6 +3,7 @@
 #include "common/AxialAngle.hpp"
 #include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
+#include "common/ReferenceOrientation.hpp"
 
 namespace connectors {
 
@@ -21,7 +22,7 @@ AxialAngularSpring::AxialAngularSpring(
 {
     requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
     n_B_ = unitAxis(lawName, parameters.axis_B);
-    requireFiniteOrientation(lawName, parameters.R_BA0);
+    requireReferenceOrientation(lawName, parameters.R_BA0);
     requireNonNegative(lawName, "stiffness", parameters.stiffness, "N.m/rad");
     requireNonNegative(lawName, "damping", parameters.damping, "N.m.s/rad");
 }

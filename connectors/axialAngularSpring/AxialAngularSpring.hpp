@@ -26,8 +26,8 @@
 // beyond -1 by round-off); here u . w is also held above -1.
 //
 // k [N.m/rad], c [N.m.s/rad] finite and >= 0; the axis finite and not zero
-// (it is normalised); the reference orientation finite (ParameterError
-// otherwise). Non-finite inputs throw InputError. No output is NaN.
+// (it is normalised); the reference orientation finite and, as OpenFOAM
+// reads it, of norm sqrt(3) within 3.2e-8 (ParameterError otherwise). Non-finite inputs throw InputError. No output is NaN.
 #ifndef CONNECTORS_AXIALANGULARSPRING_AXIALANGULARSPRING_HPP
 #define CONNECTORS_AXIALANGULARSPRING_AXIALANGULARSPRING_HPP
 

@@ -86,20 +86,4 @@ Vector3 unitAxis(const char* law, const Vector3& axis_B)
     return axis_B / norm;
 }
 
-void requireFiniteOrientation(const char* law, const Matrix3& R_BA0)
-{
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const double q = R_BA0(i, j);
-            if (!std::isfinite(q)) {
-                throw ParameterError(Refusal::notFinite, law,
-                                     "referenceOrientation["
-                                         + std::to_string(i + 1) + ","
-                                         + std::to_string(j + 1) + "]",
-                                     q, "1", "finite");
-            }
-        }
-    }
-}
-
 } // namespace connectors

@@ -38,10 +38,6 @@ AxialAngle axialAngle(const Vector3& n_B, const Matrix3& R_BA0,
 //  noDirection) naming it unless it is finite and of length >= 1e-12
 Vector3 unitAxis(const char* law, const Vector3& axis_B);
 
-//- Throws ParameterError (notFinite) naming referenceOrientation[i,j]
-//  unless every component of R_BA0 is finite
-void requireFiniteOrientation(const char* law, const Matrix3& R_BA0);
-
 } // namespace connectors
 
 #endif

@@ -5,6 +5,7 @@
 #include "common/AxialAngle.hpp"
 #include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
+#include "common/ReferenceOrientation.hpp"
 
 namespace connectors {
 
@@ -34,7 +35,7 @@ TabulatedAxialAngularSpring::TabulatedAxialAngularSpring(
       table_(momentTable(parameters)), integralToZero_(table_.integral(0.0))
 {
     requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
-    requireFiniteOrientation(lawName, parameters.R_BA0);
+    requireReferenceOrientation(lawName, parameters.R_BA0);
     requireNonNegative(lawName, "damping", parameters.damping, "N.m.s/rad");
 }
 

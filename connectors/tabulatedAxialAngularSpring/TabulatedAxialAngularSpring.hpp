@@ -31,7 +31,8 @@
 // UndefinedStateError; warn gives clamp's values (a law has no warning
 // channel). c [N.m.s/rad] finite and >= 0; the table as MomentTable; the
 // axis finite and not zero (it is normalised); the reference orientation
-// finite (ParameterError otherwise). Non-finite inputs throw InputError.
+// finite and, as OpenFOAM reads it, of norm sqrt(3) within 3.2e-8
+// (ParameterError otherwise). Non-finite inputs throw InputError.
 // No output is NaN.
 #ifndef CONNECTORS_TABULATEDAXIALANGULARSPRING_TABULATEDAXIALANGULARSPRING_HPP
 #define CONNECTORS_TABULATEDAXIALANGULARSPRING_TABULATEDAXIALANGULARSPRING_HPP

@@ -25,7 +25,8 @@ potentialEnergy = stiffness theta^2 / 2,  dissipatedPower = damping (w_rel . a)^
 </pre>
 <p>To the fixed world it is OpenFOAM's restraint with axis = B.axis and
 referenceOrientation. stiffness and damping must be finite and &ge; 0,
-B.axis finite and not zero (checked in fmi2ExitInitializationMode).</p>)";
+B.axis finite and not zero, referenceOrientation a rotation tensor as
+OpenFOAM checks it (checked in fmi2ExitInitializationMode).</p>)";
 
 class AxialAngularSpringModel final
     : public fmuExport::LawFmuModel<connectors::AxialAngularSpring,
@@ -41,8 +42,8 @@ public:
         const Block axis
             = parameter(&Parameters::axis_B, "B.axis", "1",
                         "the axis n, B's frame (normalised)", {0, 0, 1});
-        reference_ = table().parameter(
-            "referenceOrientation", fmuExport::Shape::matrix3, "1",
+        const Block reference = parameter(
+            &Parameters::R_BA0, "referenceOrientation", "1",
             "reference orientation of A relative to B, A's frame to B's",
             {1, 0, 0, 0, 1, 0, 0, 0, 1});
         const Block stiffness = parameter(&Parameters::stiffness, "stiffness",
@@ -50,22 +51,13 @@ public:
         const Block damping = parameter(&Parameters::damping, "damping",
                                         "N.m.s/rad", "damping c, >= 0", 0.0);
         OutputDependencies d
-            = pointToPointDependencies({axis, reference_, stiffness, damping});
+            = pointToPointDependencies({axis, reference, stiffness, damping});
         d.tension = {};
         d.potentialEnergy
-            = join(positionBlocks(), {axis, reference_, stiffness});
+            = join(positionBlocks(), {axis, reference, stiffness});
         declareOutputs(d);
         declareStartAtRest();
     }
-
-private:
-    //- referenceOrientation[i,j], row by row
-    void setOtherParameters(const double* values, Parameters& p) const override
-    {
-        p.R_BA0 = matrix3(values, reference_);
-    }
-
-    Block reference_;
 };
 
 } // namespace

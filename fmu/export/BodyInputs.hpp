@@ -26,7 +26,7 @@ BodyInputs declareBodyInputs(VariableTable& table, const std::string& body,
 //- The three values of a vector block
 connectors::Vector3 blockVector3(const double* values, Block block);
 
-//- The nine values of a matrix block, row by row
+//- The nine values of a 3x3 block, row by row
 connectors::Matrix3 blockMatrix3(const double* values, Block block);
 
 //- The body's kinematics from the value array

@@ -168,12 +168,6 @@ connectors::Vector3 ConnectorFmuModel::vector3(const double* values,
     return blockVector3(values, block);
 }
 
-connectors::Matrix3 ConnectorFmuModel::matrix3(const double* values,
-                                               Block block)
-{
-    return blockMatrix3(values, block);
-}
-
 void ConnectorFmuModel::computeOutputs(double* values) const
 {
     writeOutputs(

@@ -165,8 +165,6 @@ protected:
 
     static double scalar(const double* values, Block block);
     static connectors::Vector3 vector3(const double* values, Block block);
-    //- A matrix block, row by row
-    static connectors::Matrix3 matrix3(const double* values, Block block);
     static std::vector<Block> join(std::vector<Block> a,
                                    const std::vector<Block>& b);
 

@@ -28,6 +28,9 @@ public:
         for (const auto& [field, block] : scalars_) {
             p.*field = scalar(values, block);
         }
+        for (const auto& [field, block] : matrices_) {
+            p.*field = blockMatrix3(values, block);
+        }
         setOtherParameters(values, p);
         law_.build(p);
     }
@@ -59,8 +62,22 @@ protected:
         return block;
     }
 
-    //- Sets the fields of p that are no scalar or vector parameter (a
-    //  matrix), from the value array, before the law is built; none here
+    //- Declares a 3x3 parameter (name[i,j], start row by row) whose value
+    //  becomes `field`
+    Block parameter(connectors::Matrix3 Parameters::*field,
+                    const std::string& name, const std::string& unit,
+                    const std::string& description,
+                    const std::vector<double>& start)
+    {
+        const Block block
+            = table().parameter(name, Shape::matrix3, unit, description, start);
+        matrices_.emplace_back(field, block);
+        return block;
+    }
+
+    //- Sets the fields of p that are no scalar, vector or 3x3 parameter (a
+    //  table), from the value array, after those and before the law is
+    //  built; none here
     virtual void setOtherParameters(const double*, Parameters&) const { }
 
     ConnectorOutputs
@@ -74,6 +91,7 @@ protected:
     const Law& law() const { return law_.get(); }
 
 private:
+    std::vector<std::pair<connectors::Matrix3 Parameters::*, Block>> matrices_;
     std::vector<std::pair<connectors::Vector3 Parameters::*, Block>> vectors_;
     std::vector<std::pair<double Parameters::*, Block>> scalars_;
     BuiltLaw<Law> law_;

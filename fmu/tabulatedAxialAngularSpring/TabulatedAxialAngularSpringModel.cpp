@@ -48,7 +48,8 @@ step), 1 warn (here as clamp, without warning), 2 clamp (the end moments),
 3 repeat (the table repeated above its last angle, its first moment below
 its first angle, as OpenFOAM does). The angles strictly increasing, from 2
 to 64 points, the unused ones 0; damping finite and &ge; 0; B.axis finite
-and not zero (checked in fmi2ExitInitializationMode).</p>)";
+and not zero, referenceOrientation a rotation tensor as OpenFOAM checks it
+(checked in fmi2ExitInitializationMode).</p>)";
 
 std::string indexed(const char* name, int k)
 {
@@ -71,8 +72,8 @@ public:
         const Block axis
             = parameter(&Parameters::axis_B, "B.axis", "1",
                         "the axis n, B's frame (normalised)", {0, 0, 1});
-        reference_ = t.parameter(
-            "referenceOrientation", Shape::matrix3, "1",
+        const Block reference = parameter(
+            &Parameters::R_BA0, "referenceOrientation", "1",
             "reference orientation of A relative to B, A's frame to B's",
             {1, 0, 0, 0, 1, 0, 0, 0, 1});
         table_.first = fmi2ValueReference(t.size());
@@ -107,19 +108,17 @@ public:
         const Block damping = parameter(&Parameters::damping, "damping",
                                         "N.m.s/rad", "damping c, >= 0", 0.0);
         OutputDependencies d
-            = pointToPointDependencies({axis, reference_, table_, damping});
+            = pointToPointDependencies({axis, reference, table_, damping});
         d.tension = {};
-        d.potentialEnergy = join(positionBlocks(), {axis, reference_, table_});
+        d.potentialEnergy = join(positionBlocks(), {axis, reference, table_});
         declareOutputs(d);
         declareStartAtRest();
     }
 
 private:
-    //- referenceOrientation[i,j], row by row; the table, its angle format
-    //  and outOfBounds
+    //- The table, its angle format and outOfBounds
     void setOtherParameters(const double* values, Parameters& p) const override
     {
-        p.R_BA0 = matrix3(values, reference_);
         const fmi2ValueReference points = table_.first;
         const int n
             = integer(values, points, 2, maxPoints,
@@ -170,7 +169,7 @@ private:
                              allowed);
     }
 
-    Block reference_, table_, degrees_, outOfBounds_;
+    Block table_, degrees_, outOfBounds_;
 };
 
 } // namespace

@@ -7,10 +7,10 @@ linearDamper by translationalDamper.fmu, sphericalAngularDamper by
 rotationalDamper.fmu, in rigidBodyMotion and in sixDoFRigidBodyMotion (the
 motion solver's coefficients and the sixDoFRigidBodyDisplacement patches of
 a pointDisplacement file), and sixDoF's linearAxialAngularSpring by
-axialAngularSpring.fmu and tabulatedAxialAngularSpring (its table read from
-its file) by tabulatedAxialAngularSpring.fmu. It copies the FMUs into
-CASE/constant/fmu/ and adds libfoamFmiBridge.so to the libs of
-system/controlDict.
+axialAngularSpring.fmu, tabulatedAxialAngularSpring (its table read from its
+file) by tabulatedAxialAngularSpring.fmu and sphericalAngularSpring by
+sphericalAngularSpring.fmu. It copies the FMUs into CASE/constant/fmu/ and
+adds libfoamFmiBridge.so to the libs of system/controlDict.
 
 The dictionaries are read by OpenFOAM's own reader (foamDictionary -expand:
 #include, #eval, $macros as the solver reads them); each replaced restraint

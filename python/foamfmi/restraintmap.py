@@ -37,8 +37,6 @@ LEFT_OUT = {
                           "function of time, it connects nothing",
     "externalForce": "a force given as a function of time, it connects nothing",
     "softWall": "a contact with a plane, not a connector law of the project",
-    "sphericalAngularSpring": "no connector FMU does the same: its moment is not "
-                              "conservative at finite angles (docs/convert.md)",
     "linearSpringDamper": "its anchor is a function of time and its force is relaxed "
                           "against its previous evaluation: not a connector law",
 }
@@ -152,6 +150,14 @@ def sixdof_attachment(point, motion, where, frame=None):
     return [sum(q[i][j] * d[i] for i in range(3)) for j in range(3)]
 
 
+def _reference_orientation(restraint, where):
+    """The referenceOrientation of an angular spring as the FMU parameter's
+    text (OpenFOAM's default, the identity, where it has none)."""
+    orientation = (_vector(restraint, "referenceOrientation", where, size=9)
+                   if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
+    return vector_text(orientation)
+
+
 # tabulatedAxialAngularSpring.fmu's most table points (table.angle[1..64])
 TABLE_POINTS = 64
 
@@ -210,8 +216,6 @@ def _tabulated(restraint, where, case):
     if bounds not in OUT_OF_BOUNDS:
         raise DictionaryError("%s: outOfBounds %s, expected one of %s"
                               % (where, bounds, ", ".join(OUT_OF_BOUNDS)))
-    orientation = (_vector(restraint, "referenceOrientation", where, size=9)
-                   if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
     padding = [0.0] * (TABLE_POINTS - len(points))
     degrees = angle_format.startswith("degree")
     notes = []
@@ -222,7 +226,7 @@ def _tabulated(restraint, where, case):
     return {
         "damping": number_text(_scalar(restraint, "damping", where)),
         "B.axis": vector_text(_vector(restraint, "axis", where)),
-        "referenceOrientation": vector_text(orientation),
+        "referenceOrientation": _reference_orientation(restraint, where),
         "table.points": str(len(points)),
         "table.angle": vector_text([x for x, _ in points] + padding),
         "table.moment": vector_text([y for _, y in points] + padding),
@@ -272,16 +276,24 @@ def convert(kind, restraint, framework, motion, where, frame=None, case="."):
                 "the centre of rotation, does not; a constraint on the rotation "
                 "can remove it (floatingObject's axis constraint does)")
         return conversion
+    if kind == "sphericalAngularSpring" and framework == "sixDoF":
+        # OpenFOAM's law step by step; its moment is no gradient at finite
+        # angles (connectors/sphericalAngularSpring/README.md)
+        return Conversion("sphericalAngularSpring", {
+            "stiffness": number_text(_scalar(restraint, "stiffness", where)),
+            "damping": number_text(_scalar(restraint, "damping", where)),
+            "referenceOrientation": _reference_orientation(restraint, where),
+            "A.p": "(0 0 0)",
+            "B.p": "(0 0 0)",
+        })
     if kind == "linearAxialAngularSpring":
         if framework == "rigidBody":
             return None  # see RIGID_LEFT_OUT
-        orientation = (_vector(restraint, "referenceOrientation", where, size=9)
-                       if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
         return Conversion("axialAngularSpring", {
             "stiffness": number_text(_scalar(restraint, "stiffness", where)),
             "damping": number_text(_scalar(restraint, "damping", where)),
             "B.axis": vector_text(_vector(restraint, "axis", where)),
-            "referenceOrientation": vector_text(orientation),
+            "referenceOrientation": _reference_orientation(restraint, where),
             "A.p": "(0 0 0)",
             "B.p": "(0 0 0)",
         })

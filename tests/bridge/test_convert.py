@@ -17,7 +17,9 @@ restraints move the bodies as the built-in ones do, with no fluid.
    sphericalAngularDamper, a linearAxialAngularSpring about a tilted
    axis, the body starting 90 deg from its reference about z, and a
    tabulatedAxialAngularSpring about another axis, a softening table in
-   degrees from a file, clamped beyond it. The line runs through the global origin along z
+   degrees from a file, clamped beyond it; one body pinned at its centre
+   of mass and spun, tumbling on a sphericalAngularSpring alone, 120 deg
+   from its reference at the start (where its moment is no gradient). The line runs through the global origin along z
    and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
    applies its force at the global origin (a moment centreOfRotation x
    force about the centre of rotation), which this geometry makes zero, so
@@ -176,15 +178,26 @@ def sixdof():
                  "                outOfBounds clamp;\n"
                  "                angleFormat degrees;\n"
                  "                damping 0.01;\n            }\n")
+    # 90 deg about y: 120 deg from the body's start (TURNED), about no axis
+    # of the reference (90 deg about x would be an equilibrium of the law)
+    spherical = ("            tumble\n            {\n"
+                 "                sixDoFRigidBodyMotionRestraint sphericalAngularSpring;\n"
+                 "                referenceOrientation (0 0 1 0 1 0 -1 0 0);\n"
+                 "                stiffness 0.3; damping 0.005;\n            }\n")
     line = ("        constraints\n        {\n            along\n            {\n"
             "                sixDoFRigidBodyMotionConstraint line;\n"
             "                centreOfRotation (0 0 0.4);\n"
             "                direction (0 0 1);\n            }\n        }\n")
+    pinned = ("        constraints\n        {\n            pin\n            {\n"
+              "                sixDoFRigidBodyMotionConstraint point;\n"
+              "                centreOfRotation (-1 0.5 0.6);\n            }\n        }\n"
+              "        angularMomentum (0.01 -0.02 0.015);\n")
     bodies = {
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
         "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning
                             + axial + tabulated),
+        "tumbling": sixdof_body((-1.0, 0.5, 0.6), spherical, pinned),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
     with open(os.path.join(builtin.dir, "constant", "twistTable"), "w") as f:
@@ -207,7 +220,7 @@ def sixdof():
                       "tabulatedAxialAngularSpring.fmu" in out,
                       "tabled converted to tabulatedAxialAngularSpring.fmu")
     return failures + compare_runs("sixDoFRigidBodyMotion", builtin, converted,
-                                   ["constrained", "free"])
+                                   ["constrained", "free", "tumbling"])
 
 
 def include_refused():

@@ -128,6 +128,16 @@ TEST(AxialAngularSpringErrors, Messages)
         },
         "axialAngularSpring: parameter referenceOrientation[2,3] = inf is out "
         "of range (allowed: finite)");
+    expectThrowWithMessage<ParameterError>(
+        [] {
+            AxialAngularSpringParameters p
+                = springParameters(1.0, 0.0, Vector3::UnitZ());
+            p.R_BA0 *= 2.0; // norm 2 sqrt(3)
+            AxialAngularSpring s(p);
+        },
+        "axialAngularSpring: parameter referenceOrientation is not a rotation "
+        "tensor: |referenceOrientation| - sqrt(3) = 1.7320508075688772 "
+        "(allowed: within 3.2e-08 of 0, as OpenFOAM reads it)");
     expectNanInputRefused(
         AxialAngularSpring(springParameters(1.0, 0.0, Vector3::UnitZ())),
         &BodyKinematics::w_WK_W, 1,

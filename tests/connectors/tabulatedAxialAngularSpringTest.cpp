@@ -265,6 +265,11 @@ TEST(TabulatedAxialAngularSpringErrors, Messages)
             "tabulatedAxialAngularSpring: parameter B.axis = (0, 0, 0) has no "
             "direction (allowed: a finite vector of length >= 1e-12, "
             "normalised by the law)");
+    refused([](auto& p) { p.R_BA0 *= 2.0; }, // norm 2 sqrt(3)
+            "tabulatedAxialAngularSpring: parameter referenceOrientation is "
+            "not a rotation tensor: |referenceOrientation| - sqrt(3) = "
+            "1.7320508075688772 (allowed: within 3.2e-08 of 0, as OpenFOAM "
+            "reads it)");
     expectNanInputRefused(
         TabulatedAxialAngularSpring(springParameters()),
         &BodyKinematics::w_WK_W, 1,

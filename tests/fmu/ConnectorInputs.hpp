@@ -28,15 +28,15 @@ inline void addVector(std::map<std::string, double>& m, const std::string& name,
     }
 }
 
-//- name[1,1] ... name[3,3], row by row
+//- name[i,j] = m(i - 1, j - 1), as the FMUs name a 3x3 variable
 inline void addMatrix(std::map<std::string, double>& m, const std::string& name,
-                      const Matrix3& R)
+                      const Matrix3& value)
 {
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
             m[name + "[" + std::to_string(i + 1) + "," + std::to_string(j + 1)
               + "]"]
-                = R(i, j);
+                = value(i, j);
         }
     }
 }

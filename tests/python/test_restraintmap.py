@@ -165,6 +165,18 @@ class Mapping(unittest.TestCase):
             with self.assertRaisesRegex(DictionaryError, "^d: table file .*missing: "):
                 convert("tabulatedAxialAngularSpring", spring, "sixDoF", {}, "d", case=case)
 
+    def test_spherical_angular_spring(self):
+        spring = words(referenceOrientation="(0 -1 0 1 0 0 0 0 1)", stiffness="2",
+                       damping="0.1")
+        c = convert("sphericalAngularSpring", spring, "sixDoF", words(centreOfMass="(0 0 0)"),
+                    "d")
+        self.assertEqual((c.fmu, c.parameters["stiffness"], c.parameters["damping"],
+                          c.parameters["referenceOrientation"], c.notes),
+                         ("sphericalAngularSpring", "2", "0.1", "(0 -1 0 1 0 0 0 0 1)", []))
+        c = convert("sphericalAngularSpring", words(stiffness="2", damping="0"), "sixDoF",
+                    words(centreOfMass="(0 0 0)"), "d")
+        self.assertEqual(c.parameters["referenceOrientation"], "(1 0 0 0 1 0 0 0 1)")
+
     def test_left_out(self):
         self.assertIsNone(convert("prescribedRotation", {}, "rigidBody", {}, "d"))
 
