@@ -168,8 +168,8 @@ def rows():
             bound = (0.05 if dt == 1e-6 else 0.5) if scheme is SYMPLECTIC else None
             add((f"time step {dt:g} s (k dt^2/mu = {osc.K * dt**2 / osc.MU:.2g})", "linearSpring",
                  scheme[0], *spring_against_exact(scheme, dt, periods, bound=bound)))
-    for fmu in ("linearSpring", "linearDamper", "translationalDamper", "rotationalDamper", "axialAngularSpring", "sphericalAngularSpring",
-                "hinge", "catenary"):
+    for fmu in ("linearSpring", "linearDamper", "translationalDamper", "rotationalDamper", "axialAngularSpring",
+                "tabulatedAxialAngularSpring", "sphericalAngularSpring", "hinge", "catenary"):
         add(("NaN or infinite kinematic input (fmusim check)", fmu, "FMU C API", *nan_check(fmu)))
     add(("NaN stiffness in the case", "linearSpring", "rigidBodySim", *nan_parameter()))
     susp = {"weight": cat.W, "seabedContact": 1, "seabedFriction": 0}

@@ -1,11 +1,6 @@
 #include "axialAngularSpring/AxialAngularSpring.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <string>
-
-#include <Eigen/Geometry>
-
+#include "common/AxialAngle.hpp"
 #include "common/AxialGeometry.hpp"
 #include "common/ConnectorError.hpp"
 #include "common/ReferenceOrientation.hpp"
@@ -16,38 +11,8 @@ namespace {
 
 const char* const lawName = "axialAngularSpring";
 
-//- Below this length [-] an axis has no direction
-constexpr double minimumAxisNorm = 1e-12;
-
-//- OpenFOAM's VSMALL and SMALL (doubleScalar)
+//- OpenFOAM's VSMALL (doubleScalar)
 constexpr double vSmall = 1e-300;
-constexpr double small = 1e-15;
-
-//- OpenFOAM's rotationTensor(n1, n2) (transform.H, v1912 and v2312): the
-//  rotation in the plane of n1 and n2 that turns n1 onto n2; the mirror
-//  I + 2 n1 n2 where they are opposite, I where they coincide
-Matrix3 rotationTensor(const Vector3& n1, const Vector3& n2)
-{
-    const double s = n1.dot(n2);
-    const Vector3 n3 = n1.cross(n2);
-    const double magSqrN3 = n3.squaredNorm();
-    if (magSqrN3 > small) {
-        return s * Matrix3::Identity()
-            + (1 - s) * n3 * n3.transpose() / magSqrN3
-            + (n2 * n1.transpose() - n1 * n2.transpose());
-    }
-    if (s < 0) {
-        return Matrix3::Identity() + 2 * n1 * n2.transpose();
-    }
-    return Matrix3::Identity();
-}
-
-//- v less its part along the unit vector n, normalised as OpenFOAM does
-Vector3 normalAndUnit(const Vector3& v, const Vector3& n)
-{
-    const Vector3 w = v - n.dot(v) * n;
-    return w / (w.norm() + vSmall);
-}
 
 } // namespace
 
@@ -56,17 +21,7 @@ AxialAngularSpring::AxialAngularSpring(
     : parameters_(parameters)
 {
     requireFiniteAttachments(lawName, parameters.p_AoP_A, parameters.p_BoQ_B);
-    requireFinite(lawName, "B.axis", parameters.axis_B, "1");
-    const double norm = parameters.axis_B.norm();
-    if (norm < minimumAxisNorm) {
-        throw ParameterError(Refusal::noDirection, "B.axis",
-                             std::string(lawName) + ": parameter B.axis = "
-                                 + formatVector(parameters.axis_B)
-                                 + " has no direction (allowed: a finite "
-                                   "vector of length >= 1e-12, normalised by "
-                                   "the law)");
-    }
-    n_B_ = parameters.axis_B / norm;
+    n_B_ = unitAxis(lawName, parameters.axis_B);
     requireReferenceOrientation(lawName, parameters.R_BA0);
     requireNonNegative(lawName, "stiffness", parameters.stiffness, "N.m/rad");
     requireNonNegative(lawName, "damping", parameters.damping, "N.m.s/rad");
@@ -79,24 +34,11 @@ ConnectorResult AxialAngularSpring::evaluate(const BodyKinematics& A,
 
     const Vector3& n = n_B_;
     const Matrix3 R_BA = B.R_WK.transpose() * A.R_WK;
-    const Matrix3& Q0 = parameters_.R_BA0;
-    const Matrix3 T = rotationTensor(Vector3::UnitX(), n);
-
-    Vector3 d = T * Vector3::UnitY();
-    Vector3 u = Q0 * d;
-    Vector3 w = R_BA * d;
-    if (std::abs(u.dot(n)) > 0.95 || std::abs(w.dot(n)) > 0.95) {
-        // Directions near the axis: OpenFOAM's other reference
-        d = T * Vector3::UnitZ();
-        u = Q0 * d;
-        w = R_BA * d;
-    }
-    u = normalAndUnit(u, n);
-    w = normalAndUnit(w, n);
-    const double theta = std::abs(std::acos(std::clamp(u.dot(w), -1.0, 1.0)));
+    const AxialAngle angle = axialAngle(n, parameters_.R_BA0, R_BA);
+    const double theta = angle.magnitude;
 
     // The axis with the sense of the turn from u to w
-    Vector3 a = u.cross(w).dot(n) * n;
+    Vector3 a = angle.sense * n;
     const double magA = a.norm();
     a = magA > vSmall ? Vector3(a / magA) : Vector3(Vector3::Zero());
 

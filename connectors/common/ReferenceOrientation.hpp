@@ -1,7 +1,8 @@
 // The referenceOrientation of OpenFOAM's angular springs (sixDoF
-// linearAxialAngularSpring and sphericalAngularSpring): A's orientation
-// relative to B where the spring holds no moment, checked as OpenFOAM reads
-// it. Shared by axialAngularSpring and sphericalAngularSpring.
+// linearAxialAngularSpring, tabulatedAxialAngularSpring and
+// sphericalAngularSpring): A's orientation relative to B where the spring
+// holds no moment, checked as OpenFOAM reads it. Shared by
+// axialAngularSpring, tabulatedAxialAngularSpring and sphericalAngularSpring.
 #ifndef CONNECTORS_COMMON_REFERENCEORIENTATION_HPP
 #define CONNECTORS_COMMON_REFERENCEORIENTATION_HPP
 

@@ -31,6 +31,7 @@ public:
         for (const auto& [field, block] : matrices_) {
             p.*field = blockMatrix3(values, block);
         }
+        setOtherParameters(values, p);
         law_.build(p);
     }
 
@@ -73,6 +74,11 @@ protected:
         matrices_.emplace_back(field, block);
         return block;
     }
+
+    //- Sets the fields of p that are no scalar, vector or 3x3 parameter (a
+    //  table), from the value array, after those and before the law is
+    //  built; none here
+    virtual void setOtherParameters(const double*, Parameters&) const { }
 
     ConnectorOutputs
     evaluate(const double*, const connectors::BodyKinematics& A,

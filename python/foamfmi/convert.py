@@ -7,7 +7,8 @@ linearDamper by translationalDamper.fmu, sphericalAngularDamper by
 rotationalDamper.fmu, in rigidBodyMotion and in sixDoFRigidBodyMotion (the
 motion solver's coefficients and the sixDoFRigidBodyDisplacement patches of
 a pointDisplacement file), and sixDoF's linearAxialAngularSpring by
-axialAngularSpring.fmu and sphericalAngularSpring by
+axialAngularSpring.fmu, tabulatedAxialAngularSpring (its table read from its
+file) by tabulatedAxialAngularSpring.fmu and sphericalAngularSpring by
 sphericalAngularSpring.fmu. It copies the FMUs into CASE/constant/fmu/ and
 adds libfoamFmiBridge.so to the libs of system/controlDict.
 
@@ -167,7 +168,7 @@ def convert_file(case, name, tree, shared, report):
                 if path not in frames:
                     frames[path] = motion_frame(motion, "%s, %s" % (name, ".".join(path[:-1])))
                 frame = frames[path]
-            conversion = convert(kind, restraint, framework, motion, where, frame)
+            conversion = convert(kind, restraint, framework, motion, where, frame, case)
             if conversion is None:
                 reason = (RIGID_LEFT_OUT.get(kind) if framework == "rigidBody" else None) \
                     or LEFT_OUT.get(kind, "not a restraint the converter knows")

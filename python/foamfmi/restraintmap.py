@@ -24,6 +24,8 @@ Every mapping returns a Conversion, or None for a restraint type that has
 no twin (the reason in LEFT_OUT).
 """
 
+import os
+import re
 from dataclasses import dataclass, field
 
 from foamfmi.dictionary import DictionaryError
@@ -35,8 +37,6 @@ LEFT_OUT = {
                           "function of time, it connects nothing",
     "externalForce": "a force given as a function of time, it connects nothing",
     "softWall": "a contact with a plane, not a connector law of the project",
-    "tabulatedAxialAngularSpring": "no connector FMU does the same yet (the angle of "
-                                   "linearAxialAngularSpring, a moment from a table)",
     "linearSpringDamper": "its anchor is a function of time and its force is relaxed "
                           "against its previous evaluation: not a connector law",
 }
@@ -150,12 +150,100 @@ def sixdof_attachment(point, motion, where, frame=None):
     return [sum(q[i][j] * d[i] for i in range(3)) for j in range(3)]
 
 
-def convert(kind, restraint, framework, motion, where, frame=None):
+def _reference_orientation(restraint, where):
+    """The referenceOrientation of an angular spring as the FMU parameter's
+    text (OpenFOAM's default, the identity, where it has none)."""
+    orientation = (_vector(restraint, "referenceOrientation", where, size=9)
+                   if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
+    return vector_text(orientation)
+
+
+# tabulatedAxialAngularSpring.fmu's most table points (table.angle[1..64])
+TABLE_POINTS = 64
+
+# OpenFOAM's outOfBounds, as the FMU's outOfBounds codes
+OUT_OF_BOUNDS = {"error": 0, "warn": 1, "clamp": 2, "repeat": 3}
+
+
+def _table_path(name, case):
+    """The file name of an interpolationTable as OpenFOAM expands it, for
+    the case folder case: $FOAM_CASE, <case>, <constant>, <system>; a
+    relative name from the case (where the solver runs)."""
+    for tag, folder in (("$FOAM_CASE", ""), ("${FOAM_CASE}", ""), ("<case>", ""),
+                        ("<constant>", "constant"), ("<system>", "system")):
+        if name.startswith(tag):
+            name = os.path.join(case, folder, name[len(tag):].lstrip("/"))
+    return name if os.path.isabs(name) else os.path.join(case, name)
+
+
+def read_table(path, where):
+    """The (x, y) points of an interpolationTable file of OpenFOAM's
+    reader (readerType openFoam): a list of (x y) pairs."""
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError as e:
+        raise DictionaryError("%s: table file %s: %s" % (where, path, e.strerror)) from None
+    text = re.sub(r"//[^\n]*|/\*.*?\*/", " ", text, flags=re.S)
+    pairs = re.findall(r"\(\s*([^()\s]+)\s+([^()\s]+)\s*\)", text)
+    rest = re.sub(r"\(\s*[^()\s]+\s+[^()\s]+\s*\)", " ", text).split()
+    try:
+        points = [(float(x), float(y)) for x, y in pairs]
+    except ValueError:
+        points = []
+    if not points or "".join(rest) not in ("()", "%d()" % len(points)):
+        raise DictionaryError("%s: table file %s is not a list of (angle moment) pairs"
+                              % (where, path))
+    return points
+
+
+def _tabulated(restraint, where, case):
+    """The FMU parameters of a sixDoF tabulatedAxialAngularSpring and the
+    notes."""
+    reader = word(restraint["readerType"]) if "readerType" in restraint else "openFoam"
+    if reader != "openFoam":
+        raise DictionaryError("%s: readerType %s: the converter reads readerType openFoam "
+                              "tables only" % (where, reader))
+    points = read_table(_table_path(word(_entry(restraint, "file", where)), case), where)
+    if len(points) > TABLE_POINTS:
+        raise DictionaryError("%s: a table of %d points, tabulatedAxialAngularSpring.fmu "
+                              "takes at most %d" % (where, len(points), TABLE_POINTS))
+    angle_format = word(_entry(restraint, "angleFormat", where))
+    if angle_format not in ("degrees", "degree", "radians", "radian"):
+        raise DictionaryError("%s: angleFormat %s, expected degrees or radians"
+                              % (where, angle_format))
+    bounds = word(restraint["outOfBounds"]) if "outOfBounds" in restraint else "warn"
+    if bounds not in OUT_OF_BOUNDS:
+        raise DictionaryError("%s: outOfBounds %s, expected one of %s"
+                              % (where, bounds, ", ".join(OUT_OF_BOUNDS)))
+    padding = [0.0] * (TABLE_POINTS - len(points))
+    degrees = angle_format.startswith("degree")
+    notes = []
+    half_turn = 180.0 if degrees else 3.141592653589793
+    if bounds == "warn" and not (points[0][0] <= -half_turn and points[-1][0] > half_turn):
+        notes.append("outOfBounds warn: OpenFOAM warns where the angle leaves the table; "
+                     "the FMU takes the end moments as it does, without the warning")
+    return {
+        "damping": number_text(_scalar(restraint, "damping", where)),
+        "B.axis": vector_text(_vector(restraint, "axis", where)),
+        "referenceOrientation": _reference_orientation(restraint, where),
+        "table.points": str(len(points)),
+        "table.angle": vector_text([x for x, _ in points] + padding),
+        "table.moment": vector_text([y for _, y in points] + padding),
+        "angleInDegrees": "1" if degrees else "0",
+        "outOfBounds": str(OUT_OF_BOUNDS[bounds]),
+        "A.p": "(0 0 0)",
+        "B.p": "(0 0 0)",
+    }, notes
+
+
+def convert(kind, restraint, framework, motion, where, frame=None, case="."):
     """The Conversion of a built-in restraint of type kind (its entries in
     restraint, its motion dictionary motion; framework 'rigidBody' or
     'sixDoF'; frame: a sixDoF motion's initial centre of rotation,
-    orientation and their source, default sixdof_frame's), or None when it
-    has no twin."""
+    orientation and their source, default sixdof_frame's; case: the case
+    folder, that table files are found from), or None when it has no
+    twin."""
     if kind == "linearSpring":
         attachment = _vector(restraint, "refAttachmentPt", where)
         notes = []
@@ -191,28 +279,28 @@ def convert(kind, restraint, framework, motion, where, frame=None):
     if kind == "sphericalAngularSpring" and framework == "sixDoF":
         # OpenFOAM's law step by step; its moment is no gradient at finite
         # angles (connectors/sphericalAngularSpring/README.md)
-        orientation = (_vector(restraint, "referenceOrientation", where, size=9)
-                       if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
         return Conversion("sphericalAngularSpring", {
             "stiffness": number_text(_scalar(restraint, "stiffness", where)),
             "damping": number_text(_scalar(restraint, "damping", where)),
-            "referenceOrientation": vector_text(orientation),
+            "referenceOrientation": _reference_orientation(restraint, where),
             "A.p": "(0 0 0)",
             "B.p": "(0 0 0)",
         })
     if kind == "linearAxialAngularSpring":
         if framework == "rigidBody":
             return None  # see RIGID_LEFT_OUT
-        orientation = (_vector(restraint, "referenceOrientation", where, size=9)
-                       if "referenceOrientation" in restraint else [1, 0, 0, 0, 1, 0, 0, 0, 1])
         return Conversion("axialAngularSpring", {
             "stiffness": number_text(_scalar(restraint, "stiffness", where)),
             "damping": number_text(_scalar(restraint, "damping", where)),
             "B.axis": vector_text(_vector(restraint, "axis", where)),
-            "referenceOrientation": vector_text(orientation),
+            "referenceOrientation": _reference_orientation(restraint, where),
             "A.p": "(0 0 0)",
             "B.p": "(0 0 0)",
         })
+    if kind == "tabulatedAxialAngularSpring":
+        # sixDoF only: rigidBodyMotion has no such restraint
+        parameters, notes = _tabulated(restraint, where, case)
+        return Conversion("tabulatedAxialAngularSpring", parameters, notes)
     if kind == "sphericalAngularDamper":
         # M = -coeff omega, a couple (both frameworks)
         return Conversion("rotationalDamper", {

@@ -14,11 +14,12 @@ restraints move the bodies as the built-in ones do, with no fluid.
    one body with no constraint, turned, on a linearSpring of the same name
    (two built-in restraints; fmuConnector restraints of one name in two
    motions would be one connector: the converter renames them), a
-   sphericalAngularDamper and a linearAxialAngularSpring about a tilted
-   axis, the body starting 90 deg from its reference about z; one body
-   pinned at its centre of mass and spun, tumbling on a
-   sphericalAngularSpring alone, 120 deg from its reference at the start
-   (where its moment is no gradient). The line runs through the global origin along z
+   sphericalAngularDamper, a linearAxialAngularSpring about a tilted
+   axis, the body starting 90 deg from its reference about z, and a
+   tabulatedAxialAngularSpring about another axis, a softening table in
+   degrees from a file, clamped beyond it; one body pinned at its centre
+   of mass and spun, tumbling on a sphericalAngularSpring alone, 120 deg
+   from its reference at the start (where its moment is no gradient). The line runs through the global origin along z
    and the damper's body moves along it: OpenFOAM's sixDoF linearDamper
    applies its force at the global origin (a moment centreOfRotation x
    force about the centre of rotation), which this geometry makes zero, so
@@ -169,6 +170,14 @@ def sixdof():
              "                axis (0 0.6 0.8);\n"
              "                referenceOrientation (1 0 0 0 1 0 0 0 1);\n"
              "                stiffness 0.4; damping 0.02;\n            }\n")
+    # a softening spring in degrees, its table in constant/twistTable
+    tabulated = ("            tabled\n            {\n"
+                 "                sixDoFRigidBodyMotionRestraint tabulatedAxialAngularSpring;\n"
+                 "                axis (0.8 0 0.6);\n"
+                 "                file \"$FOAM_CASE/constant/twistTable\";\n"
+                 "                outOfBounds clamp;\n"
+                 "                angleFormat degrees;\n"
+                 "                damping 0.01;\n            }\n")
     # 90 deg about y: 120 deg from the body's start (TURNED), about no axis
     # of the reference (90 deg about x would be an equilibrium of the law)
     spherical = ("            tumble\n            {\n"
@@ -187,10 +196,12 @@ def sixdof():
         "constrained": sixdof_body((0.1, 0.05, 0.6), sixdof_spring((0.1, 0.1, 0.45)) + damper,
                                    line),
         "free": sixdof_body((1.0, 0.0, 0.6), sixdof_spring((1.1, 0.05, 0.7)) + turning
-                            + axial),
+                            + axial + tabulated),
         "tumbling": sixdof_body((-1.0, 0.5, 0.6), spherical, pinned),
     }
     builtin = SixDoFCase("convertSixDoF", bodies, 2.0, 0.001, g=(0, 0, -9.81))
+    with open(os.path.join(builtin.dir, "constant", "twistTable"), "w") as f:
+        f.write("(\n    (-150 0.9)\n    (-60 0.5)\n    (0 0)\n    (45 -0.4)\n    (150 -0.8)\n)\n")
     converted = copy_case(builtin, "converted")
     out = convert(converted.dir, "-dict", "constant/sixDoFBodies")
     print(out, end="")
@@ -204,6 +215,10 @@ def sixdof():
     failures += check("sixDoF: the damper's moment is named", "note: OpenFOAM's sixDoF "
                       "linearDamper applies its force at the global origin" in out,
                       "a note on the converted linearDamper")
+    failures += check("sixDoF: the tabulated spring's table is read from its file",
+                      "tabled (tabulatedAxialAngularSpring): fmuConnector "
+                      "tabulatedAxialAngularSpring.fmu" in out,
+                      "tabled converted to tabulatedAxialAngularSpring.fmu")
     return failures + compare_runs("sixDoFRigidBodyMotion", builtin, converted,
                                    ["constrained", "free", "tumbling"])
 
@@ -268,7 +283,7 @@ boundaryField
 
 def main():
     failures = rigid() + sixdof() + include_refused() + point_patch()
-    return summary(14, failures)
+    return summary(15, failures)
 
 
 if __name__ == "__main__":

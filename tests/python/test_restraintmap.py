@@ -3,6 +3,8 @@ built-in restraints (the sixDoF centre of rotation as OpenFOAM's
 constructor makes it) and where an entry stands in a dictionary's text.
 foamFmiConvert itself, with OpenFOAM's reader, is tested by
 tests/bridge/test_convert.py."""
+import os
+import tempfile
 import unittest
 from unittest import mock
 
@@ -134,6 +136,34 @@ class Mapping(unittest.TestCase):
                          ("axialAngularSpring", "(0 1 0)", "(1 0 0 0 1 0 0 0 1)"))
         # the rigidBodyMotion one turns bodies away from their reference
         self.assertIsNone(convert("linearAxialAngularSpring", spring, "rigidBody", {}, "d"))
+
+    def test_tabulated_axial_angular_spring(self):
+        with tempfile.TemporaryDirectory() as case:
+            os.makedirs(os.path.join(case, "constant"))
+            with open(os.path.join(case, "constant", "table"), "w") as f:
+                f.write("// angle moment\n3\n(\n    (-90 4)\n    (0 0) (90 -4.5)\n)\n")
+            spring = words(axis="(0 1 0)", damping="0.1", angleFormat="degrees",
+                           outOfBounds="repeat")
+            spring["file"] = ['"$FOAM_CASE/constant/table"']
+            c = convert("tabulatedAxialAngularSpring", spring, "sixDoF",
+                        words(centreOfMass="(0 0 0)"), "d", case=case)
+            self.assertEqual((c.fmu, c.parameters["B.axis"], c.parameters["table.points"],
+                              c.parameters["angleInDegrees"], c.parameters["outOfBounds"],
+                              c.notes),
+                             ("tabulatedAxialAngularSpring", "(0 1 0)", "3", "1", "3", []))
+            # 64 values each, the unused points 0
+            self.assertEqual(c.parameters["table.angle"],
+                             "(-90 0 90" + " 0" * 61 + ")")
+            self.assertEqual(c.parameters["table.moment"],
+                             "(4 0 -4.5" + " 0" * 61 + ")")
+            # outOfBounds warn (the default) is clamp without the warning
+            del spring["outOfBounds"]
+            c = convert("tabulatedAxialAngularSpring", spring, "sixDoF", {}, "d", case=case)
+            self.assertEqual(c.parameters["outOfBounds"], "1")
+            self.assertIn("without the warning", c.notes[0])
+            spring["file"] = ['"<constant>/missing"']
+            with self.assertRaisesRegex(DictionaryError, "^d: table file .*missing: "):
+                convert("tabulatedAxialAngularSpring", spring, "sixDoF", {}, "d", case=case)
 
     def test_spherical_angular_spring(self):
         spring = words(referenceOrientation="(0 -1 0 1 0 0 0 0 1)", stiffness="2",
