@@ -31,12 +31,17 @@ connectors::Vector3 blockVector3(const double* values, Block block)
 connectors::Matrix3 blockMatrix3(const double* values, Block block)
 {
     connectors::Matrix3 m;
+    readBlockMatrix3(values, block, m);
+    return m;
+}
+
+void readBlockMatrix3(const double* values, Block block, connectors::Matrix3& m)
+{
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
             m(i, j) = values[block.first + 3 * i + j];
         }
     }
-    return m;
 }
 
 connectors::BodyKinematics bodyKinematics(const double* values,

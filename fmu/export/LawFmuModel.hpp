@@ -29,7 +29,7 @@ public:
             p.*field = scalar(values, block);
         }
         for (const auto& [field, block] : matrices_) {
-            p.*field = blockMatrix3(values, block);
+            readBlockMatrix3(values, block, p.*field);
         }
         setOtherParameters(values, p);
         law_.build(p);
