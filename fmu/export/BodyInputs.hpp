@@ -32,7 +32,8 @@ connectors::Matrix3 blockMatrix3(const double* values, Block block);
 //- The same into m: LawFmuModel fills a law's 3x3 parameters through it,
 //  out of line, where GCC cannot mistake a member of a law without one
 //  for an out-of-bounds write (-Warray-bounds)
-void readBlockMatrix3(const double* values, Block block, connectors::Matrix3& m);
+void readBlockMatrix3(const double* values, Block block,
+                      connectors::Matrix3& m);
 
 //- The body's kinematics from the value array
 connectors::BodyKinematics bodyKinematics(const double* values,
