@@ -42,10 +42,7 @@ public:
         const Block axis
             = parameter(&Parameters::axis_B, "B.axis", "1",
                         "the axis n, B's frame (normalised)", {0, 0, 1});
-        const Block reference = parameter(
-            &Parameters::R_BA0, "referenceOrientation", "1",
-            "reference orientation of A relative to B, A's frame to B's",
-            {1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const Block reference = referenceOrientation();
         const Block stiffness = parameter(&Parameters::stiffness, "stiffness",
                                           "N.m/rad", "stiffness k, >= 0", 10.0);
         const Block damping = parameter(&Parameters::damping, "damping",

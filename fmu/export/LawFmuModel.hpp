@@ -75,6 +75,16 @@ protected:
         return block;
     }
 
+    //- Declares the angular springs' referenceOrientation (the identity by
+    //  default), whose value becomes the law's R_BA0
+    Block referenceOrientation()
+    {
+        return parameter(
+            &Parameters::R_BA0, "referenceOrientation", "1",
+            "reference orientation of A relative to B, A's frame to B's",
+            {1, 0, 0, 0, 1, 0, 0, 0, 1});
+    }
+
     //- Sets the fields of p that are no scalar, vector or 3x3 parameter (a
     //  table), from the value array, after those and before the law is
     //  built; none here

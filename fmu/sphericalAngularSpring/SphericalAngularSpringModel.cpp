@@ -40,10 +40,7 @@ public:
                        "1.0.0", lawHtml})
     {
         declareBodies({1, 0, 0});
-        const Block reference = parameter(
-            &Parameters::R_BA0, "referenceOrientation", "1",
-            "reference orientation of A relative to B, A's frame to B's",
-            {1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const Block reference = referenceOrientation();
         const Block stiffness = parameter(&Parameters::stiffness, "stiffness",
                                           "N.m/rad", "stiffness k, >= 0", 10.0);
         const Block damping = parameter(&Parameters::damping, "damping",

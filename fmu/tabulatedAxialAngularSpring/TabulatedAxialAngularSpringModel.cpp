@@ -72,10 +72,7 @@ public:
         const Block axis
             = parameter(&Parameters::axis_B, "B.axis", "1",
                         "the axis n, B's frame (normalised)", {0, 0, 1});
-        const Block reference = parameter(
-            &Parameters::R_BA0, "referenceOrientation", "1",
-            "reference orientation of A relative to B, A's frame to B's",
-            {1, 0, 0, 0, 1, 0, 0, 0, 1});
+        const Block reference = referenceOrientation();
         table_.first = fmi2ValueReference(t.size());
         t.parameter("table.points", Shape::scalar, "1",
                     "number of points of the table, an integer from 2 to "
