@@ -35,7 +35,9 @@
 // be made of sections from Q to P, each with its own l, EA, BA, mu, d and
 // Morison coefficients, and a point (clump weight or buoy: mass, volume,
 // CdA, Ca) at each joint, whose node carries half a segment of each
-// section and the point.
+// section and the point. On the seabed the point's net weight J rests on
+// its own contact area J min(d/w) (LineLayout::Node::pointContact), so
+// that it sinks as deep as the line beside it at any segment length.
 //
 // The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
 // states (position and velocity of each free node) are integrated by the
