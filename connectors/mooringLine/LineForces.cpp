@@ -67,6 +67,42 @@ double submergedHeight(const MooringLineParameters& p, double z, double l)
     return std::min(z, bottom) + l * (u - 0.5 * u * u);
 }
 
+//- The seabed's friction on a node [N] pushed by `push` [N], moving at
+//  the horizontal velocity vh [m/s], its tangent t: Coulomb friction mu
+//  push, regularised below frictionVelocity v_f (a damping c = mu s push /
+//  v_f there, s the static scale; s falls linearly to 1 from v_f to
+//  2 v_f) and axialFrictionRatio r times it along the horizontal part of
+//  t. Sets the transverse damping c [N.s/m] and, above v_f, the sliding
+//  direction; adds the power it takes to *dissipated
+Vector3 seabedFriction(const MooringLineParameters& p, double push,
+                       const Vector3& vh, const Vector3& t, double& c,
+                       Vector3& sliding, double* dissipated)
+{
+    const double speed = vh.norm(), vf = p.frictionVelocity;
+    double scale = 1.0;
+    if (speed < 2.0 * vf) {
+        scale = p.staticFrictionScale
+            - (p.staticFrictionScale - 1.0) * std::max(speed - vf, 0.0) / vf;
+    }
+    c = p.seabedFriction * push * scale / std::max(speed, vf);
+    if (speed > vf) {
+        sliding = vh / speed;
+    }
+    Vector3 F = c * vh;
+    double power = c * vh.squaredNorm();
+    const Vector3 th(t[0], t[1], 0.0);
+    const double thn = th.norm();
+    if (p.axialFrictionRatio != 1.0 && thn > 0.0) {
+        const double along = vh.dot(th) / thn;
+        F += (p.axialFrictionRatio - 1.0) * c * along * th / thn;
+        power += (p.axialFrictionRatio - 1.0) * c * along * along;
+    }
+    if (dissipated) {
+        *dissipated += power;
+    }
+    return F;
+}
+
 } // namespace
 
 namespace {
@@ -241,21 +277,10 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
                     += node.contact(p.seabedStiffness * depth) * V[i][2]
                     - push * V[i][2];
             }
-            // Coulomb friction on the horizontal velocity, regularised:
-            // mu push v / max(|v|, frictionVelocity)
             if (friction && push > 0.0) {
-                const Vector3 vh(V[i][0], V[i][1], 0.0);
-                const double speed = vh.norm();
-                const double c = p.seabedFriction * push
-                    / std::max(speed, p.frictionVelocity);
-                fFriction[i] = c;
-                if (speed > p.frictionVelocity) {
-                    fSliding[i] = vh / speed;
-                }
-                E -= c * vh;
-                if (diagnostics) {
-                    dissipatedPower += c * vh.squaredNorm();
-                }
+                E -= seabedFriction(p, push, Vector3(V[i][0], V[i][1], 0.0),
+                                    fTangent[i], fFriction[i], fSliding[i],
+                                    diagnostics ? &dissipatedPower : nullptr);
             }
         }
         const Vector3 t = fTangent[i];

@@ -49,6 +49,25 @@ double restDepth(double w, double support)
                                     : std::numeric_limits<double>::min();
 }
 
+//- A joint point's own seabed contact area [m2] for its net weight J [N]
+//  beside sections a and b: J times the smaller d/w of the two (the deeper
+//  rest depth w/(kb d)), so that the point sinks as deep as the line
+//  there and its support does not shrink with the segments; 0 for a buoy
+//  (J <= 0) and beside two sections lighter than water
+double pointContact(double J, const LineLayout::Section& a,
+                    const LineLayout::Section& b)
+{
+    double widthPerWeight = 0.0; // d/w [m/(N/m)]
+    for (const LineLayout::Section* s : {&a, &b}) {
+        if (s->w > 0.0 && s->diameter > 0.0) {
+            const double r = s->diameter / s->w;
+            widthPerWeight = widthPerWeight > 0.0 ? std::min(widthPerWeight, r)
+                                                  : r;
+        }
+    }
+    return J > 0.0 ? J * widthPerWeight : 0.0;
+}
+
 LineLayout::Node::Piece piece(int k, const LineLayout::Section& s, double share)
 {
     LineLayout::Node::Piece p;
@@ -126,12 +145,12 @@ LineLayout lineLayout(const MooringLineParameters& p, double w)
         node.pointWeight = point.mass * p.gravity;
         node.pointBuoyancy = p.waterDensity * point.volume * p.gravity;
         node.pointDrag = 0.5 * p.waterDensity * point.dragArea;
+        node.pointContact
+            = pointContact(node.pointWeight - node.pointBuoyancy, sa, sb);
         node.restDepth
             = restDepth(sa.w * node.piece[0].share + sb.w * node.piece[1].share
                             + node.pointWeight - node.pointBuoyancy,
-                        kb
-                            * (sa.diameter * node.piece[0].share
-                               + sb.diameter * node.piece[1].share));
+                        node.contact(kb));
         node.surfaceStiffness
             = (sa.buoyancy * node.piece[0].share
                + sb.buoyancy * node.piece[1].share + node.pointBuoyancy)

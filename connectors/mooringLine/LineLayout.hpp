@@ -54,12 +54,14 @@ struct LineLayout {
         Piece piece[2];
 
         //- x times the seabed contact, the sum over the pieces of x d share
-        //  (x d share as the uniform line wrote it)
+        //  (x d share as the uniform line wrote it), and at a joint x times
+        //  its point's contact area
         double contact(double x) const
         {
             double sum = x * piece[0].diameter * piece[0].share;
             if (pieces == 2) {
-                sum += x * piece[1].diameter * piece[1].share;
+                sum += x * piece[1].diameter * piece[1].share
+                    + x * pointContact;
             }
             return sum;
         }
@@ -76,6 +78,12 @@ struct LineLayout {
         //- The point's drag factor 1/2 rho CdA [kg/m], its weight and
         //  buoyancy [N] (zero without a point)
         double pointDrag = 0.0, pointWeight = 0.0, pointBuoyancy = 0.0;
+        //- The point's own seabed contact area [m2]: its net weight over
+        //  the seabed's stiffness times the deeper rest depth w/(kb d) of
+        //  the two sections beside it, so that a clump weight rests as
+        //  deep as the line around it whatever the segments' length; 0
+        //  for a buoy and beside two sections lighter than water
+        double pointContact = 0.0;
         //- The flow's inertia on the node's pieces and point (at phi = 1),
         //  normal and tangential: the force of a flow accelerating at a is
         //  phi (flowInertiaN a_n + flowInertiaT a_t) [kg]

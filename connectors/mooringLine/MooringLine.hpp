@@ -20,7 +20,9 @@
 //         + seabed: (kb (zb - z) - cb s dz/dt) d lambda z^ when z < zb, never
 //           pulling, s = min((zb - z)/(w/(kb d)), 1): the damping engages
 //           over the depth at which the stiffness carries the weight
-//         + friction on the seabed: -mu_s Fn v_h / max(|v_h|, v_f), Fn the
+//         + friction on the seabed: -mu Fn s(|v_h|) (v_t + r v_a)/max(|v_h|, v_f)
+//           (v_a, v_t along and across the line, r = axialFrictionRatio,
+//           s = staticFrictionScale below v_f, 1 above 2 v_f), Fn the
 //           seabed's push, v_h the horizontal velocity
 //         + drag: phi (1/2 rho d sigma Cdn |un| un + 1/2 rho pi d sigma Cdt |ut| ut)
 //           with un, ut the normal and tangential parts of u = U - v_i, U the
@@ -35,7 +37,9 @@
 // be made of sections from Q to P, each with its own l, EA, BA, mu, d and
 // Morison coefficients, and a point (clump weight or buoy: mass, volume,
 // CdA, Ca) at each joint, whose node carries half a segment of each
-// section and the point.
+// section and the point. On the seabed the point's net weight J rests on
+// its own contact area J min(d/w) (LineLayout::Node::pointContact), so
+// that it sinks as deep as the line beside it at any segment length.
 //
 // The seabed (seabedContact) is the horizontal plane through Q. The 6(N-1)
 // states (position and velocity of each free node) are integrated by the
@@ -144,7 +148,15 @@ struct MooringLineParameters {
     //- Seabed Coulomb friction coefficient mu [-] (0: none) on the
     //  horizontal velocity of nodes on the seabed, regularised below the
     //  speed frictionVelocity [m/s]: F = -mu Fn v / max(|v|, frictionVelocity)
+    //  (across the line; along it axialFrictionRatio times that)
     double seabedFriction = 0.0, frictionVelocity = 0.01;
+    //- mu along the line over mu across it [-] (>= 0; 1: isotropic, as
+    //  before; MoorDyn-F's mu_kA/mu_kT) and the static friction's scale
+    //  mu_s/mu [-] (>= 1; MoorDyn's StatDynFricScale): below
+    //  frictionVelocity the friction is the damping that reaches mu_s Fn
+    //  there, falling linearly to mu Fn at twice that speed (MoorDyn's
+    //  drops at once: a jump the trapezoidal step's Newton would chase)
+    double axialFrictionRatio = 1.0, staticFrictionScale = 1.0;
     //- The end nodes' inertia on the bodies: their half segment's mass and
     //  added mass times the end's acceleration (true), or none (false:
     //  default; explicit in the coupling, it can destabilise a body whose

@@ -218,6 +218,13 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
     requireFinite(lawName, "current.seabed", p.currentSeabed, "m/s");
     requireNonNegative(lawName, "seabedFriction", p.seabedFriction, "1");
     requirePositive(lawName, "frictionVelocity", p.frictionVelocity, "m/s");
+    requireNonNegative(lawName, "axialFrictionRatio", p.axialFrictionRatio,
+                       "1");
+    if (!(p.staticFrictionScale >= 1.0 && std::isfinite(p.staticFrictionScale))) {
+        throw ParameterError(Refusal::outOfRange, lawName,
+                             "staticFrictionScale", p.staticFrictionScale, "1",
+                             "finite and >= 1");
+    }
     checkSections(p);
     weight_ = p.weight();
     layout_ = lineLayout(p, weight_);

@@ -50,7 +50,9 @@ previous step is the flow's acceleration a, held over the step: with
 (1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
 <code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
 <code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
-on the seabed, regularised below <code>frictionVelocity</code>.</p>
+on the seabed, regularised below <code>frictionVelocity</code>,
+<code>axialFrictionRatio</code> times it along the line, up to
+<code>staticFrictionScale</code> times it below that speed.</p>
 <p>Up to 4 sections from B.p to A.p: the first is the line of the parameters
 above, sections 2 to 4 have their own (<code>section2.EA</code>, ...;
 <code>section&lt;k&gt;.unstretchedLength</code> = 0: no section k), with a
@@ -84,7 +86,7 @@ struct ScalarBlocks {
         tangentialAddedMass, seabedContact, seabedStiffness, seabedDamping,
         segments, relativeTolerance, absoluteTolerance, hermiteEnds, integrator,
         maxStep, freeSurface, waterLevel, seabedFriction, frictionVelocity,
-        endInertia;
+        endInertia, axialFrictionRatio, staticFrictionScale;
 };
 
 struct Scalar {
@@ -173,6 +175,15 @@ const Scalar scalars[] = {
      "(mass and added mass times the attachment point's acceleration, "
      "explicit in the coupling); 0 (default): not",
      0.0, &ScalarBlocks::endInertia},
+    {"axialFrictionRatio", "1",
+     "seabed friction along the line over that across it (seabedFriction), "
+     ">= 0 (1: isotropic)",
+     1.0, &ScalarBlocks::axialFrictionRatio},
+    {"staticFrictionScale", "1",
+     "static over kinetic seabed friction, >= 1: below frictionVelocity the "
+     "friction reaches this times the kinetic one, falling to it at twice "
+     "that speed (1: none)",
+     1.0, &ScalarBlocks::staticFrictionScale},
 };
 constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
 
@@ -340,6 +351,8 @@ MooringLineModel::parameters(const double* values) const
     p.waterLevel = value(p_.waterLevel);
     p.seabedFriction = value(p_.seabedFriction);
     p.frictionVelocity = value(p_.frictionVelocity);
+    p.axialFrictionRatio = value(p_.axialFrictionRatio);
+    p.staticFrictionScale = value(p_.staticFrictionScale);
     p.endInertia = flag(values, p_.endInertia);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);

@@ -1,9 +1,8 @@
 // The dynamic line in moving water and at its boundaries, each against an
 // analytic answer: the end nodes' drag, inertia and seabed force on the
 // bodies; drag on the stretched length; a taut line in a uniform current
-// (total drag = the bodies' horizontal loads = the Morison formula); seabed
-// friction of a line sliding on the seabed (mu times the grounded weight);
-// a line through the free surface (dry weight above it) held still from the
+// (total drag = the bodies' horizontal loads = the Morison formula); a
+// line through the free surface (dry weight above it) held still from the
 // start; the current profile; flow velocities at the shape points against
 // the same current; the tension along the shape.
 #include <gtest/gtest.h>
@@ -315,62 +314,6 @@ TEST(MooringLineWater, FlowVaryingAlongTheLineEqualsTheCurrentProfile)
     // the current): measured 5e-9 of the motion, 1e-6 asserted
     EXPECT_LT(largest, 1e-6 * moved);
     EXPECT_GT(moved, 1e-3); // the current moved the line
-}
-
-TEST(MooringLineWater, SeabedFrictionOfASlidingLine)
-{
-    // A line lying taut on the seabed (both ends on it, B a moving body
-    // with seabedContact; 0.1 % stretch, 1e5 N, so that it stays taut
-    // against the friction) dragged along its length at 0.05 m/s, well above
-    // the regularisation speed: at steady sliding the bodies' loads along
-    // the motion add up to minus mu times the submerged weight of the
-    // grounded free nodes, mu w (L - l) (the ends' half segments ride on
-    // the bodies and on the anchor), and without friction to nothing
-    for (const double mu : {0.0, 0.6}) {
-        MooringLineParameters p = line(10);
-        p.seabedContact = true;
-        // a stiff seabed: the nodes sink by w/(kb d) = 1.4e-7 m, so the
-        // tension (1e5 N) pulls the nodes next to the ends up by T 1.4e-8,
-        // 1e-7 of the friction
-        p.seabedStiffness = 3e10;
-        p.seabedFriction = mu;
-        p.frictionVelocity = 1e-3;
-        p.normalDrag = p.tangentialDrag = 0.0;
-        MooringLine law(p);
-        const double V = 0.05, h = 0.05;
-        const auto at = [&](double t) {
-            // smooth start over 2 s, then V
-            const double x = t < 2.0
-                ? V * (t - 2.0 / pi * std::sin(0.5 * pi * t)) / 2.0
-                : V * (t - 1.0);
-            const double v
-                = t < 2.0 ? V * 0.5 * (1.0 - std::cos(0.5 * pi * t)) : V;
-            return std::pair<BodyKinematics, BodyKinematics> {
-                body(Vector3(100.1 + x, 0.0, 0.0), Matrix3::Identity(),
-                     Vector3(v, 0.0, 0.0)),
-                body(Vector3(x, 0.0, 0.0), Matrix3::Identity(),
-                     Vector3(v, 0.0, 0.0))};
-        };
-        auto [A, B] = at(0.0);
-        MooringLineState s = law.initialState(A, B, 0.0);
-        const int steps = 200;
-        for (int k = 1; k <= steps; ++k) {
-            std::tie(A, B) = at(k * h);
-            law.advance(s, A, B, h);
-        }
-        const auto out = law.evaluate(s, A, B, 0);
-        const double along = out.loads.A.f_W[0] + out.loads.B.f_W[0];
-        const double l = p.length / p.segments;
-        const double expected = -mu * p.weight() * (p.length - l);
-        std::cout << "mu = " << mu << ": loads along the motion " << along
-                  << " N, -mu w (L - l) = " << expected << " N\n";
-        // steady sliding reached (8 s after the ramp; the axial mode,
-        // damped by BA, settles in ~0.1 s): node accelerations and the
-        // seabed's vertical damping leave 1e-6 of the friction (and of
-        // w l for mu = 0)
-        EXPECT_NEAR(along, expected,
-                    1e-6 * std::max(std::abs(expected), p.weight() * l));
-    }
 }
 
 TEST(MooringLineWater, LineThroughTheFreeSurface)
