@@ -217,6 +217,16 @@ struct Reports {
 };
 void setReports(const Reports& reports);
 
+// A function of the host's that the importer calls when the process ends
+// without running its exit handlers: from its handlers of fatal signals
+// (those named at Fmu: the faults, and SIGINT, SIGTERM, ... when they end
+// the process) and before a time-out ends it (Reports). It runs in a signal
+// handler or in the watchdog thread while the process may be stopped
+// anywhere: it must be async-signal-safe and return soon (the OpenFOAM
+// bridge waits there, at most a second, for its writer thread to put the
+// rows it holds on disk). One per process: the latest set; nullptr for none.
+void setEndingHook(void (*hook)());
+
 // An unpacked and loaded .fmu. Reads and checks modelDescription.xml from
 // the archive (fmiVersion 2.0 or 3.0, <CoSimulation>: an FMI 3.0 FMU for
 // model exchange or scheduled execution only, or with clocks, is refused
