@@ -339,8 +339,8 @@ void Foam::fmuConnectorCore::evaluate
     const kinematics& B
 )
 {
-    // A new time step: the earlier one is complete, its row goes to the
-    // file before the FMU is called (which may fail, crash or hang)
+    // A new time step: the earlier one is complete, its row is published
+    // for the file before the FMU is called (which may fail, crash or hang)
     if (output_.valid() && deltaT > 0 && timeIndex != stepIndex_)
     {
         output_->stepBegins(timeIndex);
