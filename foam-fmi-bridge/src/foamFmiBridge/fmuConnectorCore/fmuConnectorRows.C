@@ -6,6 +6,7 @@
 #include "fmuImport/fmuImport.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cfenv>
 #include <ctime>
 #include <thread>
@@ -22,10 +23,8 @@ namespace
 //  numbers, at least 64 rows
 constexpr size_t ringBytes = 1 << 20;
 
-//- How long the writer collects rows, and the slices it sleeps in (it
-//  stops early when the process is ending) [ns]
+//- How long the writer collects rows [ns]
 constexpr long periodNs = 2000000;
-constexpr long sliceNs = 250000;
 
 //- The process's writer thread and the rows it writes. Never destroyed:
 //  the thread and the ending hook may run after static destructors
@@ -35,8 +34,8 @@ struct writer
     std::mutex mutex;
     std::vector<Foam::fmuConnectorRows*> rows;
 
-    //- Posted when a row is published while the writer sleeps, or when the
-    //  process is ending
+    //- Posted when a row is published while the writer sleeps, when a
+    //  ring is half full, or when the process is ending
     sem_t wake;
 
     //- Whether the writer waits for wake (taken back by whoever posts)
@@ -83,10 +82,23 @@ void run(writer& w)
     {
         while (::sem_wait(&w.wake) != 0)
         {}
-        for (long slept = 0; slept < periodNs && !w.urgent.load(); )
+
+        // Collect rows for a period, unless hurried (one wake-up: the
+        // writer shares a core with the solver on a busy machine)
+        timespec deadline;
+        ::clock_gettime(CLOCK_REALTIME, &deadline);
+        deadline.tv_nsec += periodNs;
+        if (deadline.tv_nsec >= 1000000000)
         {
-            sleepNs(sliceNs);
-            slept += sliceNs;
+            deadline.tv_sec += 1;
+            deadline.tv_nsec -= 1000000000;
+        }
+        while (!w.urgent.load() && ::sem_timedwait(&w.wake, &deadline) != 0)
+        {
+            if (errno == ETIMEDOUT)
+            {
+                break;
+            }
         }
         for (;;)
         {
@@ -123,11 +135,10 @@ void waitForWriter()
     {
         return;
     }
+    // Wakes the writer, asleep or collecting
     w->urgent.store(true);
-    if (w->sleeping.exchange(false))
-    {
-        ::sem_post(&w->wake);
-    }
+    w->sleeping.store(false);
+    ::sem_post(&w->wake);
     // At most a second: the writer may wait for a lock this thread holds
     for (int i = 0; i < 10000 && w->written.load() < target; ++i)
     {
@@ -294,10 +305,11 @@ void Foam::fmuConnectorRows::publish()
     (
         2*(head_.load(std::memory_order_relaxed) - tail_.load()) > capacity_
      && !w.urgent.load(std::memory_order_relaxed)
+     && !w.urgent.exchange(true)
     )
     {
         // Half full: the writer stops collecting
-        w.urgent.store(true);
+        ::sem_post(&w.wake);
     }
 }
 
