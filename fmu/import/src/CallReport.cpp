@@ -105,9 +105,13 @@ void flushOutput()
     text.writeToStderr();
     // The FMU is still running in the main thread: no destructor will
     // remove its unpacked copy (the mapped binary stays mapped).
-    UnpackRegistry::removeAll();
+    processEnds();
     ::_exit(words.timeoutStatus.load());
 }
+
+// The host's function for a process that ends without its exit handlers
+// (setEndingHook)
+std::atomic<void (*)()> endingHook {nullptr};
 
 // The polling period [s]: an eighth of the shortest time limit, within
 // 1 ms and 0.1 s.
@@ -177,6 +181,18 @@ void setReports(const Reports& reports)
     copyWords(words.timeoutSource, reports.timeoutSource);
     words.timeoutStatus = reports.timeoutStatus;
     words.exitStatus = reports.exitStatus;
+}
+
+void setEndingHook(void (*hook)())
+{
+    endingHook.store(hook);
+}
+
+void processEnds() noexcept
+{
+    if (void (*hook)() = endingHook.load())
+        hook();
+    UnpackRegistry::removeAll();
 }
 
 const char* reportPrefix() noexcept

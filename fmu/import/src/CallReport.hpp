@@ -71,6 +71,11 @@ void watchCalls(double timeout);
 // Writes the crash report if a call is marked. Async-signal-safe.
 void reportCrash(int signal) noexcept;
 
+// The process ends without its exit handlers (a fatal signal, a time-out):
+// runs the host's ending hook (setEndingHook), then removes the unpacked
+// FMUs. Async-signal-safe when the hook is.
+void processEnds() noexcept;
+
 // Installs the exit hook (on_exit). Once, at the first FMU load, before the
 // handlers that remove the unpacked files, so that it runs after them.
 void installExitReport();

@@ -55,7 +55,8 @@ bool isDefault(const struct sigaction& action)
 }
 
 // Names the FMU call in progress if a fault (SIGSEGV, SIGFPE, SIGABRT,
-// SIGBUS, SIGILL) hit it (CallReport), removes the directories, then hands
+// SIGBUS, SIGILL) hit it (CallReport), runs the host's ending hook and
+// removes the directories (processEnds), then hands
 // the signal to whatever handled it before (OpenFOAM's stack trace). The directory removal uses only async-signal-safe calls (see
 // RemoveTree.hpp): the process may be stopped anywhere, in malloc or
 // holding a lock, and is about to die.
@@ -77,7 +78,7 @@ extern "C" void onFatalSignal(int sig, siginfo_t* info, void* context)
     if (isFault(sig))
         reportCrash(sig);
     if (isFault(sig) || isDefault(previous))
-        UnpackRegistry::removeAll();
+        processEnds();
     if (isDefault(previous)) {
         sigaction(sig, &previous, nullptr);
         raise(sig);
@@ -89,7 +90,7 @@ extern "C" void onFatalSignal(int sig, siginfo_t* info, void* context)
         struct sigaction now;
         if (!isFault(sig) && sigaction(sig, nullptr, &now) == 0
             && isDefault(now))
-            UnpackRegistry::removeAll();
+            processEnds();
     }
     errno = savedErrno;
 }

@@ -28,6 +28,14 @@ Description
     (inputs set, FMU stepped, outputs read), the state save
     (fmi2GetFMUstate) and the row of outputs (fmuConnectorOutput::record).
 
+    The times are the solver thread's, what a solver waits for. An
+    fmuConnector's rows are formatted and written by the process's writer
+    thread (fmuConnectorRows): so that the comparison stays honest, the
+    CPU time of every thread per new step and per row, with the rows of
+    the round written, is printed beside them, and the CPU time of the
+    solver's thread alone per new step (its wait less the time another
+    thread had its core).
+
 Usage
     restraintCost [-evaluations <n>] [-rounds <n>] [-case <dir>]
 \*---------------------------------------------------------------------------*/
@@ -39,10 +47,12 @@ Usage
 #include "rigidBodyRestraint.H"
 #include "fmuConnector.H"
 #include "fmuConnectorOutput.H"
+#include "fmuConnectorRows.H"
 #include "fmuImport/fmuImport.hpp"
 #include "bodySim.H"
 
 #include <chrono>
+#include <ctime>
 
 using namespace Foam;
 
@@ -51,9 +61,59 @@ using namespace Foam;
 namespace
 {
 
+//- CPU seconds of the clock: every thread of the process, or this thread
+scalar cpuSeconds(const clockid_t clock)
+{
+    timespec t;
+    ::clock_gettime(clock, &t);
+    return t.tv_sec + 1e-9*t.tv_nsec;
+}
+
+scalar processCpu()
+{
+    return cpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
+}
+
+
+//- Seconds per call of f, for n calls, on the calling thread (the solver's
+//  wait); with cpu, also the CPU seconds per call of every thread, with
+//  the rows the calls left to the writer thread written (the whole cost),
+//  and with threadCpu those of the calling thread alone
+template<class Call>
+scalar timeCalls
+(
+    const label n,
+    const Call& f,
+    scalar* cpu = nullptr,
+    scalar* threadCpu = nullptr
+)
+{
+    fmuConnectorRows::drainAll();
+    const scalar cpuStart = processCpu();
+    const scalar threadStart = cpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+    const auto start = std::chrono::steady_clock::now();
+    for (label i = 0; i < n; ++i)
+    {
+        f(i);
+    }
+    const auto end = std::chrono::steady_clock::now();
+    if (threadCpu)
+    {
+        *threadCpu = (cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - threadStart)/n;
+    }
+    fmuConnectorRows::drainAll();
+    if (cpu)
+    {
+        *cpu = (processCpu() - cpuStart)/n;
+    }
+
+    return std::chrono::duration<scalar>(end - start).count()/n;
+}
+
+
 //- Seconds per evaluation of the restraint, for nEval evaluations: a new
 //  time step (the time and its index advanced) every evaluation, or one
-//  time step evaluated repeatedly
+//  time step evaluated repeatedly; cpu as timeCalls
 scalar timeEvaluations
 (
     Time& runTime,
@@ -62,37 +122,26 @@ scalar timeEvaluations
     scalarField& tau,
     Field<spatialVector>& fx,
     const label nEval,
-    const bool newStepEach
+    const bool newStepEach,
+    scalar* cpu = nullptr,
+    scalar* threadCpu = nullptr
 )
 {
-    const auto start = std::chrono::steady_clock::now();
-    for (label i = 0; i < nEval; ++i)
-    {
-        if (newStepEach)
+    return timeCalls
+    (
+        nEval,
+        [&](label)
         {
-            state.t() += state.deltaT();
-            runTime.setTime(state.t(), runTime.timeIndex() + 1);
-        }
-        restraint.restrain(tau, fx, state);
-    }
-    const auto end = std::chrono::steady_clock::now();
-
-    return std::chrono::duration<scalar>(end - start).count()/nEval;
-}
-
-
-//- Seconds per call of f, for n calls
-template<class Call>
-scalar timeCalls(const label n, const Call& f)
-{
-    const auto start = std::chrono::steady_clock::now();
-    for (label i = 0; i < n; ++i)
-    {
-        f(i);
-    }
-    const auto end = std::chrono::steady_clock::now();
-
-    return std::chrono::duration<scalar>(end - start).count()/n;
+            if (newStepEach)
+            {
+                state.t() += state.deltaT();
+                runTime.setTime(state.t(), runTime.timeIndex() + 1);
+            }
+            restraint.restrain(tau, fx, state);
+        },
+        cpu,
+        threadCpu
+    );
 }
 
 
@@ -117,6 +166,7 @@ class fmuConnectorParts
     fmuImport::Instance::State state_;
     scalar t_;
     label timeIndex_;
+    label rowIndex_;
 
 public:
 
@@ -132,7 +182,8 @@ public:
         rawFmu_(fmu_.file()),
         rawInstance_(rawFmu_, name),
         t_(0),
-        timeIndex_(0)
+        timeIndex_(0),
+        rowIndex_(0)
     {
         // Defaults of the raw instance: the state's size does not depend on
         // the parameters
@@ -167,14 +218,27 @@ public:
         return timeCalls(n, [&](label) { state_ = rawInstance_.getState(); });
     }
 
-    //- Seconds per row of outputs
-    scalar output(const label n)
+    //- Seconds per row of outputs on this thread, and the CPU seconds
+    //  per row of every thread (the writer's formatting and writing). In
+    //  chunks the ring holds, each begun with every row written: the
+    //  solver's part when the writer keeps up, as in a run whose steps take
+    //  longer than a row's formatting (in a loop of rows alone it cannot)
+    scalar output(const label n, scalar& cpu)
     {
-        return timeCalls
-        (
-            n,
-            [&](label i) { output_.record(timeIndex_ + 1 + i, t_ + i); }
-        );
+        const label chunk = 1000;
+        scalar solver = 0;
+        const scalar cpuStart = processCpu();
+        for (label done = 0; done < n; done += chunk)
+        {
+            solver += chunk*timeCalls
+            (
+                chunk,
+                [&](label) { ++rowIndex_; output_.record(rowIndex_, rowIndex_); }
+            );
+        }
+        fmuConnectorRows::drainAll();
+        cpu = (processCpu() - cpuStart)/n;
+        return solver/n;
     }
 };
 
@@ -246,16 +310,27 @@ int main(int argc, char *argv[])
     scalarList evaluation(restraints.size(), GREAT);
     scalarList stateSave(restraints.size(), GREAT);
     scalarList output(restraints.size(), GREAT);
+    scalarList newStepCpu(restraints.size(), GREAT);
+    scalarList newStepThreadCpu(restraints.size(), GREAT);
+    scalarList outputCpu(restraints.size(), GREAT);
 
     for (label round = 0; round < nRounds; ++round)
     {
         forAll(restraints, i)
         {
+            scalar cpu = 0;
+            scalar threadCpu = 0;
             newStep[i] = min
             (
                 newStep[i],
-                timeEvaluations(runTime, restraints[i], state, tau, fx, nEval, true)
+                timeEvaluations
+                (
+                    runTime, restraints[i], state, tau, fx, nEval, true,
+                    &cpu, &threadCpu
+                )
             );
+            newStepCpu[i] = min(newStepCpu[i], cpu);
+            newStepThreadCpu[i] = min(newStepThreadCpu[i], threadCpu);
             repeated[i] = min
             (
                 repeated[i],
@@ -266,14 +341,17 @@ int main(int argc, char *argv[])
                 evaluation[i] =
                     min(evaluation[i], parts[i].evaluation(nEval, 1e-3));
                 stateSave[i] = min(stateSave[i], parts[i].stateSave(nEval));
-                output[i] = min(output[i], parts[i].output(nEval));
+                output[i] = min(output[i], parts[i].output(nEval, cpu));
+                outputCpu[i] = min(outputCpu[i], cpu);
             }
         }
     }
 
-    // Parts not timed (built-in restraints) are printed as 0
+    // Parts not timed (built-in restraints) are printed as 0. The times
+    // are the solver thread's; the cpu columns count every thread
     Info<< "restraint  type  new-step-ns  repeated-ns"
-        << "  evaluation-ns  state-save-ns  output-ns" << nl;
+        << "  evaluation-ns  state-save-ns  output-ns"
+        << "  new-step-cpu-ns  output-cpu-ns  new-step-thread-cpu-ns" << nl;
     forAll(restraints, i)
     {
         const bool split = parts.set(i);
@@ -281,7 +359,10 @@ int main(int argc, char *argv[])
             << 1e9*newStep[i] << ' ' << 1e9*repeated[i] << ' '
             << (split ? 1e9*evaluation[i] : 0) << ' '
             << (split ? 1e9*stateSave[i] : 0) << ' '
-            << (split ? 1e9*output[i] : 0) << nl;
+            << (split ? 1e9*output[i] : 0) << ' '
+            << 1e9*newStepCpu[i] << ' '
+            << (split ? 1e9*outputCpu[i] : 0) << ' '
+            << 1e9*newStepThreadCpu[i] << nl;
     }
     Info<< endl;
 

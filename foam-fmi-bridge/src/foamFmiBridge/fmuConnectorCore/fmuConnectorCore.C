@@ -94,7 +94,7 @@ void Foam::fmuConnectorCore::restorePending
     Info<< "Connector " << restraintName_ << ": FMU state restored at t = "
         << restoreTime_ << " from " << restoreSource_ << endl;
 
-    checkRestoredParameters();
+    parameters_->checkRestored(*instance_, restoreSource_);
 
     restoreBytes_.clear();
 }
@@ -205,7 +205,6 @@ Foam::fmuConnectorCore::fmuConnectorCore
     stepEndTime_(startTime - 1),
     stepIndex_(-1),
     warnedNoRollback_(false),
-    parameters_(entries.parameters),
     restoreTime_(startTime)
 {
     file_.expand();
@@ -258,9 +257,17 @@ Foam::fmuConnectorCore::fmuConnectorCore
                 << exit(FatalIOError);
         }
 
+        parameters_.reset
+        (
+            new fmuConnectorParameters
+            (
+                *fmu_, entries.parameters, restraintName_, file_, where()
+            )
+        );
+
         lookupVariables();
 
-        checkParameters(parameters_, restraintDict, startTime);
+        parameters_->check(restraintDict, startTime);
 
         const word instanceName(restraintName_);
         instance_.reset
@@ -297,7 +304,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
 
         instance_->setupExperiment(startTime);
         instance_->enterInitializationMode();
-        setParameters(*instance_, parameters_);
+        parameters_->set(*instance_);
         reportSetup(*instance_);
     }
     catch (const fmuImport::Error& err)
@@ -339,8 +346,8 @@ void Foam::fmuConnectorCore::evaluate
     const kinematics& B
 )
 {
-    // A new time step: the earlier one is complete, its row goes to the
-    // file before the FMU is called (which may fail, crash or hang)
+    // A new time step: the earlier one is complete, its row is published
+    // for the file before the FMU is called (which may fail, crash or hang)
     if (output_.valid() && deltaT > 0 && timeIndex != stepIndex_)
     {
         output_->stepBegins(timeIndex);

@@ -24,10 +24,10 @@ void Foam::fmuConnectorCore::reportSetup(fmuImport::Instance& instance) const
 
     // The value references the case's entries set
     Map<bool> given;
-    for (const entry& e : parameters_)
+    for (const entry& e : parameters_->dict())
     {
         scalarList values;
-        for (const unsigned int ref : parameterRefs(parameters_, e, values))
+        for (const unsigned int ref : parameters_->refs(e, values))
         {
             given.set(label(ref), true);
         }

@@ -5,7 +5,7 @@
 Description
     Variable handling of fmuConnectorCore: its interface variables by
     fmuImport's vocabulary, inputs and outputs (parameters:
-    fmuConnectorCoreParameters.C).
+    fmuConnectorParameters; a line's variables: fmuConnectorLine).
 \*---------------------------------------------------------------------------*/
 
 #include "fmuConnectorCore.H"
@@ -129,122 +129,7 @@ void Foam::fmuConnectorCore::lookupVariables()
     B_.Fout = positions("B.F");
     B_.Mout = positions("B.M");
 
-    lookupShape();
-}
-
-
-void Foam::fmuConnectorCore::lookupShape()
-{
-    auto indexed = [](const char* base, const label k)
-    {
-        return word(std::string(base) + '[' + std::to_string(k) + ']', false);
-    };
-
-    // The points: shape.x/y/z[k], in FMI 2.0 and 3.0 alike; or the rows
-    // of an n x 3 array shape, shape[k,1..3], as the project's FMI 3.0
-    // FMUs built before shape.x/y/z had it (an array that was also the
-    // parent of shape.tension, which FMI 3.0's structured names forbid),
-    // so that cases holding such a copy keep running and restarting
-    for (label k = 1; ; ++k)
-    {
-        labelList xyz
-        ({
-            outputNames_.find(indexed("shape.x", k)),
-            outputNames_.find(indexed("shape.y", k)),
-            outputNames_.find(indexed("shape.z", k))
-        });
-        if (min(xyz) < 0)
-        {
-            forAll(xyz, j)
-            {
-                xyz[j] = outputNames_.find
-                (
-                    word
-                    (
-                        "shape[" + std::to_string(k) + ','
-                      + std::to_string(j + 1) + ']',
-                        false
-                    )
-                );
-            }
-        }
-        if (min(xyz) < 0)
-        {
-            break;
-        }
-        shapeOut_.append(xyz);
-    }
-    const label n = nShapePoints();
-
-    for (label k = 1; k <= n; ++k)
-    {
-        const label i = outputNames_.find(indexed("shape.tension", k));
-        if (i < 0)
-        {
-            tensionOut_.clear();
-            break;
-        }
-        tensionOut_.append(i);
-    }
-
-    // The section of each shape point: outputs or local variables, read
-    // with the outputs
-    const fmuImport::Fmu& fmu = fmu_();
-    for (label k = 1; k <= n; ++k)
-    {
-        const word name(indexed("shape.section", k));
-        if
-        (
-            !fmu.hasVariable(name)
-         || fmu.variable(name).type != fmuImport::Type::Real
-         || (
-                fmu.variable(name).causality != fmuImport::Causality::output
-             && fmu.variable(name).causality != fmuImport::Causality::local
-            )
-        )
-        {
-            sectionRefs_.clear();
-            break;
-        }
-        sectionRefs_.push_back(fmu.variable(name).valueReference);
-    }
-
-    // The water velocity inputs: all of them at every shape point, or none
-    wordList missing;
-    for (label k = 1; k <= max(n, label(1)); ++k)
-    {
-        for (const char* base : {"shape.Ux", "shape.Uy", "shape.Uz"})
-        {
-            const word name(indexed(base, k));
-            if
-            (
-                fmu.hasVariable(name)
-             && fmu.variable(name).causality == fmuImport::Causality::input
-             && fmu.variable(name).type == fmuImport::Type::Real
-            )
-            {
-                flowRefs_.push_back(fmu.variable(name).valueReference);
-            }
-            else
-            {
-                missing.append(name);
-            }
-        }
-    }
-    if (flowRefs_.empty())
-    {
-        return;
-    }
-    if (missing.size() || fmu.hasVariable(indexed("shape.Ux", n + 1)))
-    {
-        FatalErrorInFunction
-            << where().c_str() << "the FMU declares water velocity inputs"
-            << " shape.Ux/Uy/Uz but not as Real inputs at each of its " << n
-            << " shape points (outputs shape.x/y/z[1.." << n << "])"
-            << (missing.size() ? "; missing: " : "")
-            << listed(missing).c_str() << exit(FatalError);
-    }
-    flowValues_.assign(flowRefs_.size(), 0);
+    line_.lookup(outputNames_, fmu_(), where());
 }
 
 
@@ -278,10 +163,7 @@ void Foam::fmuConnectorCore::setInputs
     {
         instance_->setReal(massRefs_, massValues_);
     }
-    if (!flowRefs_.empty())
-    {
-        instance_->setReal(flowRefs_, flowValues_);
-    }
+    line_.setInputs(*instance_);
 }
 
 
@@ -328,10 +210,7 @@ void Foam::fmuConnectorCore::readOutputs()
         }
         outputs_[i] = values[i];
     }
-    if (!sectionRefs_.empty())
-    {
-        sectionValues_ = instance_->getReal(sectionRefs_);
-    }
+    line_.readOutputs(*instance_);
 }
 
 
@@ -365,49 +244,9 @@ Foam::scalar Foam::fmuConnectorCore::output
 }
 
 
-Foam::pointField Foam::fmuConnectorCore::shapePoints() const
-{
-    pointField points(nShapePoints());
-    forAll(points, k)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            points[k][d] = outputs_[shapeOut_[3*k + d]];
-        }
-    }
-    return points;
-}
-
-
-Foam::scalarField Foam::fmuConnectorCore::shapeTension() const
-{
-    return scalarField(outputs_, tensionOut_);
-}
-
-
-Foam::labelList Foam::fmuConnectorCore::shapeSections() const
-{
-    labelList sections(sectionValues_.size());
-    forAll(sections, k)
-    {
-        sections[k] = label(std::lround(sectionValues_[k])) - 1;
-    }
-    return sections;
-}
-
-
 void Foam::fmuConnectorCore::setFlow(const vectorField& U)
 {
-    if (3*U.size() != label(flowRefs_.size()))
-    {
-        FatalErrorInFunction
-            << where().c_str() << U.size() << " water velocities given for "
-            << flowRefs_.size()/3 << " inputs" << abort(FatalError);
-    }
-    forAll(U, k)
-    {
-        std::copy(U[k].cdata(), U[k].cdata() + 3, &flowValues_[3*k]);
-    }
+    line_.setFlow(U, where());
 }
 
 
@@ -427,7 +266,7 @@ Foam::pointField Foam::fmuConnectorCore::startShapePoints()
         initialised_
      || !restoreBytes_.empty()
      || !startKinematics_
-     || nShapePoints() == 0
+     || line_.nPoints() == 0
     )
     {
         return pointField();
@@ -447,7 +286,7 @@ Foam::pointField Foam::fmuConnectorCore::startShapePoints()
             << "restraint " << restraintName_ << ", the start shape: "
             << err.what() << exit(FatalError);
     }
-    return shapePoints();
+    return line_.points(outputs_);
 }
 
 

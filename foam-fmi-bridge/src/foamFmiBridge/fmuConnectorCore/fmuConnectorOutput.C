@@ -7,8 +7,8 @@
 #include "OSspecific.H"
 #include "DynamicList.H"
 
+#include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <functional>
 #include <iostream>
@@ -69,21 +69,21 @@ void writeCompletedRows()
 
 void Foam::fmuConnectorOutput::commit()
 {
-    if (!pending_)
+    if (pending_)
     {
-        return;
+        rows_->publish();
+        pending_ = false;
     }
+}
 
-    rowFile::appendNumber(buffer_, pendingTime_);
-    for (const scalar value : pendingValues_)
+
+void Foam::fmuConnectorOutput::drain()
+{
+    const int error = rows_->drain();
+    if (error)
     {
-        buffer_ += ' ';
-        rowFile::appendNumber(buffer_, value);
+        report(error, rows_->failedRow());
     }
-    buffer_ += '\n';
-    pending_ = false;
-
-    writeBuffer(rowOf(pendingTime_));
 }
 
 
@@ -102,24 +102,24 @@ std::function<std::string()> Foam::fmuConnectorOutput::rowOf
 }
 
 
-void Foam::fmuConnectorOutput::writeBuffer
+void Foam::fmuConnectorOutput::report
 (
-    const std::function<std::string()>& what
+    const int error,
+    const std::string& what
 )
 {
-    // Flushed: the row is in the file before the next step calls the FMU
+    if (!error || failureReported_)
+    {
+        return;
+    }
+    failureReported_ = true;
     if (!ending() && !std::uncaught_exceptions())
     {
-        file_->append(buffer_, what);
+        file_->fatal(error, what);
     }
-    else if (const int error = file_->tryAppend(buffer_))
-    {
-        std::cerr
-            << "--> FOAM Serious Error: cannot write " << what() << " to "
-            << file_->path() << ": " << std::strerror(error)
-            << " (a full disk, or a file-size limit: ulimit -f)" << std::endl;
-    }
-    buffer_.clear();
+    std::cerr
+        << "--> FOAM Serious Error: cannot write " << what << " to "
+        << file_->path() << ": " << rowFile::cause(error) << std::endl;
 }
 
 
@@ -149,7 +149,7 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     fmu_(fmu),
     pending_(false),
     pendingIndex_(-1),
-    pendingTime_(0),
+    failureReported_(false),
     provisionalSize_(-1),
     name_(name),
     reportBodies_(reportBodies)
@@ -162,13 +162,21 @@ Foam::fmuConnectorOutput::fmuConnectorOutput
     mkDir(dir);
     file_.reset(new rowFile(dir/(name + ".dat")));
 
-    buffer_ = "# " + description + "\n# Time";
+    std::string header("# " + description + "\n# Time");
     for (const word& output : fmu_.outputNames())
     {
-        buffer_ += ' ' + output;
+        header += ' ' + output;
     }
-    buffer_ += '\n';
-    writeBuffer([this]() { return "the header of connector " + name_; });
+    header += '\n';
+    report
+    (
+        file_->tryAppend(header),
+        "the header of connector " + name_
+    );
+    rows_.reset
+    (
+        new fmuConnectorRows(*file_, name_, 1 + fmu_.outputNames().size())
+    );
 
     static const bool handlerInstalled =
         (std::atexit(writeCompletedRows) == 0);
@@ -214,8 +222,12 @@ void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
 {
     stepBegins(timeIndex);
 
+    // A row the writer thread could not write
+    report(rows_->error(), rows_->failedRow());
+
     // A further solve of a step whose row is in the file already (a write
-    // time's): its row replaces that one
+    // time's): its row replaces that one. The writer does not touch the
+    // file: every published row is written
     const bool replace = provisionalSize_ >= 0 && timeIndex == pendingIndex_;
     if (replace)
     {
@@ -223,10 +235,13 @@ void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
     }
     provisionalSize_ = -1;
 
+    // The row's numbers, straight into its room
+    double* row = rows_->next();
+    row[0] = t;
+    const scalarList& values = fmu_.outputs();
+    std::copy(values.cbegin(), values.cend(), row + 1);
     pending_ = true;
     pendingIndex_ = timeIndex;
-    pendingTime_ = t;
-    pendingValues_ = fmu_.outputs();
 
     // The step's time is written once its last solve is done: the row goes
     // to the file now, before the time folder is begun, so that a kill
@@ -235,8 +250,10 @@ void Foam::fmuConnectorOutput::record(const label timeIndex, const scalar t)
     const Time& runTime = time();
     if (runTime.writeTime() && timeIndex == runTime.timeIndex())
     {
+        drain();
         provisionalSize_ = file_->size();
         commit();
+        drain();
     }
 
     if (reportBodies_.size())
@@ -259,6 +276,7 @@ void Foam::fmuConnectorOutput::flush(const bool final)
     {
         commit();
     }
+    drain();
 }
 
 

@@ -82,7 +82,7 @@ void lineJoints
 
 void Foam::fmuConnectorOutput::writeShape() const
 {
-    const label n = fmu_.nShapePoints();
+    const label n = fmu_.line().nPoints();
     if (n < 2)
     {
         return;
@@ -100,9 +100,9 @@ void Foam::fmuConnectorOutput::writeShape() const
     labelList sections;
     pointField joints;
     scalarField jointTension;
-    if (fmu_.reportsShapeSections())
+    if (fmu_.line().reportsSections())
     {
-        sections = fmu_.shapeSections();
+        sections = fmu_.line().sections();
         lineJoints(fmu_, max(sections), joints, jointTension);
     }
     const label nJoints = joints.size();
@@ -143,11 +143,11 @@ void Foam::fmuConnectorOutput::writeShape() const
         }
         os  << nl;
 
-        if (fmu_.reportsShapeTension() || fmu_.reportsShapeSections())
+        if (fmu_.line().reportsTension() || fmu_.line().reportsSections())
         {
             os  << "POINT_DATA " << n + nJoints << nl;
         }
-        if (fmu_.reportsShapeTension())
+        if (fmu_.line().reportsTension())
         {
             os  << "SCALARS tension double 1" << nl
                 << "LOOKUP_TABLE default" << nl;
@@ -160,7 +160,7 @@ void Foam::fmuConnectorOutput::writeShape() const
                 os  << T << nl;
             }
         }
-        if (fmu_.reportsShapeSections())
+        if (fmu_.line().reportsSections())
         {
             os  << "SCALARS section int 1" << nl
                 << "LOOKUP_TABLE default" << nl;

@@ -256,7 +256,7 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
     OStringStream os;
     writeHeader(os, "Water velocity at the shape points of " + connectors_[i]);
     writeCommented(os, "Time");
-    for (label k = 1; k <= core.nShapePoints(); ++k)
+    for (label k = 1; k <= core.line().nPoints(); ++k)
     {
         for (const char* c : {"Ux", "Uy", "Uz"})
         {
@@ -334,7 +334,7 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
                        .c_str()
                     << exit(FatalIOError);
             }
-            if (!core->takesFlow())
+            if (!core->line().takesFlow())
             {
                 FatalIOErrorInFunction(dict)
                     << "function object " << name() << ": entry connectors"

@@ -1,14 +1,9 @@
 // foam-fmi-bridge: connector FMUs for OpenFOAM's rigid-body dynamics.
 // Free software under the GNU General Public License version 3 or later
 // (see LICENSE at the project's top).
-/*---------------------------------------------------------------------------*\
-Description
-    Parameters of fmuConnectorCore: the dictionary's entries checked against
-    what the FMU declares, checked by the FMU itself in a probe instance,
-    set, and compared with a restored state.
-\*---------------------------------------------------------------------------*/
 
-#include "fmuConnectorCore.H"
+#include "fmuConnectorParameters.H"
+#include "fmuConnectorSettings.H"
 #include "error.H"
 #include "OStringStream.H"
 #include "Switch.H"
@@ -49,34 +44,53 @@ std::string refusedName(const std::string& message)
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
+Foam::fmuConnectorParameters::fmuConnectorParameters
 (
+    const fmuImport::Fmu& fmu,
     const dictionary& parameters,
+    const word& restraintName,
+    const fileName& file,
+    const std::string& where
+)
+:
+    fmu_(fmu),
+    dict_(parameters),
+    restraintName_(restraintName),
+    file_(file),
+    where_(where)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+std::vector<unsigned int> Foam::fmuConnectorParameters::refs
+(
     const entry& e,
     scalarList& values
 ) const
 {
+    const dictionary& parameters = dict_;
     const std::string key(e.keyword());
 
     if (!e.isStream())
     {
         FatalIOErrorInFunction(parameters)
-            << where().c_str() << "entry '" << key.c_str() << "' is a"
+            << where_.c_str() << "entry '" << key.c_str() << "' is a"
             << " dictionary; a parameter takes a number, or a list of"
             << " numbers for a vector" << exit(FatalIOError);
     }
     const ITstream& is = e.stream();
 
     // A scalar parameter: one number (or a switch for a Boolean)
-    if (fmu_->hasVariable(key))
+    if (fmu_.hasVariable(key))
     {
-        const fmuImport::Variable& var = fmu_->variable(key);
+        const fmuImport::Variable& var = fmu_.variable(key);
         if (var.causality != fmuImport::Causality::parameter)
         {
             FatalIOErrorInFunction(parameters)
-                << where().c_str() << "entry '" << key.c_str()
+                << where_.c_str() << "entry '" << key.c_str()
                 << "' names a variable of causality "
                 << fmuImport::connector::causalityName(var.causality)
                 << "; only parameters can be set here"
@@ -85,7 +99,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
         if (var.type == fmuImport::Type::String)
         {
             FatalIOErrorInFunction(parameters)
-                << where().c_str() << "string parameter '" << key.c_str()
+                << where_.c_str() << "string parameter '" << key.c_str()
                 << "' is not supported" << exit(FatalIOError);
         }
 
@@ -120,7 +134,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
         if (!good)
         {
             FatalIOErrorInFunction(parameters)
-                << where().c_str() << "parameter '" << key.c_str()
+                << where_.c_str() << "parameter '" << key.c_str()
                 << "' expects "
                 << (
                        isBoolean ? "a switch (true/false, on/off, 1/0)"
@@ -136,11 +150,11 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
     }
 
     // A vector or matrix parameter given as a list for key[1..n]
-    const bool isMatrix = fmu_->hasVariable(key + "[1,1]");
-    if (!isMatrix && !fmu_->hasVariable(key + "[1]"))
+    const bool isMatrix = fmu_.hasVariable(key + "[1,1]");
+    if (!isMatrix && !fmu_.hasVariable(key + "[1]"))
     {
         wordList names;
-        for (const auto& var : fmu_->modelDescription().variables)
+        for (const auto& var : fmu_.modelDescription().variables)
         {
             if (var.causality == fmuImport::Causality::parameter)
             {
@@ -148,9 +162,9 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
             }
         }
         FatalIOErrorInFunction(parameters)
-            << where().c_str() << "parameter '" << key.c_str()
+            << where_.c_str() << "parameter '" << key.c_str()
             << "' is not declared by the FMU; its parameters are "
-            << listed(names).c_str() << exit(FatalIOError);
+            << fmuConnectorSettings::listed(names).c_str() << exit(FatalIOError);
     }
 
     // The elements key[1..n], or key[1..3,1..3]: Real parameters
@@ -166,7 +180,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
     for
     (
         label i = 1;
-        !isMatrix && fmu_->hasVariable(key + "[" + std::to_string(i) + "]");
+        !isMatrix && fmu_.hasVariable(key + "[" + std::to_string(i) + "]");
         ++i
     )
     {
@@ -176,14 +190,14 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
     std::vector<unsigned int> refs;
     for (const std::string& element : elements)
     {
-        if (!fmu_->hasVariable(element))
+        if (!fmu_.hasVariable(element))
         {
             FatalIOErrorInFunction(parameters)
-                << where().c_str() << "declares " << refs.size()
+                << where_.c_str() << "declares " << refs.size()
                 << " elements of " << key.c_str() << " but not "
                 << element.c_str() << exit(FatalIOError);
         }
-        const fmuImport::Variable& var = fmu_->variable(element);
+        const fmuImport::Variable& var = fmu_.variable(element);
         if
         (
             var.type != fmuImport::Type::Real
@@ -191,7 +205,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
         )
         {
             FatalIOErrorInFunction(parameters)
-                << where().c_str() << "variable " << element.c_str()
+                << where_.c_str() << "variable " << element.c_str()
                 << " must be a Real parameter, it is declared with causality "
                 << fmuImport::connector::causalityName(var.causality)
                 << exit(FatalIOError);
@@ -211,7 +225,7 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
     if (!isList || label(refs.size()) != values.size())
     {
         FatalIOErrorInFunction(parameters)
-            << where().c_str() << "parameter '" << key.c_str()
+            << where_.c_str() << "parameter '" << key.c_str()
             << "' expects a list of " << refs.size() << " numbers, "
             << key.c_str() << (isMatrix ? "[1,1] to " : "[1] to ")
             << key.c_str() << "["
@@ -225,12 +239,9 @@ std::vector<unsigned int> Foam::fmuConnectorCore::parameterRefs
 }
 
 
-void Foam::fmuConnectorCore::setParameters
-(
-    fmuImport::Instance& instance,
-    const dictionary& parameters
-) const
+void Foam::fmuConnectorParameters::set(fmuImport::Instance& instance) const
 {
+    const dictionary& parameters = dict_;
     // Each FMU variable is set by one entry only: 'A.p (...)' and
     // 'A.p[1] ...' together would leave the result to the entries' order
     Map<word> setBy;
@@ -239,7 +250,7 @@ void Foam::fmuConnectorCore::setParameters
     {
         scalarList values;
         const std::vector<unsigned int> refs =
-            parameterRefs(parameters, e, values);
+            this->refs(e, values);
 
         for (const unsigned int ref : refs)
         {
@@ -247,7 +258,7 @@ void Foam::fmuConnectorCore::setParameters
             if (previous.found())
             {
                 std::string variable;
-                for (const auto& var : fmu_->modelDescription().variables)
+                for (const auto& var : fmu_.modelDescription().variables)
                 {
                     if
                     (
@@ -259,7 +270,7 @@ void Foam::fmuConnectorCore::setParameters
                     }
                 }
                 FatalIOErrorInFunction(parameters)
-                    << where().c_str() << "entries '" << *previous
+                    << where_.c_str() << "entries '" << *previous
                     << "' and '" << e.keyword() << "' both set the FMU"
                     << " parameter " << variable.c_str() << "; give each"
                     << " parameter once, as a vector or by element"
@@ -269,7 +280,7 @@ void Foam::fmuConnectorCore::setParameters
         }
 
         const fmuImport::Variable* var =
-            fmu_->hasVariable(e.keyword()) ? &fmu_->variable(e.keyword())
+            fmu_.hasVariable(e.keyword()) ? &fmu_.variable(e.keyword())
           : nullptr;
         const fmuImport::Type type = var ? var->type : fmuImport::Type::Real;
 
@@ -293,13 +304,13 @@ void Foam::fmuConnectorCore::setParameters
 }
 
 
-void Foam::fmuConnectorCore::checkParameters
+void Foam::fmuConnectorParameters::check
 (
-    const dictionary& parameters,
     const dictionary& restraintDict,
     const scalar startTime
 ) const
 {
+    const dictionary& parameters = dict_;
     // A probe instance, gone before the connector's own is made (an FMU
     // may allow one instance per process); with debug logging on, of which
     // it keeps only the name of a refused parameter
@@ -308,7 +319,7 @@ void Foam::fmuConnectorCore::checkParameters
     {
         fmuImport::Instance probe
         (
-            *fmu_,
+            fmu_,
             restraintName_,
             [&refused]
             (
@@ -327,7 +338,7 @@ void Foam::fmuConnectorCore::checkParameters
         );
         probe.setupExperiment(startTime);
         probe.enterInitializationMode();
-        setParameters(probe, parameters);
+        set(probe);
         try
         {
             probe.exitInitializationMode();
@@ -349,7 +360,7 @@ void Foam::fmuConnectorCore::checkParameters
 
     // The refused parameter (an element, A.p[1], or its vector, A.p), and
     // the entry that sets it
-    for (const fmuImport::Variable& var : fmu_->modelDescription().variables)
+    for (const fmuImport::Variable& var : fmu_.modelDescription().variables)
     {
         const std::string base(var.name.substr(0, var.name.find('[')));
         if
@@ -386,7 +397,11 @@ void Foam::fmuConnectorCore::checkParameters
 }
 
 
-void Foam::fmuConnectorCore::checkRestoredParameters() const
+void Foam::fmuConnectorParameters::checkRestored
+(
+    fmuImport::Instance& instance,
+    const fileName& source
+) const
 {
     OStringStream changed;
 
@@ -405,14 +420,14 @@ void Foam::fmuConnectorCore::checkRestoredParameters() const
         os  << ')';
     };
 
-    for (const entry& e : parameters_)
+    for (const entry& e : dict_)
     {
         scalarList given;
         const std::vector<unsigned int> refs =
-            parameterRefs(parameters_, e, given);
+            this->refs(e, given);
 
         const fmuImport::Variable* var =
-            fmu_->hasVariable(e.keyword()) ? &fmu_->variable(e.keyword())
+            fmu_.hasVariable(e.keyword()) ? &fmu_.variable(e.keyword())
           : nullptr;
         const fmuImport::Type type = var ? var->type : fmuImport::Type::Real;
 
@@ -421,14 +436,14 @@ void Foam::fmuConnectorCore::checkRestoredParameters() const
         {
             case fmuImport::Type::Integer:
             case fmuImport::Type::Enumeration:
-                restored[0] = instance_->getInteger(refs)[0];
+                restored[0] = instance.getInteger(refs)[0];
                 break;
             case fmuImport::Type::Boolean:
-                restored[0] = instance_->getBoolean(refs)[0];
+                restored[0] = instance.getBoolean(refs)[0];
                 break;
             default:
             {
-                const std::vector<double> v = instance_->getReal(refs);
+                const std::vector<double> v = instance.getReal(refs);
                 std::copy(v.begin(), v.end(), restored.begin());
             }
         }
@@ -449,8 +464,8 @@ void Foam::fmuConnectorCore::checkRestoredParameters() const
     if (!changed.str().empty())
     {
         WarningInFunction
-            << where().c_str() << "parameters differ from the state the run"
-            << " restarts from (" << restoreSource_ << "):"
+            << where_.c_str() << "parameters differ from the state the run"
+            << " restarts from (" << source << "):"
             << changed.str().c_str() << nl
             << "    The FMU continues with the restored values; to apply the"
             << " dictionary's values, start the connector anew with"
