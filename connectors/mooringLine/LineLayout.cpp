@@ -61,8 +61,8 @@ double pointContact(double J, const LineLayout::Section& a,
     for (const LineLayout::Section* s : {&a, &b}) {
         if (s->w > 0.0 && s->diameter > 0.0) {
             const double r = s->diameter / s->w;
-            widthPerWeight = widthPerWeight > 0.0 ? std::min(widthPerWeight, r)
-                                                  : r;
+            widthPerWeight
+                = widthPerWeight > 0.0 ? std::min(widthPerWeight, r) : r;
         }
     }
     return J > 0.0 ? J * widthPerWeight : 0.0;

@@ -220,7 +220,8 @@ MooringLine::MooringLine(const MooringLineParameters& p) : parameters_(p)
     requirePositive(lawName, "frictionVelocity", p.frictionVelocity, "m/s");
     requireNonNegative(lawName, "axialFrictionRatio", p.axialFrictionRatio,
                        "1");
-    if (!(p.staticFrictionScale >= 1.0 && std::isfinite(p.staticFrictionScale))) {
+    if (!(p.staticFrictionScale >= 1.0
+          && std::isfinite(p.staticFrictionScale))) {
         throw ParameterError(Refusal::outOfRange, lawName,
                              "staticFrictionScale", p.staticFrictionScale, "1",
                              "finite and >= 1");

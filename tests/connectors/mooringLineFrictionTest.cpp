@@ -32,7 +32,7 @@ MooringLineParameters groundedLine(double mu)
     namespace references = connectors::references;
     // d [m], w [kg/m], EA [N], axial damping [N.s], Cn, Ct, Can, Cat
     constexpr references::LineType rope {0.1, 50.0, 1e8, 1e6,
-                                         0.0, 0.0, 1.0, 0.5};
+                                         0.0, 0.0,  1.0, 0.5};
     MooringLineParameters p = references::lineOf(rope, 100.0, true, 10);
     p.seabedStiffness = 3e10;
     p.seabedFriction = mu;
@@ -55,8 +55,7 @@ double draggedLoad(const MooringLineParameters& p, const Vector3& direction,
         const double x = t < 2.0
             ? V * (t - 2.0 / pi * std::sin(0.5 * pi * t)) / 2.0
             : V * (t - 1.0);
-        const double v = t < 2.0 ? V * 0.5 * (1.0 - std::cos(0.5 * pi * t))
-                                 : V;
+        const double v = t < 2.0 ? V * 0.5 * (1.0 - std::cos(0.5 * pi * t)) : V;
         return std::pair<BodyKinematics, BodyKinematics> {
             body(Vector3(101.0, 0.0, 0.0) + x * direction, Matrix3::Identity(),
                  v * direction),
@@ -93,9 +92,9 @@ TEST(MooringLineFriction, KineticFrictionAlongAndAcrossTheLine)
         Vector3 direction;
         double expectedMu;
     };
-    for (const Case& c : {Case {0.0, 1.0, along, 0.0},
-                          Case {0.6, 1.0, along, 0.6},
-                          Case {0.6, 0.5, along, 0.3}}) {
+    for (const Case& c :
+         {Case {0.0, 1.0, along, 0.0}, Case {0.6, 1.0, along, 0.6},
+          Case {0.6, 0.5, along, 0.3}}) {
         MooringLineParameters p = groundedLine(c.mu);
         p.axialFrictionRatio = c.ratio;
         const double load = draggedLoad(p, c.direction, 0.05);
@@ -159,8 +158,8 @@ TEST(MooringLineFriction, AClumpWeightSlidesWithItsWeight)
             p, across ? Vector3::UnitY() : Vector3::UnitX(), 0.05);
         const double expected = -mu * (p.weight() * (100.0 - 10.0) + J);
         std::cout << "clump dragged " << (across ? "across" : "along")
-                  << ": loads " << load << " N, -mu (w (L - l) + J) = "
-                  << expected << " N\n";
+                  << ": loads " << load
+                  << " N, -mu (w (L - l) + J) = " << expected << " N\n";
         EXPECT_NEAR(load, expected, 1e-6 * std::abs(expected));
     }
 }

@@ -160,12 +160,12 @@ ClumpErrors clumpAgainstCatenary(int perSection, double kb, double x)
     const ClumpErrors e {c.joints[0][2] - d.joints[0][2],
                          d.joints[0][0] - c.joints[0][0],
                          d.fairleadTension / c.fairleadTension - 1.0};
-    std::cout << "span " << x << " m, kb " << kb << " Pa/m, N = "
-              << perSection << " a section: the clump " << e.sink
-              << " m deep, " << e.x << " m along; fairlead tension "
-              << d.fairleadTension << " N, catenary " << c.fairleadTension
-              << " N (" << e.fairlead << "); grounded " << d.groundedLength
-              << " m, catenary " << c.solution.groundedLength << " m\n";
+    std::cout << "span " << x << " m, kb " << kb << " Pa/m, N = " << perSection
+              << " a section: the clump " << e.sink << " m deep, " << e.x
+              << " m along; fairlead tension " << d.fairleadTension
+              << " N, catenary " << c.fairleadTension << " N (" << e.fairlead
+              << "); grounded " << d.groundedLength << " m, catenary "
+              << c.solution.groundedLength << " m\n";
     return e;
 }
 
@@ -198,9 +198,8 @@ TEST(MooringLineQuasiStatic, AClumpOnTheSeabedConvergesAtSecondOrder)
         if (N > 20) {
             const double tension = observedOrder(last.fairlead, e.fairlead);
             const double along = observedOrder(last.x, e.x);
-            std::cout << "observed order at N = " << N
-                      << ": fairlead tension " << tension << ", clump's place "
-                      << along << "\n";
+            std::cout << "observed order at N = " << N << ": fairlead tension "
+                      << tension << ", clump's place " << along << "\n";
             EXPECT_GT(tension, 1.9) << N;
             EXPECT_GT(along, 1.9) << N;
         }
@@ -248,8 +247,7 @@ TEST(MooringLineQuasiStatic, LineNodesInContactConvergeAtSecondOrder)
             clumpAgainstCatenary(N, 3e9, x);
         }
         const ClumpErrors fine = clumpAgainstCatenary(160, 3e9, x);
-        const double order
-            = observedOrder(coarse.fairlead, fine.fairlead, 8.0);
+        const double order = observedOrder(coarse.fairlead, fine.fairlead, 8.0);
         std::cout << "span " << x << " m: observed order from N = 20 to 160 "
                   << order << "\n";
         EXPECT_GT(order, 1.7) << x;
