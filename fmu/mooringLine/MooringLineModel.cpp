@@ -163,8 +163,8 @@ const Scalar scalars[] = {
      "(freeSurface = 1) and the top of the current profile",
      0.0, &ScalarBlocks::waterLevel},
     {"seabedFriction", "1",
-     "seabed Coulomb friction coefficient (axial and transverse), >= 0 "
-     "(0: none)",
+     "seabed Coulomb friction coefficient across the line (along it "
+     "axialFrictionRatio times it), >= 0 (0: none)",
      0.0, &ScalarBlocks::seabedFriction},
     {"frictionVelocity", "m/s",
      "speed below which the seabed friction is regularised (proportional to "
