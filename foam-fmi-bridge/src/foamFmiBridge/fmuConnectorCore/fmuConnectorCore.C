@@ -130,56 +130,6 @@ void Foam::fmuConnectorCore::doStep(const scalar t, const scalar deltaT)
 }
 
 
-// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
-
-Foam::word Foam::fmuConnectorCore::registryName(const word& restraintName)
-{
-    return typeName + '.' + restraintName;
-}
-
-
-Foam::IOobject Foam::fmuConnectorCore::registryIO
-(
-    const Time& runTime,
-    const word& restraintName
-)
-{
-    return IOobject
-    (
-        registryName(restraintName),
-        runTime.timeName(),
-        runTime,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-}
-
-
-Foam::fmuConnectorCore* Foam::fmuConnectorCore::find
-(
-    const objectRegistry& obr,
-    const word& restraintName
-)
-{
-    return obr.time().getObjectPtr<fmuConnectorCore>
-    (
-        registryName(restraintName)
-    );
-}
-
-
-Foam::wordList Foam::fmuConnectorCore::names(const objectRegistry& obr)
-{
-    wordList names(obr.time().sortedNames<fmuConnectorCore>());
-    for (word& name : names)
-    {
-        name = name.substr(typeName.size() + 1);
-    }
-    return names;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fmuConnectorCore::fmuConnectorCore
