@@ -166,8 +166,23 @@ done
 import re
 import sys
 
+import os
+
+# v1912 restarts into the same time steps: the runs agree to round-off
+# (below 1e-5 m and 1e-5 of the orientation matrix at 3 s).
 RESTART_TOL = 1e-5
 RESTART_ROT = 1e-5
+if int(os.environ.get("FOAM_API", "1912")) >= 2312:
+    # v2312's overInterDyMFoam sees a larger Courant number at the restart
+    # than the uninterrupted run at the same time (interface Courant number
+    # 2.90 against 0.38 at 1.5 s, at a fringe cell by the free surface), so
+    # the restart takes other steps (0.0035 s against 0.0082 s first); on
+    # their different steps the two runs part by 9.2e-5 m and 2e-4 at 3 s
+    # (docs/openfoam-versions.md). A motion state not restored would start
+    # the buoy from rest where it floats, centimetres away (it moves 5 cm
+    # in the waves)
+    RESTART_TOL = 3e-4
+    RESTART_ROT = 1e-3
 
 def last(log):
     text = open(log).read()

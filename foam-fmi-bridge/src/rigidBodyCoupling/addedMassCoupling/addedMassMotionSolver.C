@@ -26,7 +26,17 @@ Foam::addedMassMotionSolver::addedMassMotionSolver
     stateName_(stateName),
     stateDescription_(stateDescription),
     coupling_(type, refCast<const fvMesh>(mesh))
-{}
+{
+    // Written at every write time, whichever mesh constructed the solver:
+    // v2312's dynamicMotionSolverListFvMesh (and so dynamicOversetFvMesh)
+    // hands a dynamicMeshDict without "solvers" to its one motion solver
+    // as NO_WRITE, and the motion state would never reach uniform/
+    #if OPENFOAM >= 2206
+    writeOpt(IOobject::AUTO_WRITE);
+    #else
+    writeOpt() = IOobject::AUTO_WRITE;
+    #endif
+}
 
 
 // * * * * * * * * * * * * * Protected Member Functions * * * * * * * * * * * //
