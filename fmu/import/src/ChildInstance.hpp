@@ -69,7 +69,7 @@ public:
                                 bool mayDiscard) override;
     double lastSuccessfulTime() override;
     std::string lastMessage() const override { return lastMessage_; }
-    void* getState() override;
+    void* getState(void* reuse) override;
     void setState(void* state) override;
     void freeState(void* state) noexcept override;
     std::vector<char> serializeState(void* state) override;

@@ -149,10 +149,12 @@ double ChildInstance::lastSuccessfulTime()
 }
 
 // A state is a number the child knows it by, chosen here, so that saving
-// one needs no reply.
-void* ChildInstance::getState()
+// one needs no reply; saved again under its number, the child overwrites it.
+void* ChildInstance::getState(void* reuse)
 {
-    const std::uint64_t id = ++nextState_;
+    const std::uint64_t id = reuse
+        ? std::uint64_t(reinterpret_cast<std::uintptr_t>(reuse))
+        : ++nextState_;
     request(Op::getState, time, !deferred()).put(id).finish();
     if (!deferred())
         exchange();

@@ -190,10 +190,20 @@ bool Instance::State::valid() const
 Instance::State Instance::getState()
 {
     State s;
-    s.state_ = impl_->getState();
+    s.state_ = impl_->getState(nullptr);
     s.owner_ = impl_;
     s.time_ = impl_->time;
     return s;
+}
+
+void Instance::getState(State& state)
+{
+    if (!state.valid() || state.owner_ != impl_) {
+        state = getState();
+        return;
+    }
+    state.state_ = impl_->getState(state.state_);
+    state.time_ = impl_->time;
 }
 
 void Instance::setState(const State& state)

@@ -67,8 +67,10 @@ struct Instance::Impl {
     virtual double lastSuccessfulTime() = 0;
     virtual std::string lastMessage() const = 0;
 
-    // FMU states: handles that only the Impl that made them understands
-    virtual void* getState() = 0;
+    // FMU states: handles that only the Impl that made them understands;
+    // getState overwrites reuse, a handle it made, or makes a new one
+    // (nullptr)
+    virtual void* getState(void* reuse) = 0;
     virtual void setState(void* state) = 0;
     virtual void freeState(void* state) noexcept = 0;
     virtual std::vector<char> serializeState(void* state) = 0;

@@ -364,11 +364,11 @@ double LocalInstance::lastSuccessfulTime()
     return t;
 }
 
-void* LocalInstance::getState()
+void* LocalInstance::getState(void* reuse)
 {
     if (v3_)
-        return getState3();
-    fmi2FMUstate raw = nullptr;
+        return getState3(reuse);
+    fmi2FMUstate raw = reuse;
     check(call("fmi2GetFMUstate", time, api().GetFMUstate, component_, &raw),
           "fmi2GetFMUstate", time);
     return raw;

@@ -54,7 +54,7 @@ public:
                                 bool mayDiscard) override;
     double lastSuccessfulTime() override;
     std::string lastMessage() const override { return lastNotice_; }
-    void* getState() override;
+    void* getState(void* reuse) override;
     void setState(void* state) override;
     void freeState(void* state) noexcept override;
     std::vector<char> serializeState(void* state) override;
@@ -86,7 +86,7 @@ private:
     Instance::StepResult doStep3(double currentTime, double stepSize,
                                  bool noSetFMUStatePriorToCurrentPoint,
                                  bool mayDiscard);
-    void* getState3();
+    void* getState3(void* reuse);
     void setState3(void* state);
     void freeState3(void* state) noexcept;
     std::vector<char> serializeState3(void* state);

@@ -210,12 +210,13 @@ public:
         return total - stateSave(n);
     }
 
-    //- Seconds per save of the FMU state, as within an evaluation: with the
-    //  floating-point traps masked once around it (the evaluation's cost)
+    //- Seconds per save of the FMU state, as within an evaluation: into
+    //  the state saved before, with the floating-point traps masked once
+    //  around it (the evaluation's cost)
     scalar stateSave(const label n)
     {
         const fmuImport::MaskFpTraps masked;
-        return timeCalls(n, [&](label) { state_ = rawInstance_.getState(); });
+        return timeCalls(n, [&](label) { rawInstance_.getState(state_); });
     }
 
     //- Seconds per row of outputs on this thread, and the CPU seconds

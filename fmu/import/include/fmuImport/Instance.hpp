@@ -119,6 +119,11 @@ public:
     };
 
     State getState();
+    // The same into state: a state of this instance is overwritten where it
+    // is (fmi2GetFMUstate given it: FMI 2.0 and 3.0 let the FMU reuse a
+    // state it returned, which spares a new one and the fmi2FreeFMUstate
+    // of the one it replaces), any other is replaced by a new one.
+    void getState(State& state);
     void setState(
         const State& state); // restores time() too, when the state carries it
     std::vector<char> serializeState(const State& state);
