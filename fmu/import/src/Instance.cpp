@@ -85,7 +85,16 @@ void Instance::setReal(const std::vector<unsigned int>& vrs,
 
 std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
 {
-    return impl_->getReal(vrs);
+    std::vector<double> values(vrs.size());
+    impl_->getReal(vrs, values.data());
+    return values;
+}
+
+void Instance::getReal(const std::vector<unsigned int>& vrs,
+                       std::vector<double>& values)
+{
+    values.resize(vrs.size());
+    impl_->getReal(vrs, values.data());
 }
 
 void Instance::setInteger(const std::vector<unsigned int>& vrs,

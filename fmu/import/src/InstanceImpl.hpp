@@ -39,7 +39,8 @@ struct Instance::Impl {
     virtual void setReal(const std::vector<unsigned int>& vrs,
                          const std::vector<double>& values)
         = 0;
-    virtual std::vector<double> getReal(const std::vector<unsigned int>& vrs)
+    // The values of vrs into values, which has room for them
+    virtual void getReal(const std::vector<unsigned int>& vrs, double* values)
         = 0;
     virtual void setInteger(const std::vector<unsigned int>& vrs,
                             const std::vector<int>& values)

@@ -243,15 +243,14 @@ void LocalInstance::setReal(const std::vector<unsigned int>& vrs,
           "fmi2SetReal", time);
 }
 
-std::vector<double> LocalInstance::getReal(const std::vector<unsigned int>& vrs)
+void LocalInstance::getReal(const std::vector<unsigned int>& vrs,
+                            double* values)
 {
     if (v3_)
-        return getReal3(vrs);
-    std::vector<double> values(vrs.size());
+        return getReal3(vrs, values);
     check(call("fmi2GetReal", time, api().GetReal, component_, vrs.data(),
-               vrs.size(), values.data()),
+               vrs.size(), values),
           "fmi2GetReal", time);
-    return values;
 }
 
 void LocalInstance::setInteger(const std::vector<unsigned int>& vrs,

@@ -38,7 +38,8 @@ public:
     void reset() override;
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values) override;
-    std::vector<double> getReal(const std::vector<unsigned int>& vrs) override;
+    void getReal(const std::vector<unsigned int>& vrs,
+                 double* values) override;
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values) override;
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs) override;
@@ -73,7 +74,7 @@ private:
     void enterInitializationMode3();
     void setReal3(const std::vector<unsigned int>& vrs,
                   const std::vector<double>& values);
-    std::vector<double> getReal3(const std::vector<unsigned int>& vrs);
+    void getReal3(const std::vector<unsigned int>& vrs, double* values);
     void setInteger3(const std::vector<unsigned int>& vrs,
                      const std::vector<int>& values);
     std::vector<int> getInteger3(const std::vector<unsigned int>& vrs);

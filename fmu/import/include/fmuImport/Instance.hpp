@@ -59,6 +59,10 @@ public:
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values);
     std::vector<double> getReal(const std::vector<unsigned int>& vrs);
+    // The same into values, resized to vrs.size(): a caller that reads the
+    // same values every step allocates nothing after the first.
+    void getReal(const std::vector<unsigned int>& vrs,
+                 std::vector<double>& values);
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values);
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs);

@@ -197,7 +197,8 @@ void Foam::fmuConnectorCore::setMassProperties
 
 void Foam::fmuConnectorCore::readOutputs()
 {
-    const std::vector<double> values = instance_->getReal(outputRefs_);
+    const std::vector<double>& values = outputValues_;
+    instance_->getReal(outputRefs_, outputValues_);
 
     forAll(outputs_, i)
     {
