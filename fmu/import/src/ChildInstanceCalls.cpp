@@ -78,8 +78,8 @@ void ChildInstance::getReal(const std::vector<unsigned int>& vrs,
     const auto copy = [&](const std::vector<double>& got) {
         if (got.size() != vrs.size())
             throw Error("fmi2GetReal in the process of FMU '" + fmuPath
-                        + "', instance '" + name + "': "
-                        + std::to_string(got.size()) + " values for "
+                        + "', instance '" + name
+                        + "': " + std::to_string(got.size()) + " values for "
                         + std::to_string(vrs.size()) + " value references");
         std::copy(got.begin(), got.end(), values);
     };

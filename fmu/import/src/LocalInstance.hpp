@@ -38,8 +38,7 @@ public:
     void reset() override;
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values) override;
-    void getReal(const std::vector<unsigned int>& vrs,
-                 double* values) override;
+    void getReal(const std::vector<unsigned int>& vrs, double* values) override;
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values) override;
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs) override;
