@@ -49,7 +49,7 @@ def main(argv):
     rows = {}
     for line in out.splitlines():
         parts = line.split()
-        if len(parts) == 10 and parts[0] in ("builtin", "fmu", "fmuProcess", "fmu3", "fmu3Process"):
+        if len(parts) == 11 and parts[0] in ("builtin", "fmu", "fmuProcess", "fmu3", "fmu3Process"):
             rows[parts[0]] = [float(x) for x in parts[2:]]
     b, f, p = rows["builtin"], rows["fmu"], rows["fmuProcess"]
     f3, p3 = rows["fmu3"], rows["fmu3Process"]
@@ -64,7 +64,8 @@ def main(argv):
     print("writer thread it includes the writer's share of the solver's core.")
     print("The FMU's new step, part by part (each timed on its own, same rounds):")
     print(f"  evaluation (inputs, fmi2DoStep, outputs) {f[2]:6.0f}")
-    print(f"  state save (fmi2GetFMUstate)             {f[3]:6.0f}")
+    print(f"    of which the traps masked and restored {f[8]:6.0f}  (x87 and SSE, once)")
+    print(f"  state save (fmi2GetFMUstate, reused)     {f[3]:6.0f}")
     print(f"  row of outputs (17 values), solver       {f[4]:6.0f}")
     print(f"  sum                                      {sum(f[2:5]):6.0f}")
     print(f"  row of outputs, CPU of all threads       {f[6]:6.0f}  (formatted and written)")
