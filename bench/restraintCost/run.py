@@ -70,10 +70,13 @@ def main(argv):
     print(f"  sum                                      {sum(f[2:5]):6.0f}")
     print(f"  row of outputs, CPU of all threads       {f[6]:6.0f}  (formatted and written)")
     ratio = f[0] / b[0]
+    thread = f[7] / b[7]
+    verdict = {True: "met", False: "NOT met"}
     print(f"Goal: a new step within {NEW_STEP_GOAL}x of the built-in restraint")
-    print(f"  new step {ratio:.2f}x: {'met' if ratio <= NEW_STEP_GOAL else 'NOT met'}"
-          f" (the solver's wait; CPU of all threads {f[5] / b[5]:.2f}x,"
-          f" of the solver thread {f[7] / b[7]:.2f}x)")
+    print(f"  the solver's wait {ratio:.2f}x: {verdict[ratio <= NEW_STEP_GOAL]}"
+          f" (CPU of all threads {f[5] / b[5]:.2f}x)")
+    print(f"  the solver thread's CPU {thread:.2f}x: {verdict[thread <= NEW_STEP_GOAL]}"
+          " (its wait when a core is free for the writer thread)")
     print("A repeated solve restores the state, steps the FMU and reads its outputs.")
     print("The solver copies a step's row (the time and 17 values) into a ring; the")
     print("process's writer thread formats it (std::to_chars, shortest round trip) and")
