@@ -195,34 +195,42 @@ void ConnectorFmuModel::writeOutputs(double* values,
            r.B.f_W[2],       r.B.m_Ko_W[0], r.B.m_Ko_W[1], r.B.m_Ko_W[2],
            r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
            r.dissipatedPower};
-    const auto value = [&](std::size_t i) {
-        return i < interfaceOutputCount
-            ? interface[i]
-            : outputs.extra[i - interfaceOutputCount];
+    // Each group checked in one pass, and searched for the value to name
+    // only when one is not finite
+    const auto finite = [](const double* v, std::size_t n) {
+        bool all = true;
+        for (std::size_t i = 0; i < n; ++i) {
+            all &= std::isfinite(v[i]);
+        }
+        return all;
     };
-    const std::size_t count = interfaceOutputCount + extraCount_;
     const std::vector<ScalarVariable>& variables
         = this->variables().variables();
-    const auto refuse = [&](const char* kind, fmi2ValueReference vr, double v) {
-        throw std::range_error(model + ": " + kind + " " + variables[vr].name
-                               + " = " + formatDouble(v)
+    const auto refuse = [&](const char* kind, fmi2ValueReference first,
+                            const double* v, std::size_t n) {
+        const std::size_t i = std::size_t(
+            std::find_if(v, v + n, [](double x) { return !std::isfinite(x); })
+            - v);
+        throw std::range_error(model + ": " + kind + " "
+                               + variables[first + i].name + " = "
+                               + formatDouble(v[i])
                                + " is not finite (inputs or parameters too "
                                  "large)");
     };
-    for (std::size_t i = 0; i < count; ++i) {
-        if (!std::isfinite(value(i))) {
-            refuse("output", firstOutput_ + fmi2ValueReference(i), value(i));
-        }
+    if (!finite(interface, interfaceOutputCount)) {
+        refuse("output", firstOutput_, interface, interfaceOutputCount);
     }
-    for (std::size_t i = 0; i < localCount_; ++i) {
-        if (!std::isfinite(outputs.locals[i])) {
-            refuse("local", firstLocal_ + fmi2ValueReference(i),
-                   outputs.locals[i]);
-        }
+    if (!finite(outputs.extra.data(), extraCount_)) {
+        refuse("output",
+               firstOutput_ + fmi2ValueReference(interfaceOutputCount),
+               outputs.extra.data(), extraCount_);
     }
-    for (std::size_t i = 0; i < count; ++i) {
-        values[firstOutput_ + i] = value(i);
+    if (!finite(outputs.locals.data(), localCount_)) {
+        refuse("local", firstLocal_, outputs.locals.data(), localCount_);
     }
+    double* out = std::copy(interface, interface + interfaceOutputCount,
+                            values + firstOutput_);
+    std::copy(outputs.extra.begin(), outputs.extra.end(), out);
     std::copy(outputs.locals.begin(), outputs.locals.end(),
               values + firstLocal_);
 }

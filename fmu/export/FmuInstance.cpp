@@ -193,16 +193,23 @@ void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
     }
+    const double* values = values_.data();
     for (std::size_t i = 0; i < n; ++i) {
-        value[i] = values_[vr[i]];
+        value[i] = values[vr[i]];
     }
 }
 
 void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
                           const fmi2Real value[])
 {
+    // Every value reference is checked before any value is set; the
+    // values are then copied in a loop that writes nothing else
+    bool parameters = false;
     for (std::size_t i = 0; i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);
+        if (access == RealAccess::input) {
+            continue;
+        }
         if (access == RealAccess::output) {
             throw UsageError("variable " + describe(vr[i])
                              + " is an output and cannot be set");
@@ -217,12 +224,13 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
                              + " is fixed: set it before " + fmiPrefix_
                              + "ExitInitializationMode");
         }
+        parameters = parameters || access == RealAccess::parameter;
     }
+    double* values = values_.data();
     for (std::size_t i = 0; i < n; ++i) {
-        values_[vr[i]] = value[i];
-        parametersApplied_
-            = parametersApplied_ && realAccess_[vr[i]] != RealAccess::parameter;
+        values[vr[i]] = value[i];
     }
+    parametersApplied_ = parametersApplied_ && !parameters;
     outputsValid_ = outputsValid_ && n == 0;
 }
 

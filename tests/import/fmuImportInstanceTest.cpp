@@ -119,6 +119,30 @@ TEST_P(LagInstance, StateRoundTripRestoresValuesAndTime)
     EXPECT_EQ(lag.getInteger({vr("stepCount")})[0], 1);
 }
 
+TEST_P(LagInstance, StateSavedAgainOverwritesTheSavedOne)
+{
+    fmuImport::Instance lag = started(0.3, 1.0);
+    fmuImport::Instance::State saved;
+    lag.getState(saved); // empty: a new state
+    ASSERT_TRUE(saved.valid());
+    lag.doStep(0.0, 0.1);
+    lag.getState(saved); // the same state, overwritten
+    const double ySaved = y(lag);
+
+    lag.setReal({vr("u")}, {-4.0});
+    lag.doStep(0.1, 0.1);
+    lag.setState(saved);
+    EXPECT_EQ(y(lag), ySaved);
+    EXPECT_DOUBLE_EQ(lag.time(), 0.1);
+    EXPECT_EQ(lag.getInteger({vr("stepCount")})[0], 1);
+
+    // A state of another instance is replaced by one of this instance
+    fmuImport::Instance other = started(0.3, 1.0);
+    other.getState(saved);
+    EXPECT_NO_THROW(other.setState(saved));
+    EXPECT_THROW(lag.setState(saved), fmuImport::Error);
+}
+
 TEST_P(LagInstance, SerializedStateMovesToAnotherInstance)
 {
     fmuImport::Instance first = started(0.3, 1.0);

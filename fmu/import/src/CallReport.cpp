@@ -58,6 +58,16 @@ bool marked(std::uint64_t count)
     return count % 2 == 1;
 }
 
+// One call more begun or ended. Calls come from one thread at a time, and
+// the logger callback inside a call on the same thread: the count has one
+// writer, and a load and a store do what fetch_add did, without its locked
+// instruction. The watchdog thread and the signal handler only read it.
+void advanceCount()
+{
+    current.count.store(current.count.load(std::memory_order_relaxed) + 1,
+                        std::memory_order_release);
+}
+
 // The call in progress: its function, time and site, or false when no
 // call is marked. Async-signal-safe.
 struct MarkedCallText {
@@ -217,25 +227,25 @@ MarkedCall::MarkedCall(const CallSite& site, const char* function, double time)
     current.site.store(&site, std::memory_order_relaxed);
     current.function.store(function, std::memory_order_relaxed);
     current.time.store(time, std::memory_order_relaxed);
-    current.count.fetch_add(1, std::memory_order_release);
+    advanceCount();
 }
 
 MarkedCall::~MarkedCall()
 {
-    current.count.fetch_add(1, std::memory_order_release);
+    advanceCount();
 }
 
 UnmarkedCallback::UnmarkedCallback()
     : wasMarked_(marked(current.count.load(std::memory_order_relaxed)))
 {
     if (wasMarked_)
-        current.count.fetch_add(1, std::memory_order_release);
+        advanceCount();
 }
 
 UnmarkedCallback::~UnmarkedCallback()
 {
     if (wasMarked_)
-        current.count.fetch_add(1, std::memory_order_release);
+        advanceCount();
 }
 
 void watchCalls(double timeout)

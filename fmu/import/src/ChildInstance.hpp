@@ -53,7 +53,7 @@ public:
     void reset() override;
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values) override;
-    std::vector<double> getReal(const std::vector<unsigned int>& vrs) override;
+    void getReal(const std::vector<unsigned int>& vrs, double* values) override;
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values) override;
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs) override;
@@ -69,7 +69,7 @@ public:
                                 bool mayDiscard) override;
     double lastSuccessfulTime() override;
     std::string lastMessage() const override { return lastMessage_; }
-    void* getState() override;
+    void* getState(void* reuse) override;
     void setState(void* state) override;
     void freeState(void* state) noexcept override;
     std::vector<char> serializeState(void* state) override;

@@ -4,7 +4,9 @@
 // but the FMU's state.
 #include "ChildInstance.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <string>
 
 namespace fmuImport {
 
@@ -70,18 +72,27 @@ void ChildInstance::setReal(const std::vector<unsigned int>& vrs,
     setValues(Op::setReal, vrs, values);
 }
 
-std::vector<double> ChildInstance::getReal(const std::vector<unsigned int>& vrs)
+void ChildInstance::getReal(const std::vector<unsigned int>& vrs,
+                            double* values)
 {
+    const auto copy = [&](const std::vector<double>& got) {
+        if (got.size() != vrs.size())
+            throw Error("fmi2GetReal in the process of FMU '" + fmuPath
+                        + "', instance '" + name
+                        + "': " + std::to_string(got.size()) + " values for "
+                        + std::to_string(vrs.size()) + " value references");
+        std::copy(got.begin(), got.end(), values);
+    };
     if (stepDone_) {
         const bool read = haveRead_ && vrs == readAfterStep_;
         stepDone_ = haveRead_ = false;
-        readAfterStep_ = vrs;
         if (read) {
             lastMessage_ = readMessage_;
-            return readValues_;
+            return copy(readValues_);
         }
+        readAfterStep_ = vrs;
     }
-    return getValues(Op::getReal, vrs).getVector<double>();
+    copy(getValues(Op::getReal, vrs).getVector<double>());
 }
 
 void ChildInstance::setInteger(const std::vector<unsigned int>& vrs,
@@ -149,10 +160,12 @@ double ChildInstance::lastSuccessfulTime()
 }
 
 // A state is a number the child knows it by, chosen here, so that saving
-// one needs no reply.
-void* ChildInstance::getState()
+// one needs no reply; saved again under its number, the child overwrites it.
+void* ChildInstance::getState(void* reuse)
 {
-    const std::uint64_t id = ++nextState_;
+    const std::uint64_t id = reuse
+        ? std::uint64_t(reinterpret_cast<std::uintptr_t>(reuse))
+        : ++nextState_;
     request(Op::getState, time, !deferred()).put(id).finish();
     if (!deferred())
         exchange();

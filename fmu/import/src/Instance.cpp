@@ -85,7 +85,16 @@ void Instance::setReal(const std::vector<unsigned int>& vrs,
 
 std::vector<double> Instance::getReal(const std::vector<unsigned int>& vrs)
 {
-    return impl_->getReal(vrs);
+    std::vector<double> values(vrs.size());
+    impl_->getReal(vrs, values.data());
+    return values;
+}
+
+void Instance::getReal(const std::vector<unsigned int>& vrs,
+                       std::vector<double>& values)
+{
+    values.resize(vrs.size());
+    impl_->getReal(vrs, values.data());
 }
 
 void Instance::setInteger(const std::vector<unsigned int>& vrs,
@@ -190,10 +199,20 @@ bool Instance::State::valid() const
 Instance::State Instance::getState()
 {
     State s;
-    s.state_ = impl_->getState();
+    s.state_ = impl_->getState(nullptr);
     s.owner_ = impl_;
     s.time_ = impl_->time;
     return s;
+}
+
+void Instance::getState(State& state)
+{
+    if (!state.valid() || state.owner_ != impl_) {
+        state = getState();
+        return;
+    }
+    state.state_ = impl_->getState(state.state_);
+    state.time_ = impl_->time;
 }
 
 void Instance::setState(const State& state)

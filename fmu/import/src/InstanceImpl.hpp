@@ -39,7 +39,8 @@ struct Instance::Impl {
     virtual void setReal(const std::vector<unsigned int>& vrs,
                          const std::vector<double>& values)
         = 0;
-    virtual std::vector<double> getReal(const std::vector<unsigned int>& vrs)
+    // The values of vrs into values, which has room for them
+    virtual void getReal(const std::vector<unsigned int>& vrs, double* values)
         = 0;
     virtual void setInteger(const std::vector<unsigned int>& vrs,
                             const std::vector<int>& values)
@@ -67,8 +68,10 @@ struct Instance::Impl {
     virtual double lastSuccessfulTime() = 0;
     virtual std::string lastMessage() const = 0;
 
-    // FMU states: handles that only the Impl that made them understands
-    virtual void* getState() = 0;
+    // FMU states: handles that only the Impl that made them understands;
+    // getState overwrites reuse, a handle it made, or makes a new one
+    // (nullptr)
+    virtual void* getState(void* reuse) = 0;
     virtual void setState(void* state) = 0;
     virtual void freeState(void* state) noexcept = 0;
     virtual std::vector<char> serializeState(void* state) = 0;

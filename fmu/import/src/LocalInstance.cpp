@@ -243,15 +243,14 @@ void LocalInstance::setReal(const std::vector<unsigned int>& vrs,
           "fmi2SetReal", time);
 }
 
-std::vector<double> LocalInstance::getReal(const std::vector<unsigned int>& vrs)
+void LocalInstance::getReal(const std::vector<unsigned int>& vrs,
+                            double* values)
 {
     if (v3_)
-        return getReal3(vrs);
-    std::vector<double> values(vrs.size());
+        return getReal3(vrs, values);
     check(call("fmi2GetReal", time, api().GetReal, component_, vrs.data(),
-               vrs.size(), values.data()),
+               vrs.size(), values),
           "fmi2GetReal", time);
-    return values;
 }
 
 void LocalInstance::setInteger(const std::vector<unsigned int>& vrs,
@@ -364,11 +363,11 @@ double LocalInstance::lastSuccessfulTime()
     return t;
 }
 
-void* LocalInstance::getState()
+void* LocalInstance::getState(void* reuse)
 {
     if (v3_)
-        return getState3();
-    fmi2FMUstate raw = nullptr;
+        return getState3(reuse);
+    fmi2FMUstate raw = reuse;
     check(call("fmi2GetFMUstate", time, api().GetFMUstate, component_, &raw),
           "fmi2GetFMUstate", time);
     return raw;

@@ -38,7 +38,7 @@ public:
     void reset() override;
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values) override;
-    std::vector<double> getReal(const std::vector<unsigned int>& vrs) override;
+    void getReal(const std::vector<unsigned int>& vrs, double* values) override;
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values) override;
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs) override;
@@ -54,7 +54,7 @@ public:
                                 bool mayDiscard) override;
     double lastSuccessfulTime() override;
     std::string lastMessage() const override { return lastNotice_; }
-    void* getState() override;
+    void* getState(void* reuse) override;
     void setState(void* state) override;
     void freeState(void* state) noexcept override;
     std::vector<char> serializeState(void* state) override;
@@ -73,7 +73,7 @@ private:
     void enterInitializationMode3();
     void setReal3(const std::vector<unsigned int>& vrs,
                   const std::vector<double>& values);
-    std::vector<double> getReal3(const std::vector<unsigned int>& vrs);
+    void getReal3(const std::vector<unsigned int>& vrs, double* values);
     void setInteger3(const std::vector<unsigned int>& vrs,
                      const std::vector<int>& values);
     std::vector<int> getInteger3(const std::vector<unsigned int>& vrs);
@@ -86,7 +86,7 @@ private:
     Instance::StepResult doStep3(double currentTime, double stepSize,
                                  bool noSetFMUStatePriorToCurrentPoint,
                                  bool mayDiscard);
-    void* getState3();
+    void* getState3(void* reuse);
     void setState3(void* state);
     void freeState3(void* state) noexcept;
     std::vector<char> serializeState3(void* state);

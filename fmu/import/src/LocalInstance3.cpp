@@ -172,9 +172,9 @@ LocalInstance::doStep3(double currentTime, double stepSize,
     throw Error(s.str());
 }
 
-void* LocalInstance::getState3()
+void* LocalInstance::getState3(void* reuse)
 {
-    fmi3FMUState raw = nullptr;
+    fmi3FMUState raw = reuse;
     check(call("fmi3GetFMUState", time, api3().GetFMUState, component_, &raw),
           "fmi3GetFMUState", time);
     return raw;

@@ -4,6 +4,7 @@
 // types go through long double, Binary as hexadecimal text.
 #include "LocalInstance.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -67,17 +68,16 @@ std::vector<T> asked(const ElementPlan& p,
 
 } // namespace
 
-std::vector<double>
-LocalInstance::getReal3(const std::vector<unsigned int>& vrs)
+void LocalInstance::getReal3(const std::vector<unsigned int>& vrs,
+                             double* values)
 {
     const ElementPlan& p = plan(vrs, Type::Real, "fmi3GetFloat64");
-    std::vector<double> values(vrs.size());
     if (p.direct && p.groups[0].typeName == "Float64") {
         const ElementPlan::Group& g = p.groups[0];
         check(call("fmi3GetFloat64", time, api3().GetFloat64, component_,
-                   g.refs.data(), g.refs.size(), values.data(), g.count),
+                   g.refs.data(), g.refs.size(), values, g.count),
               "fmi3GetFloat64", time);
-        return values;
+        return;
     }
     std::vector<std::vector<double>> buffers;
     for (const ElementPlan::Group& g : p.groups) {
@@ -95,7 +95,8 @@ LocalInstance::getReal3(const std::vector<unsigned int>& vrs)
               "fmi3GetFloat32", time);
         buffers.back().assign(raw.begin(), raw.end());
     }
-    return asked(p, buffers);
+    const std::vector<double> got = asked(p, buffers);
+    std::copy(got.begin(), got.end(), values);
 }
 
 void LocalInstance::setReal3(const std::vector<unsigned int>& vrs,

@@ -106,7 +106,7 @@ void Requests::run(Op op, FrameReader& in, FrameWriter& out)
         return;
     }
     case Op::getState:
-        states_[in.get<std::uint64_t>()] = i.getState();
+        i.getState(states_[in.get<std::uint64_t>()]);
         break;
     case Op::setState:
         i.setState(state(in.get<std::uint64_t>()));

@@ -26,7 +26,10 @@ Description
     For an fmuConnector the first evaluation of a step is also split into
     its parts, each timed on its own in the same rounds: the evaluation
     (inputs set, FMU stepped, outputs read), the state save
-    (fmi2GetFMUstate) and the row of outputs (fmuConnectorOutput::record).
+    (fmi2GetFMUstate into the state saved before) and the row of outputs
+    (fmuConnectorOutput::record); and, within the evaluation, the switch of
+    the solver's floating-point traps to masked and back
+    (fmuImport::MaskFpTraps, once around the FMU calls).
 
     The times are the solver thread's, what a solver waits for. An
     fmuConnector's rows are formatted and written by the process's writer
@@ -210,12 +213,20 @@ public:
         return total - stateSave(n);
     }
 
-    //- Seconds per save of the FMU state, as within an evaluation: with the
-    //  floating-point traps masked once around it (the evaluation's cost)
+    //- Seconds per save of the FMU state, as within an evaluation: into
+    //  the state saved before, with the floating-point traps masked once
+    //  around it (the evaluation's cost)
     scalar stateSave(const label n)
     {
         const fmuImport::MaskFpTraps masked;
-        return timeCalls(n, [&](label) { state_ = rawInstance_.getState(); });
+        return timeCalls(n, [&](label) { rawInstance_.getState(state_); });
+    }
+
+    //- Seconds per switch of the floating-point traps to masked and back,
+    //  as an evaluation makes it once around its FMU calls
+    scalar trapMask(const label n)
+    {
+        return timeCalls(n, [](label) { const fmuImport::MaskFpTraps masked; });
     }
 
     //- Seconds per row of outputs on this thread, and the CPU seconds
@@ -313,6 +324,7 @@ int main(int argc, char *argv[])
     scalarList newStepCpu(restraints.size(), GREAT);
     scalarList newStepThreadCpu(restraints.size(), GREAT);
     scalarList outputCpu(restraints.size(), GREAT);
+    scalarList trapMask(restraints.size(), GREAT);
 
     for (label round = 0; round < nRounds; ++round)
     {
@@ -343,6 +355,7 @@ int main(int argc, char *argv[])
                 stateSave[i] = min(stateSave[i], parts[i].stateSave(nEval));
                 output[i] = min(output[i], parts[i].output(nEval, cpu));
                 outputCpu[i] = min(outputCpu[i], cpu);
+                trapMask[i] = min(trapMask[i], parts[i].trapMask(nEval));
             }
         }
     }
@@ -351,7 +364,8 @@ int main(int argc, char *argv[])
     // are the solver thread's; the cpu columns count every thread
     Info<< "restraint  type  new-step-ns  repeated-ns"
         << "  evaluation-ns  state-save-ns  output-ns"
-        << "  new-step-cpu-ns  output-cpu-ns  new-step-thread-cpu-ns" << nl;
+        << "  new-step-cpu-ns  output-cpu-ns  new-step-thread-cpu-ns"
+        << "  trap-mask-ns" << nl;
     forAll(restraints, i)
     {
         const bool split = parts.set(i);
@@ -362,7 +376,8 @@ int main(int argc, char *argv[])
             << (split ? 1e9*output[i] : 0) << ' '
             << 1e9*newStepCpu[i] << ' '
             << (split ? 1e9*outputCpu[i] : 0) << ' '
-            << 1e9*newStepThreadCpu[i] << nl;
+            << 1e9*newStepThreadCpu[i] << ' '
+            << (split ? 1e9*trapMask[i] : 0) << nl;
     }
     Info<< endl;
 

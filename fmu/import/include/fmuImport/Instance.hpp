@@ -59,6 +59,10 @@ public:
     void setReal(const std::vector<unsigned int>& vrs,
                  const std::vector<double>& values);
     std::vector<double> getReal(const std::vector<unsigned int>& vrs);
+    // The same into values, resized to vrs.size(): a caller that reads the
+    // same values every step allocates nothing after the first.
+    void getReal(const std::vector<unsigned int>& vrs,
+                 std::vector<double>& values);
     void setInteger(const std::vector<unsigned int>& vrs,
                     const std::vector<int>& values);
     std::vector<int> getInteger(const std::vector<unsigned int>& vrs);
@@ -119,6 +123,11 @@ public:
     };
 
     State getState();
+    // The same into state: a state of this instance is overwritten where it
+    // is (fmi2GetFMUstate given it: FMI 2.0 and 3.0 let the FMU reuse a
+    // state it returned, which spares a new one and the fmi2FreeFMUstate
+    // of the one it replaces), any other is replaced by a new one.
+    void getState(State& state);
     void setState(
         const State& state); // restores time() too, when the state carries it
     std::vector<char> serializeState(const State& state);

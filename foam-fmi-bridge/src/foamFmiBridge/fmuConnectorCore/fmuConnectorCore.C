@@ -319,7 +319,7 @@ void Foam::fmuConnectorCore::evaluate
         }
         if (newStep && initialised_ && canRollback_)
         {
-            stepStartState_ = instance_->getState();
+            instance_->getState(stepStartState_);
         }
         if (repeatedSolve)
         {
@@ -340,7 +340,7 @@ void Foam::fmuConnectorCore::evaluate
             }
             if (newStep && canRollback_)
             {
-                stepStartState_ = instance_->getState();
+                instance_->getState(stepStartState_);
             }
         }
 

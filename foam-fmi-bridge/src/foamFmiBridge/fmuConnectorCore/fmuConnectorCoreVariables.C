@@ -197,19 +197,30 @@ void Foam::fmuConnectorCore::setMassProperties
 
 void Foam::fmuConnectorCore::readOutputs()
 {
-    const std::vector<double> values = instance_->getReal(outputRefs_);
+    const std::vector<double>& values = outputValues_;
+    instance_->getReal(outputRefs_, outputValues_);
 
-    forAll(outputs_, i)
+    // Checked in one pass; the output to name is searched for only when
+    // one is not finite
+    bool finite = true;
+    for (const double v : values)
     {
-        if (!std::isfinite(values[i]))
-        {
-            FatalErrorInFunction
-                << where().c_str() << "output " << outputNames_[i]
-                << " is not finite (" << values[i] << ") at t = "
-                << stepEndTime_ << exit(FatalError);
-        }
-        outputs_[i] = values[i];
+        finite &= std::isfinite(v);
     }
+    if (!finite)
+    {
+        forAll(outputs_, i)
+        {
+            if (!std::isfinite(values[i]))
+            {
+                FatalErrorInFunction
+                    << where().c_str() << "output " << outputNames_[i]
+                    << " is not finite (" << values[i] << ") at t = "
+                    << stepEndTime_ << exit(FatalError);
+            }
+        }
+    }
+    std::copy(values.cbegin(), values.cend(), outputs_.begin());
     line_.readOutputs(*instance_);
 }
 

@@ -197,7 +197,7 @@ void Foam::fmuConnectorLine::readOutputs(fmuImport::Instance& instance)
 {
     if (!sectionRefs_.empty())
     {
-        sectionValues_ = instance.getReal(sectionRefs_);
+        instance.getReal(sectionRefs_, sectionValues_);
     }
 }
 
