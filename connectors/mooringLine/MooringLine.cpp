@@ -270,7 +270,7 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     std::vector<double>& y = work_.nodes; // its storage kept
     y = state.nodes;
     std::shared_ptr<const TrapezoidMatrix> newton = state.newton;
-    stepWork_ = 0.0;
+    stepEnergy_.clear(layout_.sections.size());
     try {
         if (integrator_) {
             integrator_->restart(state.time, state.nodes.data());

@@ -135,6 +135,12 @@ struct Snap {
     //  (MooringLine::stepWork), and the imbalance with it, work - energy
     //  change - dissipated energy [J]
     double stepWork = 0.0, stepImbalance = 0.0;
+    //- The law's energy account summed over the run (MooringLine::
+    //  stepEnergy), the change of kinetic + potential energy from its
+    //  outputs, and what the account leaves unexplained: its work less
+    //  that change less its dissipated energy [J]
+    LineEnergy account;
+    double accountChange = 0.0, accountImbalance = 0.0;
     //- first-harmonic amplitude of the fairlead tension [N]
     double harmonic = 0.0;
     bool finite = true;
@@ -174,10 +180,12 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
         }
         return out.loads.potentialEnergy + kinetic;
     };
-    Snap result;
     MooringLineState s = law.initialState(fairlead(0.0), B, 0.0);
     MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
     const double energy0 = energy(s, out);
+    const double outputEnergy0 = out.kineticEnergy + out.loads.potentialEnergy;
+    Snap result;
+    result.account.clear(p.sections.size() + 1);
     double power = 0.0, dissipation = out.loads.dissipatedPower;
     const int steps = int(std::lround(duration / h));
     const int perPeriod
@@ -191,6 +199,7 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
         const double newPower = -out.loads.A.f_W.dot(A.v_WKo_W);
         result.work += 0.5 * h * (power + newPower);
         result.stepWork += law.stepWork();
+        result.account += law.stepEnergy();
         result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
         result.dissipated
             += 0.5 * h * (dissipation + out.loads.dissipatedPower);
@@ -211,6 +220,10 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
     result.change = energy(s, out) - energy0;
     result.imbalance = result.work - result.change - result.dissipated;
     result.stepImbalance = result.stepWork - result.change - result.dissipated;
+    result.accountChange
+        = out.kineticEnergy + out.loads.potentialEnergy - outputEnergy0;
+    result.accountImbalance = result.account.work() - result.accountChange
+        - result.account.dissipated();
     if (periods > 1) {
         result.harmonic
             = 2.0 * std::hypot(re, im) / ((periods - 1) * perPeriod);

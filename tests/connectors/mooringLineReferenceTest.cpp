@@ -207,11 +207,14 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     // (4e-17 m, 4e-8 m at the coarse steps): measured within 0.002 pp
     // (lab) and 0.08 pp (OC4) of the fine step. CVODE at tolerance 1e-8
     // was 0.15 to 0.8 pp off at 1 ms (bench/mooringLine). One Newton
-    // solve per step: two force evaluations (the start's acceleration and
-    // the predictor's residual), one step per coupling step, except OC4 at
-    // N = 40, whose predictor misses by more than 1e-5 of a segment on
-    // some steps, which are halved (measured 1.7 steps, 4.7 evaluations
-    // per coupling step; its difference then 0.025 %).
+    // solve per step: two force evaluations (the predictor's residual and
+    // the step's end, whose forces are the next step's start and the
+    // loads'; measured 2.0005, 2.01, 2.0033 on the lab chain: a step in a
+    // hundred takes a second correction to close its energy balance), one
+    // step per coupling step, except OC4 at N = 40, whose predictor misses
+    // by more than 1e-5 of a segment on some steps, which are halved
+    // (measured 1.7 steps, 4.7 evaluations per coupling step; its
+    // difference then 0.025 %).
     struct Coupled {
         ReferenceLine (*line)(int);
         double amplitude, period;
@@ -233,7 +236,7 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
                       << " force evaluations per step), " << fine << " N at "
                       << c.fine << " s (" << difference << " %)\n";
             EXPECT_LT(std::abs(difference), c.difference) << N; // goal: 1
-            EXPECT_LE(forces, N < 40 ? 2.0 : 6.0) << N;
+            EXPECT_LE(forces, N < 40 ? 2.02 : 6.0) << N;
         }
     }
 
