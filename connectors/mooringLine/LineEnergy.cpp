@@ -7,6 +7,7 @@
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineLayout.hpp"
 #include "mooringLine/LineStatics.hpp"
+#include "mooringLine/MooringLine.hpp"
 
 namespace connectors {
 
@@ -30,6 +31,21 @@ LineEnergy& LineEnergy::operator+=(const LineEnergy& e)
         axial[k] += e.axial[k];
     }
     return *this;
+}
+
+void LineEnergy::addTrapezoid(const LineEnergy& a, const LineEnergy& b,
+                              double dt)
+{
+    const double w = 0.5 * dt;
+    fairlead += w * (a.fairlead + b.fairlead);
+    anchor += w * (a.anchor + b.anchor);
+    water += w * (a.water + b.water);
+    addedMass += w * (a.addedMass + b.addedMass);
+    for (std::size_t k = 0; k < drag.size(); ++k) {
+        drag[k] += w * (a.drag[k] + b.drag[k]);
+        seabed[k] += w * (a.seabed[k] + b.seabed[k]);
+        axial[k] += w * (a.axial[k] + b.axial[k]);
+    }
 }
 
 double LineEnergy::sum(const std::vector<double>& x)
@@ -196,6 +212,71 @@ void addTrapezoidStep(const LineLayout& layout, const LineSnapshot& start,
     }
     for (std::size_t k = 0; k < e.seabed.size(); ++k) {
         e.seabed[k] -= f1.sectionSeabedEnergy[k] - f0.sectionSeabedEnergy[k];
+    }
+}
+
+void energyRates(const MooringLineParameters& p, const LineLayout& layout,
+                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                 const NodeForces& f, double zb, const WaterMotion* water,
+                 LineEnergy& rates)
+{
+    const std::size_t n = std::size_t(layout.N);
+    rates.clear(layout.sections.size());
+    const auto section = [&](std::size_t i) {
+        return std::size_t(layout.sectionOfNode(int(i)));
+    };
+    // the bodies' push on the end nodes (massless) times their velocities
+    rates.anchor = -(f.T[0] * f.q[0] + f.external[0]).dot(v[0]);
+    rates.fairlead = (f.T[n - 1] * f.q[n - 1] - f.external[n]).dot(v[n]);
+    for (std::size_t j = 0; j < n; ++j) {
+        rates.axial[std::size_t(layout.segmentSection[j])]
+            += f.damping[j] * f.q[j].dot(v[j + 1] - v[j]);
+    }
+    const bool moving = water
+        && (water->current || !water->flow.empty()
+            || !water->flowAcceleration.empty());
+    for (std::size_t i = 0; i <= n; ++i) {
+        const std::size_t k = section(i);
+        // the drag's power on the motion relative to the water, u
+        rates.drag[k] += f.drag[i].dot(f.relative[i]);
+        if (moving) {
+            rates.water += f.drag[i].dot(f.relative[i] + v[i]);
+        }
+        if (!f.flowInertia.empty()) {
+            rates.water += f.flowInertia[i].dot(v[i]);
+        }
+        // what the seabed's penalty energy loses beyond the work of its
+        // push and friction on the node
+        const double depth = zb - r[i][2];
+        rates.seabed[k] -= f.seabed[i].dot(v[i]);
+        if (p.seabedContact && i != 0 && depth > 0.0) {
+            rates.seabed[k]
+                += layout.nodes[i].contact(p.seabedStiffness * depth) * v[i][2];
+        }
+        if (i == 0 || i == n) {
+            continue;
+        }
+        // the added mass: v' dM/dt v / 2, M = mn (I - t t') + mt t t'
+        const LineLayout::Node& node = layout.nodes[i];
+        const double mn = f.normalMass[i], mt = f.tangentialMass[i];
+        double phiRate = 0.0; // d phi/dt within the free surface's ramp
+        if (p.freeSurface && f.submerged[i] > 0.0 && f.submerged[i] < 1.0) {
+            phiRate = -v[i][2] / node.ramp;
+        }
+        const Vector3 chord = r[i + 1] - r[i - 1];
+        const double length = chord.norm();
+        const Vector3& t = f.tangent[i];
+        Vector3 tangentRate = Vector3::Zero();
+        if (length > 0.0) {
+            const Vector3 d = v[i + 1] - v[i - 1];
+            tangentRate = (d - d.dot(t) * t) / length;
+        }
+        const double along = v[i].dot(t);
+        const double mnRate = node.addedN * phiRate;
+        const double mtRate = node.addedT * phiRate;
+        rates.addedMass += 0.5
+            * (mnRate * v[i].squaredNorm() + (mtRate - mnRate) * along * along
+               + 2.0 * (mt - mn) * along * v[i].dot(tangentRate));
     }
 }
 

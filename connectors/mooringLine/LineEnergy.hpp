@@ -29,8 +29,10 @@
 // free surface). Gravity's mean force times dx is exactly V_gravity's
 // change (constant forces), except within the free surface's ramp, where
 // the buoyancy changes with the height (not accounted: the quadrature's
-// error). Every dissipation is reported per section (a joint's node
-// counts in the section above it, towards P).
+// error). CVODE's account is the trapezoidal rule's integral of the
+// rates (energyRates) over its internal steps. Every dissipation is
+// reported per section (a joint's node counts in the section above it,
+// towards P).
 #ifndef CONNECTORS_MOORINGLINE_LINEENERGY_HPP
 #define CONNECTORS_MOORINGLINE_LINEENERGY_HPP
 
@@ -42,6 +44,7 @@
 namespace connectors {
 
 struct LineLayout;
+struct MooringLineParameters;
 struct NodeForces;
 struct StartSegment;
 struct WaterMotion;
@@ -69,6 +72,9 @@ struct LineEnergy {
     void clear(std::size_t sections);
     //- Adds `e` (of as many sections)
     LineEnergy& operator+=(const LineEnergy& e);
+    //- Adds the trapezoidal rule's integral over dt [s] of the rates
+    //  (energyRates) a at its start and b at its end
+    void addTrapezoid(const LineEnergy& a, const LineEnergy& b, double dt);
 
     double dragTotal() const { return sum(drag); }
     double seabedTotal() const { return sum(seabed); }
@@ -110,6 +116,17 @@ void addTrapezoidStep(const LineLayout& layout, const LineSnapshot& start,
                       const LineSnapshot& end,
                       const std::vector<StartSegment>& segments, double h,
                       const WaterMotion* water, LineEnergy& e);
+
+//- The rates of the account [W], into `rates` (a LineEnergy of rates):
+//  the powers of the ends, the water and the added mass (v' dM/dt v / 2,
+//  dM/dt from the tangents' and the submerged fractions' rates), and
+//  the dissipated power per section, of the nodes at positions r and
+//  velocities v 0..N with the forces f there (with diagnostics), the
+//  seabed at height zb [m], in `water` (null: still)
+void energyRates(const MooringLineParameters& p, const LineLayout& layout,
+                 const std::vector<Vector3>& r, const std::vector<Vector3>& v,
+                 const NodeForces& f, double zb, const WaterMotion* water,
+                 LineEnergy& rates);
 
 //- Kinetic energy of the free nodes per section, v' M v / 2 [J] (M with
 //  the added mass about the node's tangent, from f)

@@ -288,8 +288,9 @@ public:
     //  work done on the line by its ends, by the water and by the added
     //  mass, and the energy it dissipated, per section, in the
     //  integrator's own terms (the trapezoidal rule: the mean forces over
-    //  each step times the nodes' displacements; zero with CVODE). The
-    //  ends' work leaves out their inertia (endInertia). The loads at the
+    //  each step times the nodes' displacements; CVODE: the trapezoidal
+    //  rule's integral of the rates over its internal steps). The ends'
+    //  work leaves out their inertia (endInertia). The loads at the
     //  steps' ends, whose sampled power misses what happens between them
     //  (a snap shorter than the step), do not give it.
     const LineEnergy& stepEnergy() const { return stepEnergy_; }
@@ -307,6 +308,9 @@ private:
         double t0 = 0.0, h = 1.0;
     };
     int rhs(double t, const double* y, double* ydot) const;
+    //- The energy account's rates (energyRates) of the free nodes' state
+    //  y at time t of the step, the ends on their path, into `rates`
+    void energyRatesAt(double t, const double* y, LineEnergy& rates);
     //- Positions and velocities of Q and P on the ends' path at the
     //  fraction s in [0, 1] of the step (exactly the given ones at 0, 1)
     void endsAt(double s, Vector3& rQ, Vector3& vQ, Vector3& rP,
@@ -380,7 +384,12 @@ private:
         //- Newton matrices formed before, their storage reused by a step
         //  that forms one where no state holds them any more
         std::vector<std::shared_ptr<TrapezoidMatrix>> matrices;
+        //- CVODE's energy rates at the start and the end of its last
+        //  internal step
+        LineEnergy rates0, rates1;
     } work_;
+    //- Force evaluations of CVODE's energy account
+    long energyEvaluations_ = 0;
 };
 
 } // namespace connectors

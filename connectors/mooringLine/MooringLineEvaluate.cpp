@@ -206,7 +206,12 @@ MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
 
 CvodeBdf::Statistics MooringLine::statistics() const
 {
-    return integrator_ ? integrator_->statistics() : trapezoidStatistics_;
+    if (!integrator_) {
+        return trapezoidStatistics_;
+    }
+    CvodeBdf::Statistics s = integrator_->statistics();
+    s.rhsEvaluations += energyEvaluations_;
+    return s;
 }
 
 } // namespace connectors
