@@ -215,9 +215,9 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // a correction below 1e-5 of a segment (the rule before) left 4e-4 and
     // 2e-3 of the energy through the fairlead unexplained at 1 ms and
     // 0.1 ms (Newton converged to round-off: 1e-10); with these rules
-    // 1.4e-6 and 1e-7, at 2.01 force evaluations a step (one in a hundred
-    // steps takes a second correction; OC4 at 0.01 and 0.1 s, N = 10 to
-    // 40: none more).
+    // -6.2e-7 and 3.7e-6 (mooringLineEnergyTest), at 2.01 force
+    // evaluations a step (one in a hundred steps takes a second
+    // correction; OC4 at 0.01 and 0.1 s, N = 10 to 40: none more).
     constexpr double smallCorrection = 1e-7, energyTolerance = 1e-4;
     //
     // A matrix kept from the steps before (chord Newton) replaces the

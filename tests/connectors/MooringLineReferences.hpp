@@ -121,8 +121,9 @@ inline ReferenceLine oc4(int segments)
 //  h, the anchor held: peak fairlead tension and its time, tension at the
 //  end, the work done on the line by the fairlead against the change of
 //  its potential and kinetic energy (v' M v / 2, added mass about the
-//  node's tangent) plus the dissipated energy, power integrals by the
-//  trapezoidal rule; and the first harmonic of the fairlead tension at
+//  node's tangent, the masses of a uniform line) plus the dissipated
+//  energy, power integrals by the trapezoidal rule; the law's energy
+//  account (any line); and the first harmonic of the fairlead tension at
 //  `frequency` [Hz] over the whole periods after the first (0: none).
 struct Snap {
     double peak = 0.0, peakTime = 0.0, final = 0.0;
@@ -152,7 +153,7 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
 {
     constexpr double pi = 3.14159265358979323846;
     const MooringLineParameters& p = line.p;
-    const int N = p.segments;
+    const int N = p.totalSegments();
     MooringLine law(p);
     BodyKinematics B;
     B.p_WKo_W = line.anchor;
