@@ -276,12 +276,14 @@ void slackTautRow(int N, double h, double tolerance)
         "slack-taut N = %d h = %g tolerance %g: work %.6g J, energy "
         "change %.6g J, dissipated %.6g J, unreported %.4g J (%.3g of "
         "%.6g J through the fairlead); the scheme's work %.6g J, "
-        "unreported %.3g of the throughput; harmonic %.8g N, peak %.5g N, "
-        "CPU %.3g s\n",
+        "unreported %.3g of the throughput; the energy account "
+        "(stepEnergy: added mass %.3g J, dissipated %.6g J) unexplained "
+        "%.3g of it; harmonic %.8g N, peak %.5g N, CPU %.3g s\n",
         N, h, tolerance, r.work, r.change, r.dissipated, r.imbalance,
         r.imbalance / r.throughput, r.throughput, r.stepWork,
-        r.stepImbalance / r.throughput, r.harmonic, r.peak,
-        cpuSeconds() - start);
+        r.stepImbalance / r.throughput, r.account.addedMass,
+        r.account.dissipated(), r.accountImbalance / r.throughput, r.harmonic,
+        r.peak, cpuSeconds() - start);
     std::fflush(stdout);
 }
 

@@ -90,7 +90,7 @@ TEST(MooringLineEnergy, SlackTautCycleClosesTheBalance)
         print("lab chain", h, r);
         ASSERT_TRUE(r.finite) << h;
         EXPECT_GT(r.peak, 10.0 * 0.56) << h; // slack, then taut
-        // Measured -7.6e-6 (0.01 s), -6.2e-7 (1 ms), 3.7e-6 (0.1 ms): what
+        // Measured -5.1e-6 (0.01 s), -5.5e-7 (1 ms), 1.2e-6 (0.1 ms): what
         // Newton's last correction leaves (each step's residual does work
         // below 1e-4 of the step's; LineEnergy.hpp, MooringLineTrapezoid.cpp)
         EXPECT_LT(std::abs(closure(r)), 1e-4) << h;
@@ -111,9 +111,9 @@ TEST(MooringLineEnergy, SlackTautCycleClosesTheBalance)
         EXPECT_NEAR(r.accountChange, r.change, 1e-12 * r.throughput) << h;
         if (h == 1e-4) {
             // Quantities without the account converge to it: the loads'
-            // power sampled at the coupling steps (measured -5.6e-5 of the
+            // power sampled at the coupling steps (measured -6.5e-5 of the
             // throughput) and the dissipated power's trapezoidal sum
-            // (1.5e-5) at 0.1 ms
+            // (1.2e-5) at 0.1 ms
             EXPECT_NEAR(r.work, r.account.fairlead, 1e-4 * r.throughput);
             EXPECT_NEAR(r.dissipated, r.account.dissipated(),
                         1e-4 * r.throughput);
@@ -137,7 +137,7 @@ TEST(MooringLineEnergy, TheTutorialLineClosesItsBalance)
             print(cvode ? "tutorial line, CVODE" : "tutorial line", h, r);
             ASSERT_TRUE(r.finite) << h;
             EXPECT_GT(r.peak, 3.0) << h; // taut (1.1 N at rest)
-            // Measured: trapezoidal rule 2.1e-6 (0.01 s), 2.1e-6 (1 ms);
+            // Measured: trapezoidal rule 2.0e-6 (0.01 s), 2.0e-6 (1 ms);
             // CVODE 3.6e-6, 1.6e-6
             EXPECT_LT(std::abs(closure(r)), 1e-4) << cvode << " " << h;
             EXPECT_GT(r.account.seabedTotal(), 0.0) << cvode << " " << h;
@@ -243,7 +243,7 @@ TEST(MooringLineEnergy, SectionsAddUpToTheLine)
         EXPECT_GT(c.account.axial[k], 0.0) << k;
     }
     EXPECT_GT(c.account.seabed[0], 0.0);
-    // Measured -7.3e-6
+    // Measured -3.6e-6
     EXPECT_LT(std::abs(closure(c)), 1e-4);
 }
 

@@ -393,12 +393,12 @@ TEST(MooringLineSnap, SlackTautForcingKeepsTheEnergyBalance)
     // energy and the dissipated power's trapezoidal sum. Left: the added
     // mass's work (MooringLine::stepEnergy, -1e-4 at 1e-5 s; 3e-8 without
     // added mass) and the dissipated power sampled at 1 ms; measured
-    // -1.7e-4 (-5.9e-4 while Newton stopped at the first correction below
+    // -1.9e-4 (-5.9e-4 while Newton stopped at the first correction below
     // 1e-5 of a segment); 1e-3 asserted (the old average of the tensions
     // lost 1.2e-2). The account itself, which has both, closes to 1e-4
     // (mooringLineEnergyTest). The loads' sampled power misses the snaps
     // between the steps' ends (a 0.6 ms axial wave along the line): its
-    // work differs from the scheme's by -0.34 % (+0.4 % with the 1 ms
+    // work differs from the scheme's by -0.31 % (+0.4 % with the 1 ms
     // steps resolved by substeps of 1e-5 s), the coupling's quadrature,
     // which resolves at 1e-5 s (both 1e-4 off the balance).
     EXPECT_LT(std::abs(coarse.stepImbalance), 1e-3 * coarse.throughput);
