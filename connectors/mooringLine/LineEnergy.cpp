@@ -103,6 +103,88 @@ double massChange(double mn0, double mt0, const Vector3& t0, double mn1,
     return 0.25 * (change(v0) + change(v1));
 }
 
+//- The nodes' terms of addTrapezoidStep (drag, seabed, the water's work,
+//  the added mass's) into e, and the axial dissipation `axial` of a line
+//  of one section; general false: a line of one section in still water,
+//  whose terms for sections and water are left out at compile time
+template <bool general>
+void nodeTerms(const LineLayout& layout, const LineSnapshot& start,
+               const LineSnapshot& end, double h, const WaterMotion* water,
+               LineEnergy& e, double axial)
+{
+    const std::size_t n = std::size_t(layout.N);
+    const NodeForces& f0 = start.f;
+    const NodeForces& f1 = end.f;
+    const bool uniform = !general || layout.sections.size() == 1;
+    const bool moving = general && water
+        && (water->current || !water->flow.empty()
+            || !water->flowAcceleration.empty());
+    const bool inertia
+        = general && !f0.flowInertia.empty() && !f1.flowInertia.empty();
+    // through raw pointers (as nodeForces)
+    const Vector3* const r0 = start.r.data();
+    const Vector3* const r1 = end.r.data();
+    const Vector3* const v0 = start.v.data();
+    const Vector3* const v1 = end.v.data();
+    const Vector3* const drag0 = f0.drag.data();
+    const Vector3* const drag1 = f1.drag.data();
+    const Vector3* const seabed0 = f0.seabed.data();
+    const Vector3* const seabed1 = f1.seabed.data();
+    const Vector3* const t0 = f0.tangent.data();
+    const Vector3* const t1 = f1.tangent.data();
+    const double* const mn0 = f0.normalMass.data();
+    const double* const mt0 = f0.tangentialMass.data();
+    const double* const mn1 = f1.normalMass.data();
+    const double* const mt1 = f1.tangentialMass.data();
+    double drag = 0.0, seabed = 0.0, fromWater = 0.0, added = 0.0;
+    for (std::size_t i = 0; i <= n; ++i) {
+        const Vector3 d = r1[i] - r0[i];
+        double dragLoss = -0.5 * (drag0[i] + drag1[i]).dot(d);
+        if (moving) {
+            // the water's velocity U = u + v
+            const double share = 0.5 * h
+                * (drag0[i].dot(f0.relative[i] + v0[i])
+                   + drag1[i].dot(f1.relative[i] + v1[i]));
+            dragLoss += share;
+            fromWater += share;
+            if (inertia) {
+                fromWater
+                    += 0.5 * (f0.flowInertia[i] + f1.flowInertia[i]).dot(d);
+            }
+        }
+        const double seabedLoss = -0.5 * (seabed0[i] + seabed1[i]).dot(d);
+        if (uniform) {
+            drag += dragLoss;
+            seabed += seabedLoss;
+        } else {
+            const std::size_t k = std::size_t(layout.sectionOfNode(int(i)));
+            e.drag[k] += dragLoss;
+            e.seabed[k] += seabedLoss;
+        }
+        if (mn0[i] == mn1[i] && mt0[i] == mt1[i]) {
+            // the masses as they were (under water), turned with the
+            // tangent: v' dM v = (mn - mt) ((v . t0)^2 - (v . t1)^2); 0 at
+            // the ends (no mass) and without added mass
+            if (mn0[i] != mt0[i]) {
+                const double a0 = v0[i].dot(t0[i]), b0 = v0[i].dot(t1[i]);
+                const double a1 = v1[i].dot(t0[i]), b1 = v1[i].dot(t1[i]);
+                added += 0.25 * (mn0[i] - mt0[i])
+                    * (a0 * a0 - b0 * b0 + a1 * a1 - b1 * b1);
+            }
+        } else {
+            added += massChange(mn0[i], mt0[i], t0[i], mn1[i], mt1[i], t1[i],
+                                v0[i], v1[i]);
+        }
+    }
+    e.water += fromWater;
+    e.addedMass += added;
+    if (uniform) {
+        e.axial[0] += axial;
+        e.drag[0] += drag;
+        e.seabed[0] += seabed;
+    }
+}
+
 } // namespace
 
 void addTrapezoidStep(const LineLayout& layout, const LineSnapshot& start,
@@ -118,7 +200,6 @@ void addTrapezoidStep(const LineLayout& layout, const LineSnapshot& start,
         && (water->current || !water->flow.empty()
             || !water->flowAcceleration.empty());
     const bool uniform = layout.sections.size() == 1;
-    const bool inertia = !f0.flowInertia.empty() && !f1.flowInertia.empty();
     // through raw pointers (as nodeForces)
     const Vector3* const r0 = start.r.data();
     const Vector3* const r1 = end.r.data();
@@ -165,50 +246,10 @@ void addTrapezoidStep(const LineLayout& layout, const LineSnapshot& start,
     e.anchor -= onQ.dot(r1[0] - r0[0]);
     e.fairlead -= onP.dot(r1[n] - r0[n]);
     // Nodes: drag, seabed, the water's work, the added mass's
-    const Vector3* const v0 = start.v.data();
-    const Vector3* const v1 = end.v.data();
-    const Vector3* const drag0 = f0.drag.data();
-    const Vector3* const drag1 = f1.drag.data();
-    const Vector3* const seabed0 = f0.seabed.data();
-    const Vector3* const seabed1 = f1.seabed.data();
-    double drag = 0.0, seabed = 0.0, fromWater = 0.0, added = 0.0;
-    for (std::size_t i = 0; i <= n; ++i) {
-        const Vector3 d = r1[i] - r0[i];
-        double dragLoss = -0.5 * (drag0[i] + drag1[i]).dot(d);
-        if (moving) {
-            // the water's velocity U = u + v
-            const double share = 0.5 * h
-                * (drag0[i].dot(f0.relative[i] + v0[i])
-                   + drag1[i].dot(f1.relative[i] + v1[i]));
-            dragLoss += share;
-            fromWater += share;
-            if (inertia) {
-                fromWater
-                    += 0.5 * (f0.flowInertia[i] + f1.flowInertia[i]).dot(d);
-            }
-        }
-        const double seabedLoss = -0.5 * (seabed0[i] + seabed1[i]).dot(d);
-        if (uniform) {
-            drag += dragLoss;
-            seabed += seabedLoss;
-        } else {
-            const std::size_t k = std::size_t(layout.sectionOfNode(int(i)));
-            e.drag[k] += dragLoss;
-            e.seabed[k] += seabedLoss;
-        }
-        const double mn0 = f0.normalMass[i], mt0 = f0.tangentialMass[i];
-        const double mn1 = f1.normalMass[i], mt1 = f1.tangentialMass[i];
-        if (mn0 != mn1 || mn0 != mt0 || mn1 != mt1) { // (0 at the ends)
-            added += massChange(mn0, mt0, f0.tangent[i], mn1, mt1,
-                                f1.tangent[i], v0[i], v1[i]);
-        }
-    }
-    e.water += fromWater;
-    e.addedMass += added;
-    if (uniform) {
-        e.axial[0] += axial;
-        e.drag[0] += drag;
-        e.seabed[0] += seabed;
+    if (uniform && !moving) {
+        nodeTerms<false>(layout, start, end, h, water, e, axial);
+    } else {
+        nodeTerms<true>(layout, start, end, h, water, e, axial);
     }
     for (std::size_t k = 0; k < e.seabed.size(); ++k) {
         e.seabed[k] -= f1.sectionSeabedEnergy[k] - f0.sectionSeabedEnergy[k];

@@ -6,6 +6,7 @@
 #define CONNECTORS_MOORINGLINE_LINEFORCES_HPP
 
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "common/Kinematics.hpp"
@@ -70,6 +71,37 @@ struct NodeForces {
     double gravityEnergy = 0.0;
     double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     int groundedSegments = 0;
+
+    //- Exchanges every field with `o` (the storage's pointers: cheaper
+    //  than std::swap's three moves; a field added above goes here too)
+    void swap(NodeForces& o) noexcept
+    {
+        T.swap(o.T);
+        stretched.swap(o.stretched);
+        submerged.swap(o.submerged);
+        normalDrag.swap(o.normalDrag);
+        tangentialDrag.swap(o.tangentialDrag);
+        friction.swap(o.friction);
+        normalMass.swap(o.normalMass);
+        tangentialMass.swap(o.tangentialMass);
+        damping.swap(o.damping);
+        sectionSeabedEnergy.swap(o.sectionSeabedEnergy);
+        q.swap(o.q);
+        tangent.swap(o.tangent);
+        F.swap(o.F);
+        a.swap(o.a);
+        external.swap(o.external);
+        relative.swap(o.relative);
+        sliding.swap(o.sliding);
+        drag.swap(o.drag);
+        seabed.swap(o.seabed);
+        flowInertia.swap(o.flowInertia);
+        std::swap(gravityEnergy, o.gravityEnergy);
+        std::swap(strainEnergy, o.strainEnergy);
+        std::swap(seabedEnergy, o.seabedEnergy);
+        std::swap(dissipatedPower, o.dissipatedPower);
+        std::swap(groundedSegments, o.groundedSegments);
+    }
 };
 
 //- Forces on the nodes at positions r and velocities v (0..N) of the

@@ -257,7 +257,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
                 y[3 + k] = w.v[i][k];
             }
         }
-        std::swap(lastEvaluated_.f, w.f);
+        lastEvaluated_.f.swap(w.f);
         lastEvaluated_.r.swap(w.r);
         lastEvaluated_.v.swap(w.v);
         lastEvaluated_.zb = zb;
