@@ -163,6 +163,10 @@ struct MooringLineParameters {
     //  default; explicit in the coupling, it can destabilise a body whose
     //  mass is not large against it, README)
     bool endInertia = false;
+    //- Whether `advance` keeps the energy account (stepEnergy): true, or
+    //  false, where stepEnergy stays zero and a step costs 12 to 15 % less
+    //  (bench/mooringLine/README.md); the motion is the same either way
+    bool energyAccount = true;
     //- Sections 2, 3, ... from Q towards P after the first (the fields
     //  above: length, EA, ..., segments), each with the point at its lower
     //  joint; empty: a uniform line
@@ -272,14 +276,22 @@ public:
                  const std::vector<Vector3>& flow = {},
                  const std::vector<Vector3>& flowAcceleration = {});
 
+    //- What `evaluate` computes: everything, or the loads (the interface
+    //  diagnostics, fairleadTension, anchorTension, groundedLength, H and
+    //  V) and not the shape, the sections' tensions, the joints or the
+    //  kinetic energy (left empty and zero)
+    enum class Detail { all, loads };
+
     //- Loads and diagnostics of `state` with the ends at A's and B's
     //  attachment points, in the water's `flow` and `flowAcceleration` (as
-    //  in advance); shapePoints 0 or >= 2
+    //  in advance); shapePoints 0 or >= 2. The shape, the tensions, the
+    //  joints and the kinetic energy do not depend on the water.
     MooringLineOutput
     evaluate(const MooringLineState& state, const BodyKinematics& A,
              const BodyKinematics& B, int shapePoints,
              const std::vector<Vector3>& flow = {},
-             const std::vector<Vector3>& flowAcceleration = {}) const;
+             const std::vector<Vector3>& flowAcceleration = {},
+             Detail detail = Detail::all) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
