@@ -205,6 +205,9 @@ struct MooringLineState {
     //  (TrapezoidMatrix::savedSize)
     static std::size_t serializedSize(int segments);
     std::vector<double> serialize() const;
+    //- The same appended to `out` (a caller that saves into the same
+    //  vector every step allocates nothing after the first)
+    void serialize(std::vector<double>& out) const;
     //- Throws std::invalid_argument unless `data` holds a state of N segments
     static MooringLineState deserialize(const std::vector<double>& data,
                                         int segments);

@@ -320,7 +320,7 @@ fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
     target->time = time_;
     target->outputsValid = outputsValid_;
     target->values = values_;
-    target->internal = model_->internalState();
+    model_->saveInternalState(target->internal);
     return target;
 }
 

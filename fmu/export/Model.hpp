@@ -83,6 +83,13 @@ public:
     //  serialized after it; empty for a model without one
     virtual std::vector<double> internalState() const { return {}; }
 
+    //- The same into `state`, whose storage a model may keep (fmi2GetFMUstate
+    //  into a state it returned before allocates nothing then)
+    virtual void saveInternalState(std::vector<double>& state) const
+    {
+        state = internalState();
+    }
+
     //- Restores a state returned by internalState() for the parameters in
     //  `values` (empty: back to before initializeState; not empty: after
     //  setParameters for them); throws

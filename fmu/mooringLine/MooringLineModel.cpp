@@ -63,7 +63,13 @@ public:
 
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
-    std::vector<double> internalState() const override;
+    std::vector<double> internalState() const override
+    {
+        std::vector<double> out;
+        saveInternalState(out);
+        return out;
+    }
+    void saveInternalState(std::vector<double>& out) const override;
     void setInternalState(const double* values,
                           const std::vector<double>& state) override;
 
@@ -366,20 +372,18 @@ void MooringLineModel::completeOutputs(double* values) const
     writeTrailingOutputs(values, lineOutputs(m, energy_), leadingLineOutputs);
 }
 
-std::vector<double> MooringLineModel::internalState() const
+void MooringLineModel::saveInternalState(std::vector<double>& out) const
 {
+    out.clear();
     if (!state_) {
-        return {};
+        return;
     }
     // the line's state, then the last step's start time, flow inputs and
     // flow acceleration (3 values a point each, all zero for none), then
-    // the energy account
-    // (4 + 3 per section)
-    std::vector<double> out = state_->serialize();
+    // the energy account (4 + 3 per section)
+    state_->serialize(out);
     lastFlow_.save(out);
-    const std::vector<double> energy = energy_.values();
-    out.insert(out.end(), energy.begin(), energy.end());
-    return out;
+    energy_.appendValues(out);
 }
 
 void MooringLineModel::setInternalState(const double*,
