@@ -164,8 +164,9 @@ struct MooringLineParameters {
     //  mass is not large against it, README)
     bool endInertia = false;
     //- Whether `advance` keeps the energy account (stepEnergy): true, or
-    //  false, where stepEnergy stays zero and a step costs 12 to 15 % less
-    //  (bench/mooringLine/README.md); the motion is the same either way
+    //  false, where stepEnergy stays zero and a step leaves out the
+    //  account's sums (about 10 % of the law's step, 6 % of the FMU's:
+    //  bench/mooringLine/README.md); the motion is the same either way
     bool energyAccount = true;
     //- Sections 2, 3, ... from Q towards P after the first (the fields
     //  above: length, EA, ..., segments), each with the point at its lower
