@@ -74,6 +74,11 @@ def read_case(case):
     for key in ("meshFactor", "endTime", "rampPeriods", "nProcs"):
         run[key] = float(logged[key]) if key in logged else float("nan")
     run["guideFriction"] = float(logged.get("guideFriction", 0))
+    # The section's inputs (Allrun -mass, -kg, -spring-rate; a run logged
+    # before they were options had constant/dynamicMeshDict's)
+    for key in ("mass", "KG", "springRate"):
+        if key in logged:
+            run[key] = float(logged[key])
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))

@@ -11,7 +11,16 @@ extrapolated relative errors and the fine-grid convergence index
 GCI = 1.25 e_a/(r_21^p - 1).
 
 Validation: ASME V&V 20-2009: the comparison error E = S - D against the
-validation uncertainty u_val = sqrt(u_num^2 + u_input^2 + u_D^2).
+validation uncertainty u_val = sqrt(u_num^2 + u_input^2 + u_D^2), each a
+standard uncertainty. The numerical one from an expanded estimate U_num:
+u_num = U_num/1.15, the standard's conversion of a GCI with the factor of
+safety 1.25 (an interval taken to hold the exact solution with about 95 %
+confidence; its error distribution is not Gaussian, so the divisor is not
+2). The same divisor is used for three times the range (Eca and Hoekstra
+2014, factor of safety 3), which is also meant as a 95 % interval. The
+input one from one-at-a-time sensitivities: u_input = sqrt(sum (s_i
+u_i)^2), s_i the change of the result per unit of input i, u_i that
+input's standard uncertainty.
 """
 
 import collections
@@ -69,6 +78,31 @@ def grid_convergence(phi, h):
     e_ext = abs((extrapolated - phi1) / extrapolated)
     gci = SAFETY_FACTOR * e_a / (r21 ** p - 1)
     return GridConvergence(p, extrapolated, e_a, e_ext, gci, ratio < 0)
+
+
+# ASME V&V 20-2009: u_num = GCI/1.15 for a GCI with the factor of safety
+# 1.25 (an expanded uncertainty of about 95 % coverage)
+NUMERICAL_COVERAGE = 1.15
+
+
+def standard_numerical_uncertainty(expanded):
+    """u_num of an expanded numerical uncertainty U_num (a GCI, or three
+    times the range: numerical_uncertainty), ASME V&V 20-2009:
+    U_num/1.15."""
+    return expanded / NUMERICAL_COVERAGE
+
+
+def uniform_standard_uncertainty(low, high):
+    """The standard uncertainty of an input known only to lie in [low,
+    high], every value in it equally likely (GUM 4.3.7): the half-range
+    over sqrt(3)."""
+    return 0.5 * abs(high - low) / math.sqrt(3.0)
+
+
+def input_uncertainty(contributions):
+    """ASME V&V 20: u_input = sqrt(sum c_i^2) of the inputs'
+    contributions c_i = s_i u_i (independent inputs, first order)."""
+    return math.sqrt(sum(c * c for c in contributions))
 
 
 def validation(simulation, data, u_num, u_input, u_data):

@@ -57,6 +57,15 @@ class GridConvergenceTest(unittest.TestCase):
         self.assertLess(g.p, uncertainty.ORDER_RANGE[0])
         self.assertAlmostEqual(u, 3 * 0.123, places=12)
 
+    def test_standard_uncertainties(self):
+        # V&V 20's conversion of a GCI (Fs 1.25) to u_num
+        self.assertAlmostEqual(uncertainty.standard_numerical_uncertainty(1.15), 1.0, places=15)
+        # A uniform distribution over 46.22-46.8 kg: 0.29/sqrt(3)
+        self.assertAlmostEqual(uncertainty.uniform_standard_uncertainty(46.8, 46.22),
+                               0.29 / 3 ** 0.5, places=12)
+        self.assertAlmostEqual(uncertainty.input_uncertainty([0.3, -0.4]), 0.5, places=15)
+        self.assertEqual(uncertainty.input_uncertainty([]), 0.0)
+
     def test_validation_uncertainty(self):
         e, u = uncertainty.validation(1.1, 1.0, 0.03, 0.04, 0.0)
         self.assertAlmostEqual(e, 0.1, places=15)

@@ -1,0 +1,76 @@
+"""The uncertain inputs of the spring-moored section in waves
+(tutorials/mooredSectionWaves) and the sensitivities of its results to
+them, one input at a time (ASME V&V 20-2009's u_input).
+
+Each input has the model's value (what constant/dynamicMeshDict and
+Allrun set when no option is given), the range the experiment's report
+gives for it, and a standard uncertainty from that range: every value in
+it equally likely, the half-range over sqrt(3) (uncertainty.
+uniform_standard_uncertainty). A run kept with run.dat names the inputs
+it was made with (guideFriction, mass, KG, springRate: Allrun -guide-
+friction, -mass, -kg, -spring-rate); a run kept before an input was an
+option had the model's value. The sensitivity of a result to an input is
+the change between a run with the model's inputs and one with that input
+alone changed, per unit of the input, on the same wave and mesh.
+"""
+
+import collections
+
+from foamfmi import uncertainty
+
+Input = collections.namedtuple("Input", "key label unit nominal low high stated option")
+Input.__doc__ = """key: its name in run.dat; label, unit: its name and unit; nominal: the
+model's value; low, high: the stated range; stated: where the range comes
+from; option: the Allrun option that sets it (None: no run sets it)."""
+
+INPUTS = (
+    Input("guideFriction", "guide friction", "N", 0.0, 0.0, 0.5,
+          "the rig's static friction, measured 0.2-0.5 N; the model has none",
+          "-guide-friction"),
+    Input("mass", "mass", "kg", 46.2207, 46.2207, 46.8,
+          "the drawn section's displacement at its draft, the model's, to the table's",
+          "-mass"),
+    Input("KG", "KG", "m", 0.106, 0.106, 0.108,
+          "the heel test's, the model's, to the planned", "-kg"),
+    Input("springRate", "each spring's rate", "N/m", 29.86, 0.5 * 59.21, 0.5 * 60.88,
+          "the offset tests, 59.21-60.88 N/m the two together; the model has their mean",
+          "-spring-rate"),
+)
+# The incident wave's amplitude: no run option sets it (the RAOs are per
+# each one's own); its range is the CFD's at WP_4 to the experiment's
+INCIDENT = "incidentAmplitude"
+
+
+def value(run, key):
+    """The input key of a kept run (its model value when run.dat does not
+    name it)."""
+    nominal = next(i.nominal for i in INPUTS if i.key == key)
+    return float(run.get(key, nominal))
+
+
+def changed(run):
+    """The keys of the inputs the run does not have at the model's
+    value."""
+    return [i.key for i in INPUTS if abs(value(run, i.key) - i.nominal) > 1e-9 * max(1, i.nominal)]
+
+
+def standard_uncertainty(item):
+    """The input's standard uncertainty: uniform over its stated range."""
+    return uncertainty.uniform_standard_uncertainty(item.low, item.high)
+
+
+def sensitivity(base, variant, key, quantity):
+    """d(quantity)/d(input key) from two runs' responses: (run, r) of the
+    run with the model's inputs and of one with input key changed."""
+    (run0, r0), (run1, r1) = base, variant
+    dx = value(run1, key) - value(run0, key)
+    return (r1[quantity] - r0[quantity]) / dx
+
+
+def pick_variant(base, variants, key):
+    """Of the runs with input key changed, the one farthest from the
+    base's value (the widest span of the range), or None."""
+    if not variants:
+        return None
+    x0 = value(base[0], key)
+    return max(variants, key=lambda v: abs(value(v[0], key) - x0))
