@@ -25,7 +25,6 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                 : v.causality == Causality::local     ? RealAccess::local
                                                       : RealAccess::none);
     }
-    deferred_ = model_->deferredOutputs();
     startValues();
 }
 
@@ -180,25 +179,19 @@ void FmuInstance::computeOutputs()
     applyParameters(values_.data());
     model_->computeOutputs(values_.data());
     outputsValid_ = true;
-    deferredValid_ = true;
 }
 
 void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
                           fmi2Real value[])
 {
-    bool needsOutputs = false, needsDeferred = false;
+    bool needsOutputs = false;
     for (std::size_t i = 0; i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);
         needsOutputs
             |= access == RealAccess::output || access == RealAccess::local;
-        needsDeferred |= vr[i] - deferred_.first < deferred_.size;
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
-    }
-    if (needsDeferred && !deferredValid_) {
-        model_->completeOutputs(values_.data());
-        deferredValid_ = true;
     }
     const double* values = values_.data();
     for (std::size_t i = 0; i < n; ++i) {
@@ -292,7 +285,6 @@ void FmuInstance::doStep(double currentCommunicationPoint,
     applyParameters(values_.data());
     model_->doStep(values_.data(), t, h);
     outputsValid_ = true;
-    deferredValid_ = deferred_.size == 0;
     time_ = t + h;
 }
 
@@ -320,7 +312,7 @@ fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
     target->time = time_;
     target->outputsValid = outputsValid_;
     target->values = values_;
-    model_->saveInternalState(target->internal);
+    target->internal = model_->internalState();
     return target;
 }
 
@@ -343,8 +335,6 @@ void FmuInstance::setState(fmi2FMUstate state)
     values_ = saved.values;
     time_ = saved.time;
     outputsValid_ = saved.outputsValid;
-    // computed again from the restored state when read
-    deferredValid_ = deferred_.size == 0;
     state_ = saved.state;
 }
 
