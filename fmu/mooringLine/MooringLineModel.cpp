@@ -8,16 +8,20 @@
 // position and velocity of every free node, and the trapezoidal rule's
 // factorised Newton matrix kept from step to step; then the start time of the
 // last step and its flow inputs (the flow's acceleration over the next
-// step is their change). It is saved, restored and serialized with the FMU
-// state; each step starts the integrator from it, so a step repeated after
-// fmi2SetFMUstate gives the same outputs to the bit.
+// step is their change); then the energy account summed since the start
+// (the energy outputs, EnergyVariables.hpp). It is saved, restored and
+// serialized with the FMU state; each step starts the integrator from it,
+// so a step repeated after fmi2SetFMUstate gives the same outputs to the
+// bit.
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-#include "LineFmuModel.hpp"
+#include "EnergyVariables.hpp"
 #include "FlowHistory.hpp"
+#include "LawDescription.hpp"
+#include "LineFmuModel.hpp"
 #include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -26,58 +30,6 @@ namespace {
 
 using fmuExport::Block;
 using fmuExport::Shape;
-
-const char* const lawHtml = R"(<p>A dynamic lumped-mass mooring line (after
-MoorDyn) between the fairlead P (<code>A.p</code> on A) and Q
-(<code>B.p</code> on B): an anchor on the seabed (<code>seabedContact</code>
-= 1, the seabed is the horizontal plane through Q) or a fairlead on a second
-body. N = <code>segments</code> segments of unstretched length L/N; node 0 is
-Q, node N is P, the N-1 free nodes carry one segment's mass each:</p>
-<pre>
-segment tension  T = EA max(e, 0) + axialDamping de/dt,  e = strain
-node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 + E_i
-E_i              = -(weight - buoyancy) + seabed penalty and friction
-                   + Morison drag relative to the water (current + flow)
-A.F = -T_N-1 q_N-1 + E_N,   B.F = T_0 q_0 + E_0   (the ends' half segments)
-</pre>
-<p>The water moves with the current profile (<code>current.surface</code>
-at <code>waterLevel</code>, <code>current.seabed</code> at the height of
-B.p, linear between) plus the inputs <code>shape.Ux/Uy/Uz[k]</code>: the
-water velocity at the points of the shape outputs of the previous step,
-held over the step and interpolated along the line. Their change over the
-previous step is the flow's acceleration a, held over the step: with
-<code>flowInertia</code> = 1 (default) it acts on the line as
-(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
-<code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
-<code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
-on the seabed, regularised below <code>frictionVelocity</code>,
-<code>axialFrictionRatio</code> times it along the line, up to
-<code>staticFrictionScale</code> times it below that speed.</p>
-<p>Up to 4 sections from B.p to A.p: the first is the line of the parameters
-above, sections 2 to 4 have their own (<code>section2.EA</code>, ...;
-<code>section&lt;k&gt;.unstretchedLength</code> = 0: no section k), with a
-point (clump weight or buoy: <code>joint&lt;k&gt;.mass</code>,
-<code>volume</code>, <code>dragArea</code>, <code>addedMass</code>) at each
-joint; outputs <code>section.lowerTension</code>,
-<code>section.upperTension</code> and the joints' positions
-<code>joint.x/y/z</code>.</p>
-<p>Inside each fmi2DoStep the node states are integrated by the implicit
-trapezoidal rule (<code>integrator</code> = 0, the default: one step per
-coupling step, or substeps no longer than <code>maxStep</code>, each one
-Newton solve with the line's block-tridiagonal matrix, a step halved where
-its predictor misses) or by SUNDIALS CVODE (<code>integrator</code> = 1:
-BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
-<code>absoluteTolerance</code>, restarted at every step), the ends moving
-along the cubic Hermite path through their positions and velocities at the
-start of the step (saved in the FMU state) and at its end (the inputs): set
-the inputs to the end-of-step positions and velocities before fmi2DoStep.
-Either integrator starts each step from the node states alone, so a step
-repeated from a saved FMU state is identical to the uninterrupted one. The
-line starts at rest in the static equilibrium of its own discrete equations
-(found by Newton from the quasi-static catenary shape through the
-attachment points) at fmi2ExitInitializationMode. SUNDIALS is linked into
-the binary: the FMU needs nothing installed beside it. Details:
-connectors/mooringLine/README.md.</p>)";
 
 //- The value references of the scalar parameters, one member each
 struct ScalarBlocks {
@@ -210,8 +162,11 @@ protected:
 
 private:
     connectors::MooringLineParameters parameters(const double* values) const;
+    //- The outputs of the law's output `out` and the energy account
+    //  summed since the start `energy`
     fmuExport::ConnectorOutputs
-    lineOutputs(const connectors::MooringLineOutput& out) const;
+    lineOutputs(const connectors::MooringLineOutput& out,
+                const connectors::LineEnergy& energy) const;
 
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
@@ -238,6 +193,8 @@ private:
     fmi2ValueReference flow_ = 0;
     fmuExport::BuiltLaw<connectors::MooringLine> law_;
     std::optional<connectors::MooringLineState> state_;
+    //- The law's energy account summed over the steps since the start
+    connectors::LineEnergy energy_;
 };
 
 MooringLineModel::MooringLineModel()
@@ -245,7 +202,7 @@ MooringLineModel::MooringLineModel()
         {"mooringLine",
          "Dynamic lumped-mass mooring line between a body and a seabed "
          "anchor, or between two bodies (integrated inside each step)",
-         "1.0.0", lawHtml})
+         "1.0.0", mooringLineFmu::lawHtml})
 {
     fmuExport::VariableTable& t = table();
     for (const Scalar& s : scalars) {
@@ -297,6 +254,10 @@ MooringLineModel::MooringLineModel()
     d.dissipatedPower = d.loads;
     declareLineOutputs(d);
     for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
+        extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
+    }
+    for (const auto& o : mooringLineFmu::energyVariables::outputs(
+             mooringLineFmu::maxSections)) {
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
     declareShapeSections();
@@ -380,7 +341,8 @@ MooringLineModel::flow(const double* values) const
 }
 
 fmuExport::ConnectorOutputs
-MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
+MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m,
+                              const connectors::LineEnergy& energy) const
 {
     fmuExport::LineOutputs o;
     o.loads = m.loads;
@@ -397,6 +359,10 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     const std::vector<double> sections
         = mooringLineFmu::SectionVariables::values(m);
     all.extra.insert(all.extra.end(), sections.begin(), sections.end());
+    const std::vector<double> energies
+        = mooringLineFmu::energyVariables::values(m, energy,
+                                                  mooringLineFmu::maxSections);
+    all.extra.insert(all.extra.end(), energies.begin(), energies.end());
     return all;
 }
 
@@ -411,11 +377,13 @@ MooringLineModel::evaluate(const double* values,
         const std::vector<connectors::Vector3> U = flow(values);
         return lineOutputs(
             law.evaluate(*state_, A, B, shapePoints, U,
-                         flowAcceleration(values, U, state_->time)));
+                         flowAcceleration(values, U, state_->time)),
+            energy_);
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
-                                    shapePoints, flow(values)));
+                                    shapePoints, flow(values)),
+                       connectors::LineEnergy());
 }
 
 void MooringLineModel::initializeState(const double* values, double time)
@@ -424,6 +392,7 @@ void MooringLineModel::initializeState(const double* values, double time)
         = law_.get().initialState(fmuExport::bodyKinematics(values, A),
                                   fmuExport::bodyKinematics(values, B), time);
     lastFlow_.record(time, flow(values));
+    energy_.clear(law_.get().parameters().sections.size() + 1);
 }
 
 void MooringLineModel::doStep(double* values, double time, double h)
@@ -442,10 +411,14 @@ void MooringLineModel::doStep(double* values, double time, double h)
         = flowAcceleration(values, water, time);
     connectors::MooringLineState next = *state_;
     law.advance(next, bodyA, bodyB, h, water, a);
+    connectors::LineEnergy energy = energy_;
+    energy += law.stepEnergy();
     writeOutputs(
         values,
-        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a)));
+        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a),
+                    energy));
     state_ = std::move(next);
+    energy_ = std::move(energy);
     lastFlow_.record(time, water);
 }
 
@@ -455,9 +428,12 @@ std::vector<double> MooringLineModel::internalState() const
         return {};
     }
     // the line's state, then the last step's start time and flow inputs
-    // (3 values a point, all zero for none)
+    // (3 values a point, all zero for none), then the energy account
+    // (4 + 3 per section)
     std::vector<double> out = state_->serialize();
     lastFlow_.save(out);
+    const std::vector<double> energy = energy_.values();
+    out.insert(out.end(), energy.begin(), energy.end());
     return out;
 }
 
@@ -466,26 +442,32 @@ void MooringLineModel::setInternalState(const double*,
 {
     if (state.empty()) {
         state_.reset();
+        energy_ = connectors::LineEnergy();
         return;
     }
     const connectors::MooringLineParameters& p = law_.get().parameters();
     const std::size_t line
         = connectors::MooringLineState::serializedSize(p.totalSegments());
-    const std::size_t withFlow = line + lastFlow_.size();
-    if (state.size() != withFlow) {
+    const std::size_t sections = p.sections.size() + 1;
+    const std::size_t energy = 4 + 3 * sections;
+    const std::size_t all = line + lastFlow_.size() + energy;
+    if (state.size() != all) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(state.size())
             + " values does not fit a line of "
-            + std::to_string(p.totalSegments()) + " segments ("
-            + std::to_string(withFlow) + " values: " + std::to_string(line)
-            + " of the line, 1 + 3 x " + std::to_string(shapePoints)
-            + " of the last step's flow)");
+            + std::to_string(p.totalSegments()) + " segments in "
+            + std::to_string(sections) + " sections (" + std::to_string(all)
+            + " values: " + std::to_string(line) + " of the line, 1 + 3 x "
+            + std::to_string(shapePoints) + " of the last step's flow, "
+            + std::to_string(energy) + " of the energy account)");
     }
     state_ = connectors::MooringLineState::deserialize(
         std::vector<double>(state.begin(),
                             state.begin() + std::ptrdiff_t(line)),
         p);
     lastFlow_.restore(state.data() + line);
+    energy_ = connectors::LineEnergy::fromValues(
+        state.data() + line + lastFlow_.size(), energy, sections);
 }
 
 } // namespace
