@@ -59,11 +59,17 @@ double LineEnergy::sum(const std::vector<double>& x)
 
 std::vector<double> LineEnergy::values() const
 {
-    std::vector<double> out = {fairlead, anchor, water, addedMass};
+    std::vector<double> out;
+    appendValues(out);
+    return out;
+}
+
+void LineEnergy::appendValues(std::vector<double>& out) const
+{
+    out.insert(out.end(), {fairlead, anchor, water, addedMass});
     for (std::size_t k = 0; k < drag.size(); ++k) {
         out.insert(out.end(), {drag[k], seabed[k], axial[k]});
     }
-    return out;
 }
 
 LineEnergy LineEnergy::fromValues(const double* values, std::size_t count,

@@ -91,6 +91,8 @@ struct LineEnergy {
     //- The account's values in a fixed order: fairlead, anchor, water,
     //  addedMass, then drag, seabed, axial of each section
     std::vector<double> values() const;
+    //- The same appended to `out`
+    void appendValues(std::vector<double>& out) const;
     //- From `values` (of values().size() for `sections` sections);
     //  throws std::invalid_argument otherwise
     static LineEnergy fromValues(const double* values, std::size_t count,

@@ -295,10 +295,16 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
             // the account: the rates' trapezoidal integral over CVODE's
             // internal steps (one force evaluation each)
             integrator_->restart(state.time, state.nodes.data());
-            energyRatesAt(state.time, state.nodes.data(), work_.rates0);
+            const bool account = parameters_.energyAccount;
+            if (account) {
+                energyRatesAt(state.time, state.nodes.data(), work_.rates0);
+            }
             double t0 = state.time;
             integrator_->advance(state.time + h, y.data(),
                                  [&](double t, const double* yt) {
+                                     if (!account) {
+                                         return;
+                                     }
                                      energyRatesAt(t, yt, work_.rates1);
                                      stepEnergy_.addTrapezoid(
                                          work_.rates0, work_.rates1, t - t0);

@@ -163,6 +163,11 @@ struct MooringLineParameters {
     //  default; explicit in the coupling, it can destabilise a body whose
     //  mass is not large against it, README)
     bool endInertia = false;
+    //- Whether `advance` keeps the energy account (stepEnergy): true, or
+    //  false, where stepEnergy stays zero and a step leaves out the
+    //  account's sums (about 10 % of the law's step, 6 % of the FMU's:
+    //  bench/mooringLine/README.md); the motion is the same either way
+    bool energyAccount = true;
     //- Sections 2, 3, ... from Q towards P after the first (the fields
     //  above: length, EA, ..., segments), each with the point at its lower
     //  joint; empty: a uniform line
@@ -201,6 +206,9 @@ struct MooringLineState {
     //  (TrapezoidMatrix::savedSize)
     static std::size_t serializedSize(int segments);
     std::vector<double> serialize() const;
+    //- The same appended to `out` (a caller that saves into the same
+    //  vector every step allocates nothing after the first)
+    void serialize(std::vector<double>& out) const;
     //- Throws std::invalid_argument unless `data` holds a state of N segments
     static MooringLineState deserialize(const std::vector<double>& data,
                                         int segments);
@@ -272,14 +280,22 @@ public:
                  const std::vector<Vector3>& flow = {},
                  const std::vector<Vector3>& flowAcceleration = {});
 
+    //- What `evaluate` computes: everything, or the loads (the interface
+    //  diagnostics, fairleadTension, anchorTension, groundedLength, H and
+    //  V) and not the shape, the sections' tensions, the joints or the
+    //  kinetic energy (left empty and zero)
+    enum class Detail { all, loads };
+
     //- Loads and diagnostics of `state` with the ends at A's and B's
     //  attachment points, in the water's `flow` and `flowAcceleration` (as
-    //  in advance); shapePoints 0 or >= 2
+    //  in advance); shapePoints 0 or >= 2. The shape, the tensions, the
+    //  joints and the kinetic energy do not depend on the water.
     MooringLineOutput
     evaluate(const MooringLineState& state, const BodyKinematics& A,
              const BodyKinematics& B, int shapePoints,
              const std::vector<Vector3>& flow = {},
-             const std::vector<Vector3>& flowAcceleration = {}) const;
+             const std::vector<Vector3>& flowAcceleration = {},
+             Detail detail = Detail::all) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;

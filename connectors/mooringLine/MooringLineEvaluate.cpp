@@ -79,11 +79,10 @@ void MooringLine::waterMotion(const std::vector<Vector3>& flow,
     }
 }
 
-MooringLineOutput
-MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
-                      const BodyKinematics& B, int shapePoints,
-                      const std::vector<Vector3>& flow,
-                      const std::vector<Vector3>& flowAcceleration) const
+MooringLineOutput MooringLine::evaluate(
+    const MooringLineState& state, const BodyKinematics& A,
+    const BodyKinematics& B, int shapePoints, const std::vector<Vector3>& flow,
+    const std::vector<Vector3>& flowAcceleration, Detail detail) const
 {
     requireFiniteInputs(lawName, A, B);
     const MooringLineParameters& p = parameters_;
@@ -171,6 +170,9 @@ MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
     if (shapePoints == 1 || shapePoints < 0) {
         throw std::invalid_argument(
             "mooringLine: shapePoints must be 0 or >= 2");
+    }
+    if (detail == Detail::loads) {
+        return out;
     }
     for (int k = 0; k < shapePoints; ++k) {
         const double u = L.nodeCoordinate(1.0 - double(k) / (shapePoints - 1));

@@ -248,8 +248,10 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // mean forces times the nodes' displacements, LineEnergy.hpp), then
     // the next step's start and the loads' `evaluate` (lastEvaluated_)
     const auto accept = [&]() {
-        addTrapezoidStep(layout_, {w.r0, w.v0, *f0}, {w.r, w.v, w.f}, w.start,
-                         h, &water_, stepEnergy_);
+        if (parameters_.energyAccount) {
+            addTrapezoidStep(layout_, {w.r0, w.v0, *f0}, {w.r, w.v, w.f},
+                             w.start, h, &water_, stepEnergy_);
+        }
         for (std::size_t i = 1; i < n; ++i) {
             double* y = nodes.data() + 6 * (i - 1);
             for (int k = 0; k < 3; ++k) {

@@ -7,9 +7,16 @@
 // (the start of the next step's Hermite path) and accelerations, the
 // position and velocity of every free node, and the trapezoidal rule's
 // factorised Newton matrix kept from step to step; then the start time of the
-// last step and its flow inputs (the flow's acceleration over the next
-// step is their change); then the energy account summed since the start
-// (the energy outputs, EnergyVariables.hpp). It is saved, restored and
+// last step, its flow inputs (the flow's acceleration over the next
+// step is their change) and the flow's acceleration it took; then the
+// energy account summed since the start (the energy outputs,
+// EnergyVariables.hpp; zero with energyAccount = 0).
+//
+// A step computes the loads and fairleadTension, anchorTension,
+// groundedLength, H and V; the shape, the sections' values and the energy
+// outputs are computed from the state when fmi2GetReal first asks for one
+// of them after the step (deferredOutputs, completeOutputs), the same
+// numbers as the step would have computed. It is saved, restored and
 // serialized with the FMU state; each step starts the integrator from it,
 // so a step repeated after fmi2SetFMUstate gives the same outputs to the
 // bit.
@@ -22,6 +29,7 @@
 #include "FlowHistory.hpp"
 #include "LawDescription.hpp"
 #include "LineFmuModel.hpp"
+#include "ScalarParameters.hpp"
 #include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -30,114 +38,10 @@ namespace {
 
 using fmuExport::Block;
 using fmuExport::Shape;
-
-//- The value references of the scalar parameters, one member each
-struct ScalarBlocks {
-    Block length, EA, axialDamping, massPerLength, diameter, waterDensity,
-        gravity, normalDrag, tangentialDrag, normalAddedMass,
-        tangentialAddedMass, seabedContact, seabedStiffness, seabedDamping,
-        segments, relativeTolerance, absoluteTolerance, hermiteEnds, integrator,
-        maxStep, freeSurface, waterLevel, seabedFriction, frictionVelocity,
-        endInertia, axialFrictionRatio, staticFrictionScale;
-};
-
-struct Scalar {
-    const char* name;
-    const char* unit;
-    const char* description;
-    double start;
-    //- Where the model keeps its value reference
-    Block ScalarBlocks::*block;
-};
-
-// Model-scale start values: a 1.5 m line of 0.5 kg/m between two points
-// 1 m apart, in two-body mode
-const Scalar scalars[] = {
-    {"unstretchedLength", "m",
-     "unstretched length L, > 0, at least the ends' distance at the start "
-     "over 1.3",
-     1.5, &ScalarBlocks::length},
-    {"EA", "N", "axial stiffness, > 0", 1e4, &ScalarBlocks::EA},
-    {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
-     10.0, &ScalarBlocks::axialDamping},
-    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5,
-     &ScalarBlocks::massPerLength},
-    {"diameter", "m",
-     "volume-equivalent diameter (buoyancy, drag, added mass, seabed contact), "
-     ">= 0 (> 0 with seabedContact = 1)",
-     0.01, &ScalarBlocks::diameter},
-    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0,
-     &ScalarBlocks::waterDensity},
-    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81,
-     &ScalarBlocks::gravity},
-    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2,
-     &ScalarBlocks::normalDrag},
-    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05,
-     &ScalarBlocks::tangentialDrag},
-    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0", 1.0,
-     &ScalarBlocks::normalAddedMass},
-    {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0",
-     0.0, &ScalarBlocks::tangentialAddedMass},
-    {"seabedContact", "1",
-     "1: B.p is an anchor on the seabed (the horizontal plane through it); 0: no "
-     "seabed",
-     0.0, &ScalarBlocks::seabedContact},
-    {"seabedStiffness", "Pa/m",
-     "seabed penalty stiffness per contact area, >= 0 (> 0 with "
-     "seabedContact = 1)",
-     3e6, &ScalarBlocks::seabedStiffness},
-    {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
-     3e5, &ScalarBlocks::seabedDamping},
-    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0,
-     &ScalarBlocks::segments},
-    {"relativeTolerance", "1", "CVODE relative tolerance, > 0 (integrator 1)",
-     1e-6, &ScalarBlocks::relativeTolerance},
-    {"absoluteTolerance", "1",
-     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6,
-     &ScalarBlocks::absoluteTolerance},
-    {"hermiteEnds", "1",
-     "1: within a step the ends follow the cubic Hermite curve through the positions "
-     "and velocities at both ends; 0: straight lines between the positions",
-     1.0, &ScalarBlocks::hermiteEnds},
-    {"integrator", "1",
-     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0,
-     &ScalarBlocks::integrator},
-    {"maxStep", "s",
-     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0,
-     &ScalarBlocks::maxStep},
-    {"freeSurface", "1",
-     "1: no buoyancy, drag or added mass above waterLevel (a node's submerged "
-     "fraction ramps from 1 to 0 over one segment length around it); 0: the "
-     "whole line is submerged",
-     0.0, &ScalarBlocks::freeSurface},
-    {"waterLevel", "m",
-     "height (global z) of the still water surface: the free surface "
-     "(freeSurface = 1) and the top of the current profile",
-     0.0, &ScalarBlocks::waterLevel},
-    {"seabedFriction", "1",
-     "seabed Coulomb friction coefficient across the line (along it "
-     "axialFrictionRatio times it), >= 0 (0: none)",
-     0.0, &ScalarBlocks::seabedFriction},
-    {"frictionVelocity", "m/s",
-     "speed below which the seabed friction is regularised (proportional to "
-     "the speed), > 0",
-     0.01, &ScalarBlocks::frictionVelocity},
-    {"endInertia", "1",
-     "1: the loads include the inertia of the end nodes' half segments "
-     "(mass and added mass times the attachment point's acceleration, "
-     "explicit in the coupling); 0 (default): not",
-     0.0, &ScalarBlocks::endInertia},
-    {"axialFrictionRatio", "1",
-     "seabed friction along the line over that across it (seabedFriction), "
-     ">= 0 (1: isotropic)",
-     1.0, &ScalarBlocks::axialFrictionRatio},
-    {"staticFrictionScale", "1",
-     "static over kinetic seabed friction, >= 1: below frictionVelocity the "
-     "friction reaches this times the kinetic one, falling to it at twice "
-     "that speed (1: none)",
-     1.0, &ScalarBlocks::staticFrictionScale},
-};
-constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
+using mooringLineFmu::Scalar;
+using mooringLineFmu::ScalarBlocks;
+using mooringLineFmu::scalarCount;
+using mooringLineFmu::scalars;
 
 class MooringLineModel final : public fmuExport::LineFmuModel {
 public:
@@ -149,9 +53,23 @@ public:
         flag(values, flowInertia_); // 0 or 1, refused otherwise
     }
 
+    //- The shape, the sections' values and the energy outputs: computed
+    //  when read (fmi2GetReal), not by every step
+    fmuExport::Block deferredOutputs() const override
+    {
+        return trailingOutputs(leadingLineOutputs);
+    }
+    void completeOutputs(double* values) const override;
+
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
-    std::vector<double> internalState() const override;
+    std::vector<double> internalState() const override
+    {
+        std::vector<double> out;
+        saveInternalState(out);
+        return out;
+    }
+    void saveInternalState(std::vector<double>& out) const override;
     void setInternalState(const double* values,
                           const std::vector<double>& state) override;
 
@@ -161,6 +79,10 @@ protected:
              const connectors::BodyKinematics& B) const override;
 
 private:
+    //- The extra outputs a step writes: fairleadTension, anchorTension,
+    //  groundedLength, H, V (the first of LineFmuModel's)
+    static constexpr std::size_t leadingLineOutputs = 5;
+
     connectors::MooringLineParameters parameters(const double* values) const;
     //- The outputs of the law's output `out` and the energy account
     //  summed since the start `energy`
@@ -184,7 +106,7 @@ private:
     //- The flow inputs of the last step and its start time (at the start:
     //  those at fmi2ExitInitializationMode and its time)
     mooringLineFmu::FlowHistory lastFlow_ {shapePoints};
-    Block flowInertia_;
+    Block flowInertia_, energyAccount_;
 
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
@@ -268,6 +190,13 @@ MooringLineModel::MooringLineModel()
         "shape.U over the previous step, acts on the line as (1 + Ca) rho V "
         "dU/dt, normal and tangential (Froude-Krylov and added mass); 0: not",
         {1.0});
+    energyAccount_ = t.parameter(
+        "energyAccount", Shape::scalar, "1",
+        "1 (default): the energy outputs (fairleadWork, anchorWork, "
+        "waterWork, addedMassWork, the dissipated energies) are integrated "
+        "every step; 0: they are not, and stay 0 (a step costs about 6 % "
+        "less; the motion, the loads and kineticEnergy are the same)",
+        {1.0});
 }
 
 connectors::MooringLineParameters
@@ -315,6 +244,7 @@ MooringLineModel::parameters(const double* values) const
     p.axialFrictionRatio = value(p_.axialFrictionRatio);
     p.staticFrictionScale = value(p_.staticFrictionScale);
     p.endInertia = flag(values, p_.endInertia);
+    p.energyAccount = flag(values, energyAccount_);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);
     sections_.read(values, variables(), p);
@@ -411,30 +341,49 @@ void MooringLineModel::doStep(double* values, double time, double h)
         = flowAcceleration(values, water, time);
     connectors::MooringLineState next = *state_;
     law.advance(next, bodyA, bodyB, h, water, a);
-    connectors::LineEnergy energy = energy_;
-    energy += law.stepEnergy();
-    writeOutputs(
-        values,
-        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a),
-                    energy));
+    // the loads and the line's scalars; the rest when read
+    // (completeOutputs)
+    const connectors::MooringLineOutput m
+        = law.evaluate(next, bodyA, bodyB, 0, water, a,
+                       connectors::MooringLine::Detail::loads);
+    const double line[leadingLineOutputs]
+        = {m.fairleadTension, m.anchorTension, m.groundedLength, m.H, m.V};
+    writeLeadingOutputs(values, m.loads, line, leadingLineOutputs);
     state_ = std::move(next);
-    energy_ = std::move(energy);
-    lastFlow_.record(time, water);
+    if (law.parameters().energyAccount) {
+        energy_ += law.stepEnergy();
+    }
+    lastFlow_.record(time, water, a);
 }
 
-std::vector<double> MooringLineModel::internalState() const
+void MooringLineModel::completeOutputs(double* values) const
 {
+    // as the last step evaluated its loads: its flow inputs (in `values`)
+    // and acceleration
+    const connectors::BodyKinematics bodyA
+        = fmuExport::bodyKinematics(values, A);
+    const connectors::BodyKinematics bodyB
+        = fmuExport::bodyKinematics(values, B);
+    const connectors::MooringLineOutput m = state_
+        ? law_.get().evaluate(*state_, bodyA, bodyB, shapePoints, flow(values),
+                              lastFlow_.stepAcceleration())
+        : law_.get().evaluate(law_.get().initialState(bodyA, bodyB, 0.0), bodyA,
+                              bodyB, shapePoints, flow(values));
+    writeTrailingOutputs(values, lineOutputs(m, energy_), leadingLineOutputs);
+}
+
+void MooringLineModel::saveInternalState(std::vector<double>& out) const
+{
+    out.clear();
     if (!state_) {
-        return {};
+        return;
     }
-    // the line's state, then the last step's start time and flow inputs
-    // (3 values a point, all zero for none), then the energy account
-    // (4 + 3 per section)
-    std::vector<double> out = state_->serialize();
+    // the line's state, then the last step's start time, flow inputs and
+    // flow acceleration (3 values a point each, all zero for none), then
+    // the energy account (4 + 3 per section)
+    state_->serialize(out);
     lastFlow_.save(out);
-    const std::vector<double> energy = energy_.values();
-    out.insert(out.end(), energy.begin(), energy.end());
-    return out;
+    energy_.appendValues(out);
 }
 
 void MooringLineModel::setInternalState(const double*,
@@ -457,7 +406,7 @@ void MooringLineModel::setInternalState(const double*,
             + " values does not fit a line of "
             + std::to_string(p.totalSegments()) + " segments in "
             + std::to_string(sections) + " sections (" + std::to_string(all)
-            + " values: " + std::to_string(line) + " of the line, 1 + 3 x "
+            + " values: " + std::to_string(line) + " of the line, 1 + 6 x "
             + std::to_string(shapePoints) + " of the last step's flow, "
             + std::to_string(energy) + " of the energy account)");
     }

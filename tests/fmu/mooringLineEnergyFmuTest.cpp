@@ -28,6 +28,10 @@ struct Energies {
         axial, potential;
 };
 
+//- The account is kept with energyAccount = 1 (the default, set here all
+//  the same)
+const std::map<std::string, double> accountOn = {{"energyAccount", 1.0}};
+
 Energies energies(Instance& in)
 {
     std::vector<double> v;
@@ -41,7 +45,7 @@ TEST(MooringLineEnergyFmu, OutputsAreTheLawsAccount)
     // the outputs are the law's account summed from the start, one section
     LoadedFmu fmu("mooringLine");
     Instance in(fmu);
-    ASSERT_EQ(initialise(fmu, in), fmi2OK) << in.lastMessage();
+    ASSERT_EQ(initialise(fmu, in, accountOn), fmi2OK) << in.lastMessage();
     const Energies start = energies(in);
     EXPECT_EQ(start.fairlead, 0.0); // nothing done yet
     EXPECT_EQ(start.dissipated, 0.0);
@@ -154,6 +158,7 @@ Cycle snappingCycle(const SurgedLine& line, double h)
     Instance in(fmu);
     Cycle c;
     EXPECT_EQ(fmu.api.EnterInitializationMode(in.c), fmi2OK);
+    EXPECT_EQ(in.set(accountOn), fmi2OK);
     if (!line.parameters.empty()) {
         EXPECT_EQ(in.set(line.parameters), fmi2OK) << in.lastMessage();
     }
@@ -254,8 +259,9 @@ TEST(MooringLineEnergyFmu, RepeatedStepsKeepTheAccount)
     // uninterrupted run, bit for bit
     LoadedFmu fmu("mooringLine");
     Instance once(fmu), repeated(fmu);
-    ASSERT_EQ(initialise(fmu, once), fmi2OK) << once.lastMessage();
-    ASSERT_EQ(initialise(fmu, repeated), fmi2OK) << repeated.lastMessage();
+    ASSERT_EQ(initialise(fmu, once, accountOn), fmi2OK) << once.lastMessage();
+    ASSERT_EQ(initialise(fmu, repeated, accountOn), fmi2OK)
+        << repeated.lastMessage();
     const double h = 0.1;
     ASSERT_NO_FATAL_FAILURE(expectRepeatedStepsEqual(
         fmu, once, repeated, 20, h,
