@@ -178,17 +178,7 @@ void ConnectorFmuModel::computeOutputs(double* values) const
 void ConnectorFmuModel::writeOutputs(double* values,
                                      const ConnectorOutputs& outputs) const
 {
-    const std::string& model = identity().modelIdentifier;
-    if (outputs.extra.size() != extraCount_
-        || outputs.locals.size() != localCount_) {
-        throw std::logic_error(
-            model + ": " + std::to_string(outputs.extra.size())
-            + " extra output values and "
-            + std::to_string(outputs.locals.size()) + " local values, expected "
-            + std::to_string(extraCount_) + " and "
-            + std::to_string(localCount_));
-    }
-    // all checked before any is written
+    // all checked before any is written (checkTrailing checks the counts)
     double interface[interfaceOutputCount];
     interfaceValues(outputs.loads, interface);
     check(interface, firstOutput_, interfaceOutputCount);
