@@ -136,8 +136,10 @@ Result run(const Case& c, int N, double h, double tolerance = 0.0)
     r.cpuPerSecond = (cpuSeconds() - cpuStart) / (3.0 * c.period);
     r.amplitude = 2.0 * std::abs(a1) / perPeriod;
     const CvodeBdf::Statistics st = line.statistics();
-    // + the loads' evaluation after each step
-    r.forcesPerStep = double(st.rhsEvaluations) / (3 * perPeriod) + 1.0;
+    // + the loads' evaluation after each step (the trapezoidal rule's
+    // takes the forces its step's end found)
+    r.forcesPerStep = double(st.rhsEvaluations) / (3 * perPeriod)
+        + (tolerance > 0.0 ? 1.0 : 0.0);
     r.stepsPerStep = double(st.steps) / (3 * perPeriod);
     r.matricesPerStep = double(st.jacobianEvaluations) / (3 * perPeriod);
     return r;
@@ -274,12 +276,14 @@ void slackTautRow(int N, double h, double tolerance)
         "slack-taut N = %d h = %g tolerance %g: work %.6g J, energy "
         "change %.6g J, dissipated %.6g J, unreported %.4g J (%.3g of "
         "%.6g J through the fairlead); the scheme's work %.6g J, "
-        "unreported %.3g of the throughput; harmonic %.8g N, peak %.5g N, "
-        "CPU %.3g s\n",
+        "unreported %.3g of the throughput; the energy account "
+        "(stepEnergy: added mass %.3g J, dissipated %.6g J) unexplained "
+        "%.3g of it; harmonic %.8g N, peak %.5g N, CPU %.3g s\n",
         N, h, tolerance, r.work, r.change, r.dissipated, r.imbalance,
         r.imbalance / r.throughput, r.throughput, r.stepWork,
-        r.stepImbalance / r.throughput, r.harmonic, r.peak,
-        cpuSeconds() - start);
+        r.stepImbalance / r.throughput, r.account.addedMass,
+        r.account.dissipated(), r.accountImbalance / r.throughput, r.harmonic,
+        r.peak, cpuSeconds() - start);
     std::fflush(stdout);
 }
 

@@ -142,7 +142,7 @@ void CvodeBdf::restart(double t0, const double* y0)
     }
 }
 
-void CvodeBdf::advance(double tEnd, double* yOut)
+void CvodeBdf::advance(double tEnd, double* yOut, const StepObserver& onStep)
 {
     void* mem = h_->cvode.get();
     int flag = CVodeSetStopTime(mem, tEnd);
@@ -150,14 +150,20 @@ void CvodeBdf::advance(double tEnd, double* yOut)
         throw std::runtime_error("CVodeSetStopTime failed: " + flagName(flag)
                                  + " (" + lastMessage_ + ")");
     }
-    double t = 0.0;
-    flag = CVode(mem, tEnd, h_->y.get(), &t, CV_NORMAL);
-    if (flag < 0) {
-        throw std::runtime_error("CVode failed at t = " + std::to_string(t)
-                                 + ": " + flagName(flag) + " (" + lastMessage_
-                                 + ")");
-    }
     const double* y = N_VGetArrayPointer(h_->y.get());
+    double t = 0.0;
+    do {
+        flag = CVode(mem, tEnd, h_->y.get(), &t,
+                     onStep ? CV_ONE_STEP : CV_NORMAL);
+        if (flag < 0) {
+            throw std::runtime_error("CVode failed at t = " + std::to_string(t)
+                                     + ": " + flagName(flag) + " ("
+                                     + lastMessage_ + ")");
+        }
+        if (onStep) {
+            onStep(t, y);
+        }
+    } while (onStep && flag == CV_SUCCESS && t < tEnd);
     std::copy(y, y + size_, yOut);
 }
 

@@ -42,9 +42,14 @@ public:
     //  history is dropped, the next step is of order 1)
     void restart(double t0, const double* y0);
 
+    //- Called after each of CVODE's internal steps with the step's end
+    //  time and state. Must not throw.
+    using StepObserver = std::function<void(double t, const double* y)>;
+
     //- Integrates to exactly tEnd (a stop time: f is never evaluated past
-    //  it) and writes y(tEnd)
-    void advance(double tEnd, double* y);
+    //  it) and writes y(tEnd); with `onStep`, one internal step at a time
+    //  (CV_ONE_STEP: the same steps), calling it after each
+    void advance(double tEnd, double* y, const StepObserver& onStep = {});
 
     //- Counters accumulated since construction
     Statistics statistics() const;

@@ -146,6 +146,17 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
         f.friction.assign(n, 0.0);
         f.sliding.assign(n, Vector3::Zero());
     }
+    if (diagnostics) {
+        f.drag.resize(n);
+        f.seabed.resize(n);
+        if (water && !water->flowAcceleration.empty()) {
+            f.flowInertia.assign(n, Vector3::Zero());
+        } else {
+            f.flowInertia.clear();
+        }
+        f.damping.resize(std::size_t(N));
+        f.sectionSeabedEnergy.assign(sections, 0.0);
+    }
     // f's and the positions' storage through raw pointers (Eigen's packet
     // stores may alias anything: the vectors' data pointers would be
     // reloaded after every store)
@@ -184,6 +195,9 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
             if (stretched < 1e-12 * l) {
                 fQ[j].setZero();
                 fT[j] = 0.0;
+                if (diagnostics) {
+                    f.damping[std::size_t(j)] = 0.0;
+                }
                 continue;
             }
             const double inverseL = c.inverseL;
@@ -195,6 +209,7 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
                 strainEnergy += 0.5 * c.EA * std::max(strain, 0.0)
                     * std::max(strain, 0.0) * l;
                 dissipatedPower += c.BA * strainRate * strainRate * l;
+                f.damping[std::size_t(j)] = c.BA * strainRate;
             }
         }
     }
@@ -252,6 +267,7 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
                 - node.pointBuoyancy
                     * (freeSurface ? wetHeightOfNode : R[i][2]);
         }
+        Vector3 seabed = Vector3::Zero(); // push and friction
         if (onSeabed(i) && i != 0) {
             const double depth = zb - R[i][2];
             // The damping engages over the depth at which the stiffness
@@ -264,10 +280,15 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
                 node.contact(p.seabedStiffness * depth - damping * V[i][2]),
                 0.0);
             E[2] += push;
+            seabed[2] = push;
             if (diagnostics) {
                 if (depth > 0.0) {
-                    seabedEnergy += node.contact(0.5 * p.seabedStiffness * depth
-                                                 * depth);
+                    const double energy
+                        = node.contact(0.5 * p.seabedStiffness * depth * depth);
+                    seabedEnergy += energy;
+                    f.sectionSeabedEnergy[std::size_t(
+                        node.piece[node.pieces - 1].section)]
+                        += energy;
                 }
                 // what the penalty's energy loses beyond the work the push
                 // does on the node: the damping's c vz^2 while it pushes,
@@ -278,10 +299,16 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
                     - push * V[i][2];
             }
             if (friction && push > 0.0) {
-                E -= seabedFriction(p, push, Vector3(V[i][0], V[i][1], 0.0),
-                                    fTangent[i], fFriction[i], fSliding[i],
-                                    diagnostics ? &dissipatedPower : nullptr);
+                const Vector3 F
+                    = seabedFriction(p, push, Vector3(V[i][0], V[i][1], 0.0),
+                                     fTangent[i], fFriction[i], fSliding[i],
+                                     diagnostics ? &dissipatedPower : nullptr);
+                E -= F;
+                seabed -= F;
             }
+        }
+        if (diagnostics) {
+            f.seabed[std::size_t(i)] = seabed;
         }
         const Vector3 t = fTangent[i];
         Vector3 u = -V[i]; // water velocity relative to the node
@@ -327,6 +354,7 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
         // power the drag takes from the line's motion relative to the water
         if (diagnostics) {
             dissipatedPower += drag.dot(u);
+            f.drag[std::size_t(i)] = drag;
         }
         if (water && !water->flowAcceleration.empty()) {
             // The flow's inertia (Froude-Krylov and added mass, as MoorDyn's
@@ -334,9 +362,13 @@ void forces(const MooringLineParameters& p, const LineLayout& layout,
             // of the water on the line, not dissipation
             const Vector3& a = water->flowAcceleration[std::size_t(i)];
             const double aAlong = a.dot(t);
-            E += phi
+            const Vector3 inertia = phi
                 * (node.flowInertiaN * (a - aAlong * t)
                    + node.flowInertiaT * aAlong * t);
+            E += inertia;
+            if (diagnostics) {
+                f.flowInertia[std::size_t(i)] = inertia;
+            }
         }
         fExternal[i] = E;
     }

@@ -5,6 +5,8 @@
 #ifndef CONNECTORS_MOORINGLINE_LINEFORCES_HPP
 #define CONNECTORS_MOORINGLINE_LINEFORCES_HPP
 
+#include <cstring>
+#include <utility>
 #include <vector>
 
 #include "common/Kinematics.hpp"
@@ -54,11 +56,52 @@ struct NodeForces {
     //  is saturated (|v| above frictionVelocity; its magnitude then does
     //  not change with the speed), else zero
     std::vector<Vector3> sliding;
+    //- With diagnostics only (else left as they were), the parts of
+    //  `external` that do work other than gravity's, per node 0..N [N]:
+    //  the drag, the seabed's push and friction, the flow's inertia; the
+    //  damping part BA de/dt of each segment's tension [N] (flowInertia
+    //  empty without the flow's acceleration); the seabed
+    //  penalty's energy per section [J] (a joint's node counts in the
+    //  section above it, towards P). The energy account of a time step
+    //  (LineEnergy.hpp) takes them at its start and its end.
+    std::vector<Vector3> drag, seabed, flowInertia;
+    std::vector<double> damping, sectionSeabedEnergy;
     //- Potential of gravity and buoyancy of all nodes (the ends' half
     //  segments), heights from z = 0 [J]
     double gravityEnergy = 0.0;
     double strainEnergy = 0.0, seabedEnergy = 0.0, dissipatedPower = 0.0;
     int groundedSegments = 0;
+
+    //- Exchanges every field with `o` (the storage's pointers: cheaper
+    //  than std::swap's three moves; a field added above goes here too)
+    void swap(NodeForces& o) noexcept
+    {
+        T.swap(o.T);
+        stretched.swap(o.stretched);
+        submerged.swap(o.submerged);
+        normalDrag.swap(o.normalDrag);
+        tangentialDrag.swap(o.tangentialDrag);
+        friction.swap(o.friction);
+        normalMass.swap(o.normalMass);
+        tangentialMass.swap(o.tangentialMass);
+        damping.swap(o.damping);
+        sectionSeabedEnergy.swap(o.sectionSeabedEnergy);
+        q.swap(o.q);
+        tangent.swap(o.tangent);
+        F.swap(o.F);
+        a.swap(o.a);
+        external.swap(o.external);
+        relative.swap(o.relative);
+        sliding.swap(o.sliding);
+        drag.swap(o.drag);
+        seabed.swap(o.seabed);
+        flowInertia.swap(o.flowInertia);
+        std::swap(gravityEnergy, o.gravityEnergy);
+        std::swap(strainEnergy, o.strainEnergy);
+        std::swap(seabedEnergy, o.seabedEnergy);
+        std::swap(dissipatedPower, o.dissipatedPower);
+        std::swap(groundedSegments, o.groundedSegments);
+    }
 };
 
 //- Forces on the nodes at positions r and velocities v (0..N) of the
@@ -97,6 +140,18 @@ void unpack(const std::vector<double>& nodes, int N, std::vector<Vector3>& r,
 
 //- Largest component of a free node's net force [N]
 double largestForce(const NodeForces& f);
+
+//- Whether a and b hold the same vectors, bit for bit
+inline bool sameBits(const std::vector<Vector3>& a,
+                     const std::vector<Vector3>& b)
+{
+    static_assert(sizeof(Vector3) == 3 * sizeof(double),
+                  "Vector3 is 3 doubles");
+    return a.size() == b.size()
+        && (a.empty()
+            || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vector3))
+                == 0);
+}
 
 } // namespace connectors
 

@@ -107,6 +107,13 @@ struct LineLayout {
     {
         return sections[std::size_t(segmentSection[std::size_t(j)])];
     }
+    //- The section node i counts in: its own, at a joint the one above
+    //  it (towards P), as the FMU's shape.section
+    int sectionOfNode(int i) const
+    {
+        const Node& node = nodes[std::size_t(i)];
+        return node.piece[node.pieces - 1].section;
+    }
     //- Fractional node index (node i at i, linear between) of the point
     //  at `fromQ` (0 at Q, 1 at P) of the unstretched length
     double nodeCoordinate(double fromQ) const;

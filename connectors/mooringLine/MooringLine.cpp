@@ -201,6 +201,25 @@ int MooringLine::rhs(double t, const double* y, double* ydot) const
     return 0;
 }
 
+void MooringLine::energyRatesAt(double t, const double* y, LineEnergy& rates)
+{
+    const int N = layout_.N;
+    std::vector<Vector3>& r = work_.r;
+    std::vector<Vector3>& v = work_.v;
+    r.resize(std::size_t(N + 1));
+    v.resize(std::size_t(N + 1));
+    endsAt(std::clamp((t - ends_.t0) / ends_.h, 0.0, 1.0), r[0], v[0], r[N],
+           v[N]);
+    for (int i = 1; i < N; ++i) {
+        const double* yi = y + 6 * (i - 1);
+        r[std::size_t(i)] = Vector3(yi[0], yi[1], yi[2]);
+        v[std::size_t(i)] = Vector3(yi[3], yi[4], yi[5]);
+    }
+    nodeForces(parameters_, layout_, r, v, r[0][2], work_.f, &water_);
+    ++energyEvaluations_;
+    energyRates(parameters_, layout_, r, v, work_.f, r[0][2], &water_, rates);
+}
+
 void MooringLine::checkJointsSubmerged(const std::vector<Vector3>& r) const
 {
     // With freeSurface = 0 a buoy keeps its buoyancy above the water: a
@@ -270,11 +289,28 @@ void MooringLine::advance(MooringLineState& state, const BodyKinematics& A,
     std::vector<double>& y = work_.nodes; // its storage kept
     y = state.nodes;
     std::shared_ptr<const TrapezoidMatrix> newton = state.newton;
-    stepWork_ = 0.0;
+    stepEnergy_.clear(layout_.sections.size());
     try {
         if (integrator_) {
+            // the account: the rates' trapezoidal integral over CVODE's
+            // internal steps (one force evaluation each)
             integrator_->restart(state.time, state.nodes.data());
-            integrator_->advance(state.time + h, y.data());
+            const bool account = parameters_.energyAccount;
+            if (account) {
+                energyRatesAt(state.time, state.nodes.data(), work_.rates0);
+            }
+            double t0 = state.time;
+            integrator_->advance(state.time + h, y.data(),
+                                 [&](double t, const double* yt) {
+                                     if (!account) {
+                                         return;
+                                     }
+                                     energyRatesAt(t, yt, work_.rates1);
+                                     stepEnergy_.addTrapezoid(
+                                         work_.rates0, work_.rates1, t - t0);
+                                     std::swap(work_.rates0, work_.rates1);
+                                     t0 = t;
+                                 });
         } else {
             // Equal substeps no longer than maxStep, each halved where it
             // fails (trapezoidInterval)

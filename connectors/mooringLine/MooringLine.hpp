@@ -72,6 +72,7 @@
 #include "catenary/CatenaryProfile.hpp"
 #include "common/Kinematics.hpp"
 #include "mooringLine/CvodeBdf.hpp"
+#include "mooringLine/LineEnergy.hpp"
 #include "mooringLine/LineLayout.hpp"
 #include "mooringLine/LineForces.hpp"
 #include "mooringLine/LineStatics.hpp"
@@ -162,6 +163,11 @@ struct MooringLineParameters {
     //  default; explicit in the coupling, it can destabilise a body whose
     //  mass is not large against it, README)
     bool endInertia = false;
+    //- Whether `advance` keeps the energy account (stepEnergy): true, or
+    //  false, where stepEnergy stays zero and a step leaves out the
+    //  account's sums (about 10 % of the law's step, 6 % of the FMU's:
+    //  bench/mooringLine/README.md); the motion is the same either way
+    bool energyAccount = true;
     //- Sections 2, 3, ... from Q towards P after the first (the fields
     //  above: length, EA, ..., segments), each with the point at its lower
     //  joint; empty: a uniform line
@@ -200,6 +206,9 @@ struct MooringLineState {
     //  (TrapezoidMatrix::savedSize)
     static std::size_t serializedSize(int segments);
     std::vector<double> serialize() const;
+    //- The same appended to `out` (a caller that saves into the same
+    //  vector every step allocates nothing after the first)
+    void serialize(std::vector<double>& out) const;
     //- Throws std::invalid_argument unless `data` holds a state of N segments
     static MooringLineState deserialize(const std::vector<double>& data,
                                         int segments);
@@ -226,6 +235,11 @@ struct MooringLineOutput {
     std::vector<double> sectionLowerTension, sectionUpperTension;
     //- Positions of the joints between sections, from Q [m]
     std::vector<Vector3> joints;
+    //- Kinetic energy of the free nodes, v' M v / 2 with the added mass
+    //  about each node's tangent [J], of the line and per section from Q
+    //  (a joint's node in the section above it)
+    double kineticEnergy = 0.0;
+    std::vector<double> sectionKineticEnergy;
 };
 
 class MooringLine {
@@ -266,27 +280,41 @@ public:
                  const std::vector<Vector3>& flow = {},
                  const std::vector<Vector3>& flowAcceleration = {});
 
+    //- What `evaluate` computes: everything, or the loads (the interface
+    //  diagnostics, fairleadTension, anchorTension, groundedLength, H and
+    //  V) and not the shape, the sections' tensions, the joints or the
+    //  kinetic energy (left empty and zero)
+    enum class Detail { all, loads };
+
     //- Loads and diagnostics of `state` with the ends at A's and B's
     //  attachment points, in the water's `flow` and `flowAcceleration` (as
-    //  in advance); shapePoints 0 or >= 2
+    //  in advance); shapePoints 0 or >= 2. The shape, the tensions, the
+    //  joints and the kinetic energy do not depend on the water.
     MooringLineOutput
     evaluate(const MooringLineState& state, const BodyKinematics& A,
              const BodyKinematics& B, int shapePoints,
              const std::vector<Vector3>& flow = {},
-             const std::vector<Vector3>& flowAcceleration = {}) const;
+             const std::vector<Vector3>& flowAcceleration = {},
+             Detail detail = Detail::all) const;
 
     //- Integrator counters since construction
     CvodeBdf::Statistics statistics() const;
 
+    //- The energy account of the last `advance` (LineEnergy.hpp): the
+    //  work done on the line by its ends, by the water and by the added
+    //  mass, and the energy it dissipated, per section, in the
+    //  integrator's own terms (the trapezoidal rule: the mean forces over
+    //  each step times the nodes' displacements; CVODE: the trapezoidal
+    //  rule's integral of the rates over its internal steps). The ends'
+    //  work leaves out their inertia (endInertia). The loads at the
+    //  steps' ends, whose sampled power misses what happens between them
+    //  (a snap shorter than the step), do not give it.
+    const LineEnergy& stepEnergy() const { return stepEnergy_; }
     //- Work done on the line by its two ends over the last `advance` [J]
-    //  in the trapezoidal rule's own terms: the mean forces on the end
-    //  nodes over each step (the end segments' discrete-gradient elastic
-    //  tension and mean damping, the mean of the ends' weight, buoyancy,
-    //  drag and seabed forces) times the ends' displacements, without the
-    //  ends' inertia (endInertia). The loads at the steps' ends, whose
-    //  sampled power misses what happens between them (a snap shorter than
-    //  the step), do not give it. 0 with CVODE.
-    double stepWork() const { return stepWork_; }
+    double stepWork() const
+    {
+        return stepEnergy_.fairlead + stepEnergy_.anchor;
+    }
 
     const MooringLineParameters& parameters() const { return parameters_; }
 
@@ -296,6 +324,9 @@ private:
         double t0 = 0.0, h = 1.0;
     };
     int rhs(double t, const double* y, double* ydot) const;
+    //- The energy account's rates (energyRates) of the free nodes' state
+    //  y at time t of the step, the ends on their path, into `rates`
+    void energyRatesAt(double t, const double* y, LineEnergy& rates);
     //- Positions and velocities of Q and P on the ends' path at the
     //  fraction s in [0, 1] of the step (exactly the given ones at 0, 1)
     void endsAt(double s, Vector3& rQ, Vector3& vQ, Vector3& rP,
@@ -337,21 +368,28 @@ private:
     WaterMotion water_;
     std::unique_ptr<CvodeBdf> integrator_; // with Integrator::cvode
     CvodeBdf::Statistics trapezoidStatistics_;
-    double stepWork_ = 0.0;
-    //- Node positions, velocities (ends included) and forces of the last
-    //  `evaluate`, whose accelerations trapezoidStep takes as its start's
-    //  when it starts from exactly those positions and velocities
+    LineEnergy stepEnergy_;
+    //- Node positions, velocities (ends included), seabed height and
+    //  forces (with diagnostics) of the last `evaluate` or trapezoidal
+    //  step's end: trapezoidStep takes them as its start's, and evaluate
+    //  as its own, when they are exactly those positions and velocities
     mutable struct {
         std::vector<Vector3> r, v;
+        double zb = 0.0;
         WaterMotion water;
         NodeForces f;
+        //- evaluate's positions, velocities and water before the
+        //  comparison (storage kept from call to call)
+        std::vector<Vector3> nextR, nextV;
+        WaterMotion nextWater;
     } lastEvaluated_;
     //- Storage of advance and trapezoidStep, overwritten by every step
     struct Workspace {
         //- the nodes over a coupling step (MooringLineState::nodes)
         std::vector<double> nodes;
         std::vector<Vector3> r0, v0, r, v, b;
-        //- the start's forces (when not those of the last `evaluate`)
+        //- the start's forces (when not those of the last `evaluate` or
+        //  step), Newton's
         NodeForces f0, f;
         //- the start's segments; the discrete gradient's corrections to
         //  the elastic forces at the start and the end of the step [N]
@@ -362,7 +400,12 @@ private:
         //- Newton matrices formed before, their storage reused by a step
         //  that forms one where no state holds them any more
         std::vector<std::shared_ptr<TrapezoidMatrix>> matrices;
+        //- CVODE's energy rates at the start and the end of its last
+        //  internal step
+        LineEnergy rates0, rates1;
     } work_;
+    //- Force evaluations of CVODE's energy account
+    long energyEvaluations_ = 0;
 };
 
 } // namespace connectors

@@ -79,11 +79,10 @@ void MooringLine::waterMotion(const std::vector<Vector3>& flow,
     }
 }
 
-MooringLineOutput
-MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
-                      const BodyKinematics& B, int shapePoints,
-                      const std::vector<Vector3>& flow,
-                      const std::vector<Vector3>& flowAcceleration) const
+MooringLineOutput MooringLine::evaluate(
+    const MooringLineState& state, const BodyKinematics& A,
+    const BodyKinematics& B, int shapePoints, const std::vector<Vector3>& flow,
+    const std::vector<Vector3>& flowAcceleration, Detail detail) const
 {
     requireFiniteInputs(lawName, A, B);
     const MooringLineParameters& p = parameters_;
@@ -93,20 +92,33 @@ MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
         throw std::invalid_argument("mooringLine: state does not fit the line");
     }
     const AxialGeometry g = axialGeometry(A, B, p.p_AoP_A, p.p_BoQ_B);
-    // into lastEvaluated_ (storage kept from call to call)
-    std::vector<Vector3>& r = lastEvaluated_.r;
-    std::vector<Vector3>& v = lastEvaluated_.v;
-    r.resize(std::size_t(N + 1));
-    v.resize(std::size_t(N + 1));
-    unpack(state.nodes, N, r, v);
-    r[0] = attachment(B, p.p_BoQ_B);
-    r[N] = attachment(A, p.p_AoP_A);
-    v[0] = attachmentVelocity(B, p.p_BoQ_B);
-    v[N] = attachmentVelocity(A, p.p_AoP_A);
-    WaterMotion& water = lastEvaluated_.water;
+    // The forces of the last trapezoidal step's end (or evaluation) where
+    // they are those of the same numbers, else evaluated; kept in
+    // lastEvaluated_ for the next step's start
+    auto& last = lastEvaluated_;
+    std::vector<Vector3>& nodesR = last.nextR;
+    std::vector<Vector3>& nodesV = last.nextV;
+    nodesR.resize(std::size_t(N + 1));
+    nodesV.resize(std::size_t(N + 1));
+    unpack(state.nodes, N, nodesR, nodesV);
+    nodesR[0] = attachment(B, p.p_BoQ_B);
+    nodesR[N] = attachment(A, p.p_AoP_A);
+    nodesV[0] = attachmentVelocity(B, p.p_BoQ_B);
+    nodesV[N] = attachmentVelocity(A, p.p_AoP_A);
+    WaterMotion& water = last.nextWater;
     waterMotion(flow, flowAcceleration, water);
-    NodeForces& f = lastEvaluated_.f;
-    nodeForces(p, L, r, v, r[0][2], f, &water);
+    const double zb = nodesR[0][2];
+    if (!(sameBits(nodesR, last.r) && sameBits(nodesV, last.v) && last.zb == zb
+          && sameBits(water.flow, last.water.flow)
+          && sameBits(water.flowAcceleration, last.water.flowAcceleration))) {
+        last.r.swap(nodesR);
+        last.v.swap(nodesV);
+        last.zb = zb;
+        std::swap(last.water, water);
+        nodeForces(p, L, last.r, last.v, zb, last.f, &last.water);
+    }
+    const std::vector<Vector3>& r = last.r;
+    const NodeForces& f = last.f;
 
     MooringLineOutput out;
     ConnectorResult& res = out.loads;
@@ -159,6 +171,9 @@ MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
         throw std::invalid_argument(
             "mooringLine: shapePoints must be 0 or >= 2");
     }
+    if (detail == Detail::loads) {
+        return out;
+    }
     for (int k = 0; k < shapePoints; ++k) {
         const double u = L.nodeCoordinate(1.0 - double(k) / (shapePoints - 1));
         const int i = std::min(int(u), N - 1);
@@ -184,12 +199,21 @@ MooringLine::evaluate(const MooringLineState& state, const BodyKinematics& A,
     for (const int i : L.jointNodes()) {
         out.joints.push_back(r[std::size_t(i)]);
     }
+    out.sectionKineticEnergy = kineticEnergy(L, last.v, f);
+    for (const double K : out.sectionKineticEnergy) {
+        out.kineticEnergy += K;
+    }
     return out;
 }
 
 CvodeBdf::Statistics MooringLine::statistics() const
 {
-    return integrator_ ? integrator_->statistics() : trapezoidStatistics_;
+    if (!integrator_) {
+        return trapezoidStatistics_;
+    }
+    CvodeBdf::Statistics s = integrator_->statistics();
+    s.rhsEvaluations += energyEvaluations_;
+    return s;
 }
 
 } // namespace connectors

@@ -3,6 +3,7 @@
 // state's layout, and the construction of the line.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -142,12 +143,19 @@ std::size_t MooringLineState::serializedSize(int segments)
 
 std::vector<double> MooringLineState::serialize() const
 {
-    std::vector<double> out
+    std::vector<double> out;
+    serialize(out);
+    return out;
+}
+
+void MooringLineState::serialize(std::vector<double>& out) const
+{
+    const double ends[]
         = {time,  Q[0],  Q[1],  Q[2],  P[0],  P[1],  P[2],  vQ[0], vQ[1], vQ[2],
            vP[0], vP[1], vP[2], aQ[0], aQ[1], aQ[2], aP[0], aP[1], aP[2]};
+    out.insert(out.end(), std::begin(ends), std::end(ends));
     out.insert(out.end(), nodes.begin(), nodes.end());
     TrapezoidMatrix::save(newton.get(), int(nodes.size() / 6) + 1, out);
-    return out;
 }
 
 MooringLineState MooringLineState::deserialize(const std::vector<double>& data,

@@ -8,7 +8,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -18,19 +17,6 @@
 #include "mooringLine/LineStatics.hpp"
 
 namespace connectors {
-
-namespace {
-
-static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 is 3 doubles");
-bool sameBits(const std::vector<Vector3>& a, const std::vector<Vector3>& b)
-{
-    return a.size() == b.size()
-        && (a.empty()
-            || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vector3))
-                == 0);
-}
-
-} // namespace
 
 void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
                    const NodeForces& f0, std::vector<StartSegment>& segments)
@@ -55,33 +41,6 @@ void startSegments(const LineLayout& layout, const std::vector<Vector3>& r0,
 }
 
 namespace {
-
-//- Segment j's mean pull on node j towards j + 1 over a trapezoidal step
-//  [N]: the discrete gradient of its strain energy from the start segment
-//  s0 to the nodes' end positions r, plus the mean of its damping's pull
-//  at the start (total tension T0 less the elastic one, along q0) and at
-//  the end (velocities v)
-Vector3 meanPull(const LineLayout::Section& c, const StartSegment& s0,
-                 double T0, const Vector3& q0, const std::vector<Vector3>& r,
-                 const std::vector<Vector3>& v, std::size_t j)
-{
-    const Vector3 dr = r[j + 1] - r[j];
-    const double length = dr.norm();
-    const double strain = length * c.inverseL - 1.0;
-    const double L = s0.length + length;
-    Vector3 pull = Vector3::Zero();
-    if (L > 0.0) {
-        pull
-            = axialGradient(c.EA, s0.strain, strain).tension / L * (s0.dr + dr);
-    }
-    const double damping0 = T0 - c.EA * std::max(s0.strain, 0.0);
-    pull += 0.5 * damping0 * q0;
-    if (length > 1e-12 * c.l) {
-        const Vector3 q = dr / length;
-        pull += 0.5 * c.BA * q.dot(v[j + 1] - v[j]) * c.inverseL * q;
-    }
-    return pull;
-}
 
 //- Segment j's discrete gradient pull on node j towards j + 1 less its
 //  elastic pull at the step's start (into d0[j]) and at its end (into
@@ -207,14 +166,14 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     unpack(nodes, N, w.r0, w.v0);
     endsAt(s0, w.r0[0], w.v0[0], w.r0[n], w.v0[n]);
     const double zb = w.r0[0][2];
-    // The start's accelerations: those `evaluate` found at the same node
-    // positions and velocities (the end of the previous step, as the FMU
-    // reports its outputs), else a force evaluation; the same function of
-    // the same numbers either way
+    // The start's forces: those of the previous step's end or of
+    // `evaluate` at the same node positions and velocities, else a force
+    // evaluation; the same function of the same numbers either way
     const NodeForces* f0 = &lastEvaluated_.f;
     if (!(sameBits(lastEvaluated_.r, w.r0) && sameBits(lastEvaluated_.v, w.v0)
+          && lastEvaluated_.zb == zb
           && sameBits(lastEvaluated_.water.flow, water_.flow))) {
-        nodeForces(parameters_, layout_, w.r0, w.v0, zb, w.f0, &water_, false);
+        nodeForces(parameters_, layout_, w.r0, w.v0, zb, w.f0, &water_);
         ++trapezoidStatistics_.rhsEvaluations;
         f0 = &w.f0;
     }
@@ -241,11 +200,36 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     // is scaled by M h^2/2. Each correction is about 1e-3 of the previous
     // one (the matrix omits only small terms): measured on the reference
     // lines, largest first corrections 1.8e-6 (lab chain, 1 ms) and 7.5e-6
-    // (OC4, 0.1 s) of a segment, second ones 2e-9, third 2.5e-12. A
-    // correction below 1e-5 of a segment ends the iteration: one solve per
-    // step, and the tension harmonic equals that of Newton iterated to
-    // 1e-10 of a segment within 5e-8 (lab) and 3e-6 (OC4) of itself. A
-    // first correction above largestMiss segments rejects the step.
+    // (OC4, 0.1 s) of a segment, second ones 2e-9, third 2.5e-12. A first
+    // correction above largestMiss segments rejects the step.
+    //
+    // The iteration ends at the iterate after a correction below
+    // smallCorrection of a segment, or after one below 1e-5 of a segment
+    // where the residual's work over the step (dx . M times the residual,
+    // summed over the nodes: the energy the step makes or loses) is below
+    // energyTolerance of the work the mean forces do on the nodes (the sum
+    // of |dx . M dv/h|). The forces at that iterate are the step's end's:
+    // the energy account, the next step's start and the loads' `evaluate`
+    // take them, so that a step costs two force evaluations, as before.
+    // Where a segment goes taut or slack within the step the predictor's
+    // matrix may not converge at all (the corrections cycle about 3e-7 of
+    // a segment, the segment taut at one iterate and slack at the next):
+    // after maxEnergyCorrections more corrections the step is halved
+    // (the deepest halving takes the first iterate after a correction
+    // below 1e-5 of a segment). On the lab chain's slack-taut forcing
+    // (2 s) the first iterate after a correction below 1e-5 of a segment
+    // (the rule before) left 4e-4 and 2e-3 of the energy through the
+    // fairlead unexplained at 1 ms and 0.1 ms (Newton converged to
+    // round-off: 1e-10); with these rules -5.5e-7 and 1.2e-6
+    // (mooringLineEnergyTest), at 2.01 force evaluations a step where
+    // nothing snaps (one step in a hundred takes a second correction; OC4
+    // at 0.01 and 0.1 s, N = 10 to 40: none). Over its 10 s the snapping
+    // lab chain at 1 ms takes 36 force evaluations and 16 matrices a
+    // coupling step (9.2 steps), against 39 and 21 (11 steps) before.
+    constexpr double smallCorrection = 1e-7, energyTolerance = 1e-4;
+    constexpr int maxEnergyCorrections = 2;
+    const bool lastResort = !(largestMiss < 1e300); // the deepest halving
+    int energyCorrections = 0;
     //
     // A matrix kept from the steps before (chord Newton) replaces the
     // step's own where it serves (`serves`) and its first correction is
@@ -258,9 +242,41 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
     const double inverseH = 1.0 / h;
     const TrapezoidMatrix* J = nullptr;
     std::shared_ptr<TrapezoidMatrix> formed;
+    double previous = 0.0; // the last correction [m]
+    // Converged at w.r, w.v: the forces there (w.f) are the step's end's;
+    // with those at its start they give the step's energy account (the
+    // mean forces times the nodes' displacements, LineEnergy.hpp), then
+    // the next step's start and the loads' `evaluate` (lastEvaluated_)
+    const auto accept = [&]() {
+        if (parameters_.energyAccount) {
+            addTrapezoidStep(layout_, {w.r0, w.v0, *f0}, {w.r, w.v, w.f},
+                             w.start, h, &water_, stepEnergy_);
+        }
+        for (std::size_t i = 1; i < n; ++i) {
+            double* y = nodes.data() + 6 * (i - 1);
+            for (int k = 0; k < 3; ++k) {
+                y[k] = w.r[i][k];
+                y[3 + k] = w.v[i][k];
+            }
+        }
+        lastEvaluated_.f.swap(w.f);
+        lastEvaluated_.r.swap(w.r);
+        lastEvaluated_.v.swap(w.v);
+        lastEvaluated_.zb = zb;
+        lastEvaluated_.water = water_;
+        ++trapezoidStatistics_.steps;
+        if (formed) {
+            newton = std::move(formed);
+        }
+        return true;
+    };
     for (int iteration = 0; iteration < 10; ++iteration) {
-        nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_, false);
+        nodeForces(parameters_, layout_, w.r, w.v, zb, w.f, &water_,
+                   iteration > 0);
         ++trapezoidStatistics_.rhsEvaluations;
+        if (iteration > 0 && previous <= smallCorrection * l) {
+            return accept();
+        }
         const bool kink
             = axialCorrections(layout_, w.start, w.r, w.f, w.d0, w.d1);
         const Vector3* const a1 = w.f.a.data();
@@ -279,19 +295,37 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
                                      const Vector3& F) {
             return Vector3(F / mn + ((1.0 / mt - 1.0 / mn) * F.dot(t)) * t);
         };
+        const bool check = iteration > 0; // the residual's work
+        double residualWork = 0.0, work = 0.0;
         for (std::size_t i = 1; i < n; ++i) {
             // the elastic tensions at the step's start and end replaced by
             // the discrete gradient, through the masses at the start and
             // the end (node i: segment i's pull less segment i - 1's)
             const Vector3& t = t1[i];
             const double mn = mn1[i], mt = mt1[i];
-            const Vector3 residual = (v[i] - v0[i]) * inverseH
+            const Vector3 dv = (v[i] - v0[i]) * inverseH;
+            const Vector3 residual = dv
                 - 0.5
                     * (a0[i] + a1[i]
                        + inverseTimes(mn0[i], mt0[i], t0[i], d0[i] - d0[i - 1])
                        + inverseTimes(mn, mt, t, d1[i] - d1[i - 1]));
             const double along = residual.dot(t);
             b[i - 1] = -0.5 * h * h * (mn * residual + (mt - mn) * along * t);
+            if (check) {
+                const Vector3 dx = r[i] - r0[i];
+                residualWork += dx.dot(b[i - 1]);
+                work += std::abs(mn * dx.dot(dv)
+                                 + (mt - mn) * dx.dot(t) * dv.dot(t));
+            }
+        }
+        if (iteration > 0 && previous <= 1e-5 * l) {
+            if (std::abs(residualWork) <= 0.5 * h * h * energyTolerance * work
+                || lastResort) {
+                return accept();
+            }
+            if (++energyCorrections > maxEnergyCorrections) {
+                break; // not converging: halved
+            }
         }
         if (iteration == 0 && newton
             && serves(*newton, h, kink, parameters_, layout_, w.r, w.f, zb)) {
@@ -339,36 +373,7 @@ bool MooringLine::trapezoidStep(std::vector<double>& nodes, double s0,
             ++trapezoidStatistics_.errorTestFailures;
             return false;
         }
-        if (largest <= 1e-5 * l) {
-            // the work of the ends on the line over the step: the mean
-            // forces the scheme's nodes 0 and N feel (the pull of their
-            // segments, weight, buoyancy, drag, seabed) times their
-            // displacements
-            const LineLayout::Section& first = layout_.sections.front();
-            const LineLayout::Section& last = layout_.sections.back();
-            const Vector3 pullQ
-                = meanPull(first, w.start.front(), f0->T.front(), f0->q.front(),
-                           w.r, w.v, 0);
-            const Vector3 pullP = meanPull(last, w.start.back(), f0->T.back(),
-                                           f0->q.back(), w.r, w.v, n - 1);
-            const Vector3 onQ
-                = pullQ + 0.5 * (f0->external.front() + w.f.external.front());
-            const Vector3 onP
-                = -pullP + 0.5 * (f0->external.back() + w.f.external.back());
-            stepWork_ -= onQ.dot(w.r[0] - w.r0[0]) + onP.dot(w.r[n] - w.r0[n]);
-            for (std::size_t i = 1; i < n; ++i) {
-                double* y = nodes.data() + 6 * (i - 1);
-                for (int k = 0; k < 3; ++k) {
-                    y[k] = w.r[i][k];
-                    y[3 + k] = w.v[i][k];
-                }
-            }
-            ++trapezoidStatistics_.steps;
-            if (formed) {
-                newton = std::move(formed);
-            }
-            return true;
-        }
+        previous = largest;
     }
     ++trapezoidStatistics_.convergenceFailures;
     return false;

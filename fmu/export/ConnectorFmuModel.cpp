@@ -178,9 +178,72 @@ void ConnectorFmuModel::computeOutputs(double* values) const
 void ConnectorFmuModel::writeOutputs(double* values,
                                      const ConnectorOutputs& outputs) const
 {
+    // all checked before any is written (checkTrailing checks the counts)
+    double interface[interfaceOutputCount];
+    interfaceValues(outputs.loads, interface);
+    check(interface, firstOutput_, interfaceOutputCount);
+    checkTrailing(outputs, 0);
+    double* out = std::copy(interface, interface + interfaceOutputCount,
+                            values + firstOutput_);
+    std::copy(outputs.extra.begin(), outputs.extra.end(), out);
+    std::copy(outputs.locals.begin(), outputs.locals.end(),
+              values + firstLocal_);
+}
+
+void ConnectorFmuModel::interfaceValues(const connectors::ConnectorResult& r,
+                                        double* v)
+{
+    const double interface[interfaceOutputCount]
+        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Ko_W[0],
+           r.A.m_Ko_W[1],    r.A.m_Ko_W[2], r.B.f_W[0],    r.B.f_W[1],
+           r.B.f_W[2],       r.B.m_Ko_W[0], r.B.m_Ko_W[1], r.B.m_Ko_W[2],
+           r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
+           r.dissipatedPower};
+    std::copy(interface, interface + interfaceOutputCount, v);
+}
+
+void ConnectorFmuModel::writeLeadingOutputs(
+    double* values, const connectors::ConnectorResult& r, const double* extra,
+    std::size_t n) const
+{
+    double interface[interfaceOutputCount];
+    interfaceValues(r, interface);
+    check(interface, firstOutput_, interfaceOutputCount);
+    check(extra, firstOutput_ + fmi2ValueReference(interfaceOutputCount), n);
+    double* out = std::copy(interface, interface + interfaceOutputCount,
+                            values + firstOutput_);
+    std::copy(extra, extra + n, out);
+}
+
+void ConnectorFmuModel::writeTrailingOutputs(double* values,
+                                             const ConnectorOutputs& outputs,
+                                             std::size_t n) const
+{
+    checkTrailing(outputs, n);
+    std::copy(outputs.extra.begin() + std::ptrdiff_t(n), outputs.extra.end(),
+              values + firstOutput_ + interfaceOutputCount + n);
+    std::copy(outputs.locals.begin(), outputs.locals.end(),
+              values + firstLocal_);
+}
+
+Block ConnectorFmuModel::trailingOutputs(std::size_t n) const
+{
+    const fmi2ValueReference first
+        = firstOutput_ + fmi2ValueReference(interfaceOutputCount + n);
+    if (localCount_ != 0
+        && firstLocal_ != firstOutput_ + interfaceOutputCount + extraCount_) {
+        throw std::logic_error(identity().modelIdentifier
+                               + ": the locals do not follow the outputs");
+    }
+    return {first, extraCount_ - n + localCount_};
+}
+
+void ConnectorFmuModel::checkTrailing(const ConnectorOutputs& outputs,
+                                      std::size_t n) const
+{
     const std::string& model = identity().modelIdentifier;
     if (outputs.extra.size() != extraCount_
-        || outputs.locals.size() != localCount_) {
+        || outputs.locals.size() != localCount_ || n > extraCount_) {
         throw std::logic_error(
             model + ": " + std::to_string(outputs.extra.size())
             + " extra output values and "
@@ -188,51 +251,31 @@ void ConnectorFmuModel::writeOutputs(double* values,
             + std::to_string(extraCount_) + " and "
             + std::to_string(localCount_));
     }
-    const connectors::ConnectorResult& r = outputs.loads;
-    const double interface[interfaceOutputCount]
-        = {r.A.f_W[0],       r.A.f_W[1],    r.A.f_W[2],    r.A.m_Ko_W[0],
-           r.A.m_Ko_W[1],    r.A.m_Ko_W[2], r.B.f_W[0],    r.B.f_W[1],
-           r.B.f_W[2],       r.B.m_Ko_W[0], r.B.m_Ko_W[1], r.B.m_Ko_W[2],
-           r.length,         r.lengthRate,  r.tension,     r.potentialEnergy,
-           r.dissipatedPower};
-    // Each group checked in one pass, and searched for the value to name
-    // only when one is not finite
-    const auto finite = [](const double* v, std::size_t n) {
-        bool all = true;
-        for (std::size_t i = 0; i < n; ++i) {
-            all &= std::isfinite(v[i]);
-        }
-        return all;
-    };
-    const std::vector<ScalarVariable>& variables
-        = this->variables().variables();
-    const auto refuse = [&](const char* kind, fmi2ValueReference first,
-                            const double* v, std::size_t n) {
-        const std::size_t i = std::size_t(
-            std::find_if(v, v + n, [](double x) { return !std::isfinite(x); })
-            - v);
-        throw std::range_error(model + ": " + kind + " "
-                               + variables[first + i].name + " = "
-                               + formatDouble(v[i])
-                               + " is not finite (inputs or parameters too "
-                                 "large)");
-    };
-    if (!finite(interface, interfaceOutputCount)) {
-        refuse("output", firstOutput_, interface, interfaceOutputCount);
+    check(outputs.extra.data() + n,
+          firstOutput_ + fmi2ValueReference(interfaceOutputCount + n),
+          extraCount_ - n);
+    check(outputs.locals.data(), firstLocal_, localCount_, "local");
+}
+
+void ConnectorFmuModel::check(const double* v, fmi2ValueReference first,
+                              std::size_t n, const char* kind) const
+{
+    // checked in one pass, and searched for the value to name only when
+    // one is not finite
+    bool all = true;
+    for (std::size_t i = 0; i < n; ++i) {
+        all &= std::isfinite(v[i]);
     }
-    if (!finite(outputs.extra.data(), extraCount_)) {
-        refuse("output",
-               firstOutput_ + fmi2ValueReference(interfaceOutputCount),
-               outputs.extra.data(), extraCount_);
+    if (all) {
+        return;
     }
-    if (!finite(outputs.locals.data(), localCount_)) {
-        refuse("local", firstLocal_, outputs.locals.data(), localCount_);
-    }
-    double* out = std::copy(interface, interface + interfaceOutputCount,
-                            values + firstOutput_);
-    std::copy(outputs.extra.begin(), outputs.extra.end(), out);
-    std::copy(outputs.locals.begin(), outputs.locals.end(),
-              values + firstLocal_);
+    const std::size_t i = std::size_t(
+        std::find_if(v, v + n, [](double x) { return !std::isfinite(x); }) - v);
+    throw std::range_error(identity().modelIdentifier + ": " + kind + " "
+                           + variables().variables()[first + i].name + " = "
+                           + formatDouble(v[i])
+                           + " is not finite (inputs or parameters too "
+                             "large)");
 }
 
 } // namespace fmuExport

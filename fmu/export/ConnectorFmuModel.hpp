@@ -145,6 +145,19 @@ protected:
     //- Writes every output and local; throws std::range_error naming the
     //  first non-finite one, and writes nothing then
     void writeOutputs(double* values, const ConnectorOutputs& outputs) const;
+    //- Writes the interface outputs of `loads` and the first `n` extra
+    //  outputs (`extra`), checked as writeOutputs: what a step computes
+    //  when the rest are deferred (Model::deferredOutputs)
+    void writeLeadingOutputs(double* values,
+                             const connectors::ConnectorResult& loads,
+                             const double* extra, std::size_t n) const;
+    //- Writes the extra outputs of `outputs` after the first `n` and the
+    //  locals, checked as writeOutputs (Model::completeOutputs)
+    void writeTrailingOutputs(double* values, const ConnectorOutputs& outputs,
+                              std::size_t n) const;
+    //- The block of those: the extra outputs after the first `n` and the
+    //  locals (declared after every extra output)
+    Block trailingOutputs(std::size_t n) const;
 
     //- Blocks that the geometry depends on: A.p, B.p, A.r, A.R, B.r, B.R
     std::vector<Block> positionBlocks() const;
@@ -172,6 +185,14 @@ protected:
     BodyInputs A, B;
 
 private:
+    static void interfaceValues(const connectors::ConnectorResult& r,
+                                double* v);
+    //- Throws std::range_error naming the first of the `n` values `v`
+    //  (value references from `first`) that is not finite
+    void check(const double* v, fmi2ValueReference first, std::size_t n,
+               const char* kind = "output") const;
+    void checkTrailing(const ConnectorOutputs& outputs, std::size_t n) const;
+
     ConnectorWording wording_;
     bool bodiesDeclared_ = false, outputsDeclared_ = false;
     //- First value reference of the interface outputs; number of scalar

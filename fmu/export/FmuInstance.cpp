@@ -25,6 +25,7 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                 : v.causality == Causality::local     ? RealAccess::local
                                                       : RealAccess::none);
     }
+    deferred_ = model_->deferredOutputs();
     startValues();
 }
 
@@ -179,19 +180,25 @@ void FmuInstance::computeOutputs()
     applyParameters(values_.data());
     model_->computeOutputs(values_.data());
     outputsValid_ = true;
+    deferredValid_ = true;
 }
 
 void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
                           fmi2Real value[])
 {
-    bool needsOutputs = false;
+    bool needsOutputs = false, needsDeferred = false;
     for (std::size_t i = 0; i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);
         needsOutputs
             |= access == RealAccess::output || access == RealAccess::local;
+        needsDeferred |= vr[i] - deferred_.first < deferred_.size;
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
+    }
+    if (needsDeferred && !deferredValid_) {
+        model_->completeOutputs(values_.data());
+        deferredValid_ = true;
     }
     const double* values = values_.data();
     for (std::size_t i = 0; i < n; ++i) {
@@ -285,6 +292,7 @@ void FmuInstance::doStep(double currentCommunicationPoint,
     applyParameters(values_.data());
     model_->doStep(values_.data(), t, h);
     outputsValid_ = true;
+    deferredValid_ = deferred_.size == 0;
     time_ = t + h;
 }
 
@@ -312,7 +320,7 @@ fmi2FMUstate FmuInstance::getState(fmi2FMUstate reuse)
     target->time = time_;
     target->outputsValid = outputsValid_;
     target->values = values_;
-    target->internal = model_->internalState();
+    model_->saveInternalState(target->internal);
     return target;
 }
 
@@ -335,6 +343,8 @@ void FmuInstance::setState(fmi2FMUstate state)
     values_ = saved.values;
     time_ = saved.time;
     outputsValid_ = saved.outputsValid;
+    // computed again from the restored state when read
+    deferredValid_ = deferred_.size == 0;
     state_ = saved.state;
 }
 

@@ -125,6 +125,10 @@ private:
     ModelState state_ = instantiated;
     double time_ = 0.0;
     bool outputsValid_ = false;
+    //- Whether the model's deferred outputs (Model::deferredOutputs) are
+    //  those of the current inputs and state, and that block
+    bool deferredValid_ = false;
+    Block deferred_;
     //- Whether the model's setParameters ran for the parameters in values_
     bool parametersApplied_ = false;
     std::vector<double> values_;

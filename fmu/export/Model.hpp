@@ -67,9 +67,28 @@ public:
         computeOutputs(values);
     }
 
+    //- Outputs and locals, one block of consecutive value references,
+    //  that doStep may leave out: the FMI layer has completeOutputs
+    //  compute them once a step, when fmi2GetReal first asks for one of
+    //  them (empty, the default: doStep computes every output)
+    virtual Block deferredOutputs() const { return {}; }
+
+    //- Computes the deferredOutputs() for the internal state and the
+    //  inputs in `values`, after doStep or a restored FMU state, and
+    //  writes nothing else; throws (and writes nothing) where they are
+    //  undefined
+    virtual void completeOutputs(double* values) const { (void)values; }
+
     //- The internal state, saved with the value array in FMU states and
     //  serialized after it; empty for a model without one
     virtual std::vector<double> internalState() const { return {}; }
+
+    //- The same into `state`, whose storage a model may keep (fmi2GetFMUstate
+    //  into a state it returned before allocates nothing then)
+    virtual void saveInternalState(std::vector<double>& state) const
+    {
+        state = internalState();
+    }
 
     //- Restores a state returned by internalState() for the parameters in
     //  `values` (empty: back to before initializeState; not empty: after

@@ -30,9 +30,11 @@ std::vector<Vector3> FlowHistory::acceleration(const std::vector<Vector3>& U,
 void FlowHistory::save(std::vector<double>& out) const
 {
     out.push_back(time_);
-    for (int k = 0; k < points_; ++k) {
-        for (int axis = 0; axis < 3; ++axis) {
-            out.push_back(flow_.empty() ? 0.0 : flow_[std::size_t(k)][axis]);
+    for (const std::vector<Vector3>* x : {&flow_, &acceleration_}) {
+        for (int k = 0; k < points_; ++k) {
+            for (int axis = 0; axis < 3; ++axis) {
+                out.push_back(x->empty() ? 0.0 : (*x)[std::size_t(k)][axis]);
+            }
         }
     }
 }
@@ -40,13 +42,18 @@ void FlowHistory::save(std::vector<double>& out) const
 void FlowHistory::restore(const double* data)
 {
     time_ = data[0];
-    flow_.clear();
-    const double* u = data + 1;
-    if (std::any_of(u, u + 3 * points_, [](double x) { return x != 0.0; })) {
-        for (int k = 0; k < points_; ++k) {
-            flow_.emplace_back(u[3 * k], u[3 * k + 1], u[3 * k + 2]);
+    // all zero: none (acceleration() gives none for no change)
+    const auto points = [this](const double* u, std::vector<Vector3>& x) {
+        x.clear();
+        if (std::any_of(u, u + 3 * points_,
+                        [](double v) { return v != 0.0; })) {
+            for (int k = 0; k < points_; ++k) {
+                x.emplace_back(u[3 * k], u[3 * k + 1], u[3 * k + 2]);
+            }
         }
-    }
+    };
+    points(data + 1, flow_);
+    points(data + 1 + 3 * points_, acceleration_);
 }
 
 } // namespace mooringLineFmu

@@ -7,17 +7,29 @@
 // (the start of the next step's Hermite path) and accelerations, the
 // position and velocity of every free node, and the trapezoidal rule's
 // factorised Newton matrix kept from step to step; then the start time of the
-// last step and its flow inputs (the flow's acceleration over the next
-// step is their change). It is saved, restored and serialized with the FMU
-// state; each step starts the integrator from it, so a step repeated after
-// fmi2SetFMUstate gives the same outputs to the bit.
+// last step, its flow inputs (the flow's acceleration over the next
+// step is their change) and the flow's acceleration it took; then the
+// energy account summed since the start (the energy outputs,
+// EnergyVariables.hpp; zero with energyAccount = 0).
+//
+// A step computes the loads and fairleadTension, anchorTension,
+// groundedLength, H and V; the shape, the sections' values and the energy
+// outputs are computed from the state when fmi2GetReal first asks for one
+// of them after the step (deferredOutputs, completeOutputs), the same
+// numbers as the step would have computed. It is saved, restored and
+// serialized with the FMU state; each step starts the integrator from it,
+// so a step repeated after fmi2SetFMUstate gives the same outputs to the
+// bit.
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-#include "LineFmuModel.hpp"
+#include "EnergyVariables.hpp"
 #include "FlowHistory.hpp"
+#include "LawDescription.hpp"
+#include "LineFmuModel.hpp"
+#include "ScalarParameters.hpp"
 #include "SectionVariables.hpp"
 #include "common/ConnectorError.hpp"
 #include "mooringLine/MooringLine.hpp"
@@ -26,166 +38,10 @@ namespace {
 
 using fmuExport::Block;
 using fmuExport::Shape;
-
-const char* const lawHtml = R"(<p>A dynamic lumped-mass mooring line (after
-MoorDyn) between the fairlead P (<code>A.p</code> on A) and Q
-(<code>B.p</code> on B): an anchor on the seabed (<code>seabedContact</code>
-= 1, the seabed is the horizontal plane through Q) or a fairlead on a second
-body. N = <code>segments</code> segments of unstretched length L/N; node 0 is
-Q, node N is P, the N-1 free nodes carry one segment's mass each:</p>
-<pre>
-segment tension  T = EA max(e, 0) + axialDamping de/dt,  e = strain
-node             (mass + added mass) a = T_i q_i - T_i-1 q_i-1 + E_i
-E_i              = -(weight - buoyancy) + seabed penalty and friction
-                   + Morison drag relative to the water (current + flow)
-A.F = -T_N-1 q_N-1 + E_N,   B.F = T_0 q_0 + E_0   (the ends' half segments)
-</pre>
-<p>The water moves with the current profile (<code>current.surface</code>
-at <code>waterLevel</code>, <code>current.seabed</code> at the height of
-B.p, linear between) plus the inputs <code>shape.Ux/Uy/Uz[k]</code>: the
-water velocity at the points of the shape outputs of the previous step,
-held over the step and interpolated along the line. Their change over the
-previous step is the flow's acceleration a, held over the step: with
-<code>flowInertia</code> = 1 (default) it acts on the line as
-(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
-<code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
-<code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
-on the seabed, regularised below <code>frictionVelocity</code>,
-<code>axialFrictionRatio</code> times it along the line, up to
-<code>staticFrictionScale</code> times it below that speed.</p>
-<p>Up to 4 sections from B.p to A.p: the first is the line of the parameters
-above, sections 2 to 4 have their own (<code>section2.EA</code>, ...;
-<code>section&lt;k&gt;.unstretchedLength</code> = 0: no section k), with a
-point (clump weight or buoy: <code>joint&lt;k&gt;.mass</code>,
-<code>volume</code>, <code>dragArea</code>, <code>addedMass</code>) at each
-joint; outputs <code>section.lowerTension</code>,
-<code>section.upperTension</code> and the joints' positions
-<code>joint.x/y/z</code>.</p>
-<p>Inside each fmi2DoStep the node states are integrated by the implicit
-trapezoidal rule (<code>integrator</code> = 0, the default: one step per
-coupling step, or substeps no longer than <code>maxStep</code>, each one
-Newton solve with the line's block-tridiagonal matrix, a step halved where
-its predictor misses) or by SUNDIALS CVODE (<code>integrator</code> = 1:
-BDF, banded direct solver, tolerances <code>relativeTolerance</code>,
-<code>absoluteTolerance</code>, restarted at every step), the ends moving
-along the cubic Hermite path through their positions and velocities at the
-start of the step (saved in the FMU state) and at its end (the inputs): set
-the inputs to the end-of-step positions and velocities before fmi2DoStep.
-Either integrator starts each step from the node states alone, so a step
-repeated from a saved FMU state is identical to the uninterrupted one. The
-line starts at rest in the static equilibrium of its own discrete equations
-(found by Newton from the quasi-static catenary shape through the
-attachment points) at fmi2ExitInitializationMode. SUNDIALS is linked into
-the binary: the FMU needs nothing installed beside it. Details:
-connectors/mooringLine/README.md.</p>)";
-
-//- The value references of the scalar parameters, one member each
-struct ScalarBlocks {
-    Block length, EA, axialDamping, massPerLength, diameter, waterDensity,
-        gravity, normalDrag, tangentialDrag, normalAddedMass,
-        tangentialAddedMass, seabedContact, seabedStiffness, seabedDamping,
-        segments, relativeTolerance, absoluteTolerance, hermiteEnds, integrator,
-        maxStep, freeSurface, waterLevel, seabedFriction, frictionVelocity,
-        endInertia, axialFrictionRatio, staticFrictionScale;
-};
-
-struct Scalar {
-    const char* name;
-    const char* unit;
-    const char* description;
-    double start;
-    //- Where the model keeps its value reference
-    Block ScalarBlocks::*block;
-};
-
-// Model-scale start values: a 1.5 m line of 0.5 kg/m between two points
-// 1 m apart, in two-body mode
-const Scalar scalars[] = {
-    {"unstretchedLength", "m",
-     "unstretched length L, > 0, at least the ends' distance at the start "
-     "over 1.3",
-     1.5, &ScalarBlocks::length},
-    {"EA", "N", "axial stiffness, > 0", 1e4, &ScalarBlocks::EA},
-    {"axialDamping", "N.s", "axial damping BA (tension per strain rate), >= 0",
-     10.0, &ScalarBlocks::axialDamping},
-    {"massPerLength", "kg/m", "dry mass per unstretched length, > 0", 0.5,
-     &ScalarBlocks::massPerLength},
-    {"diameter", "m",
-     "volume-equivalent diameter (buoyancy, drag, added mass, seabed contact), "
-     ">= 0 (> 0 with seabedContact = 1)",
-     0.01, &ScalarBlocks::diameter},
-    {"waterDensity", "kg/m3", "water density, >= 0", 1025.0,
-     &ScalarBlocks::waterDensity},
-    {"gravity", "m/s2", "gravitational acceleration (along -z), >= 0", 9.81,
-     &ScalarBlocks::gravity},
-    {"normalDrag", "1", "transverse drag coefficient Cdn, >= 0", 1.2,
-     &ScalarBlocks::normalDrag},
-    {"tangentialDrag", "1", "tangential drag coefficient Cdt, >= 0", 0.05,
-     &ScalarBlocks::tangentialDrag},
-    {"normalAddedMass", "1", "transverse added-mass coefficient Can, >= 0", 1.0,
-     &ScalarBlocks::normalAddedMass},
-    {"tangentialAddedMass", "1", "tangential added-mass coefficient Cat, >= 0",
-     0.0, &ScalarBlocks::tangentialAddedMass},
-    {"seabedContact", "1",
-     "1: B.p is an anchor on the seabed (the horizontal plane through it); 0: no "
-     "seabed",
-     0.0, &ScalarBlocks::seabedContact},
-    {"seabedStiffness", "Pa/m",
-     "seabed penalty stiffness per contact area, >= 0 (> 0 with "
-     "seabedContact = 1)",
-     3e6, &ScalarBlocks::seabedStiffness},
-    {"seabedDamping", "Pa.s/m", "seabed penalty damping per contact area, >= 0",
-     3e5, &ScalarBlocks::seabedDamping},
-    {"segments", "1", "number of segments N, an integer from 2 to 1000", 20.0,
-     &ScalarBlocks::segments},
-    {"relativeTolerance", "1", "CVODE relative tolerance, > 0 (integrator 1)",
-     1e-6, &ScalarBlocks::relativeTolerance},
-    {"absoluteTolerance", "1",
-     "CVODE absolute tolerance (m, m/s), > 0 (integrator 1)", 1e-6,
-     &ScalarBlocks::absoluteTolerance},
-    {"hermiteEnds", "1",
-     "1: within a step the ends follow the cubic Hermite curve through the positions "
-     "and velocities at both ends; 0: straight lines between the positions",
-     1.0, &ScalarBlocks::hermiteEnds},
-    {"integrator", "1",
-     "0: implicit trapezoidal rule (default); 1: SUNDIALS CVODE (BDF)", 0.0,
-     &ScalarBlocks::integrator},
-    {"maxStep", "s",
-     "longest trapezoidal substep, >= 0 (0: one step per coupling step)", 0.0,
-     &ScalarBlocks::maxStep},
-    {"freeSurface", "1",
-     "1: no buoyancy, drag or added mass above waterLevel (a node's submerged "
-     "fraction ramps from 1 to 0 over one segment length around it); 0: the "
-     "whole line is submerged",
-     0.0, &ScalarBlocks::freeSurface},
-    {"waterLevel", "m",
-     "height (global z) of the still water surface: the free surface "
-     "(freeSurface = 1) and the top of the current profile",
-     0.0, &ScalarBlocks::waterLevel},
-    {"seabedFriction", "1",
-     "seabed Coulomb friction coefficient across the line (along it "
-     "axialFrictionRatio times it), >= 0 (0: none)",
-     0.0, &ScalarBlocks::seabedFriction},
-    {"frictionVelocity", "m/s",
-     "speed below which the seabed friction is regularised (proportional to "
-     "the speed), > 0",
-     0.01, &ScalarBlocks::frictionVelocity},
-    {"endInertia", "1",
-     "1: the loads include the inertia of the end nodes' half segments "
-     "(mass and added mass times the attachment point's acceleration, "
-     "explicit in the coupling); 0 (default): not",
-     0.0, &ScalarBlocks::endInertia},
-    {"axialFrictionRatio", "1",
-     "seabed friction along the line over that across it (seabedFriction), "
-     ">= 0 (1: isotropic)",
-     1.0, &ScalarBlocks::axialFrictionRatio},
-    {"staticFrictionScale", "1",
-     "static over kinetic seabed friction, >= 1: below frictionVelocity the "
-     "friction reaches this times the kinetic one, falling to it at twice "
-     "that speed (1: none)",
-     1.0, &ScalarBlocks::staticFrictionScale},
-};
-constexpr std::size_t scalarCount = sizeof scalars / sizeof scalars[0];
+using mooringLineFmu::Scalar;
+using mooringLineFmu::ScalarBlocks;
+using mooringLineFmu::scalarCount;
+using mooringLineFmu::scalars;
 
 class MooringLineModel final : public fmuExport::LineFmuModel {
 public:
@@ -197,9 +53,23 @@ public:
         flag(values, flowInertia_); // 0 or 1, refused otherwise
     }
 
+    //- The shape, the sections' values and the energy outputs: computed
+    //  when read (fmi2GetReal), not by every step
+    fmuExport::Block deferredOutputs() const override
+    {
+        return trailingOutputs(leadingLineOutputs);
+    }
+    void completeOutputs(double* values) const override;
+
     void initializeState(const double* values, double time) override;
     void doStep(double* values, double time, double h) override;
-    std::vector<double> internalState() const override;
+    std::vector<double> internalState() const override
+    {
+        std::vector<double> out;
+        saveInternalState(out);
+        return out;
+    }
+    void saveInternalState(std::vector<double>& out) const override;
     void setInternalState(const double* values,
                           const std::vector<double>& state) override;
 
@@ -209,9 +79,16 @@ protected:
              const connectors::BodyKinematics& B) const override;
 
 private:
+    //- The extra outputs a step writes: fairleadTension, anchorTension,
+    //  groundedLength, H, V (the first of LineFmuModel's)
+    static constexpr std::size_t leadingLineOutputs = 5;
+
     connectors::MooringLineParameters parameters(const double* values) const;
+    //- The outputs of the law's output `out` and the energy account
+    //  summed since the start `energy`
     fmuExport::ConnectorOutputs
-    lineOutputs(const connectors::MooringLineOutput& out) const;
+    lineOutputs(const connectors::MooringLineOutput& out,
+                const connectors::LineEnergy& energy) const;
 
     //- The flow inputs as points from P to Q; empty when all are zero
     std::vector<connectors::Vector3> flow(const double* values) const;
@@ -229,7 +106,7 @@ private:
     //- The flow inputs of the last step and its start time (at the start:
     //  those at fmi2ExitInitializationMode and its time)
     mooringLineFmu::FlowHistory lastFlow_ {shapePoints};
-    Block flowInertia_;
+    Block flowInertia_, energyAccount_;
 
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
@@ -238,6 +115,8 @@ private:
     fmi2ValueReference flow_ = 0;
     fmuExport::BuiltLaw<connectors::MooringLine> law_;
     std::optional<connectors::MooringLineState> state_;
+    //- The law's energy account summed over the steps since the start
+    connectors::LineEnergy energy_;
 };
 
 MooringLineModel::MooringLineModel()
@@ -245,7 +124,7 @@ MooringLineModel::MooringLineModel()
         {"mooringLine",
          "Dynamic lumped-mass mooring line between a body and a seabed "
          "anchor, or between two bodies (integrated inside each step)",
-         "1.0.0", lawHtml})
+         "1.0.0", mooringLineFmu::lawHtml})
 {
     fmuExport::VariableTable& t = table();
     for (const Scalar& s : scalars) {
@@ -299,6 +178,10 @@ MooringLineModel::MooringLineModel()
     for (const auto& o : mooringLineFmu::SectionVariables::outputs()) {
         extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
     }
+    for (const auto& o : mooringLineFmu::energyVariables::outputs(
+             mooringLineFmu::maxSections)) {
+        extraOutput(o.name, Shape::scalar, o.unit, o.description, d.loads);
+    }
     declareShapeSections();
     // declared last: the variables above keep their value references
     flowInertia_ = t.parameter(
@@ -306,6 +189,13 @@ MooringLineModel::MooringLineModel()
         "1 (default): the flow's acceleration, the change of the inputs "
         "shape.U over the previous step, acts on the line as (1 + Ca) rho V "
         "dU/dt, normal and tangential (Froude-Krylov and added mass); 0: not",
+        {1.0});
+    energyAccount_ = t.parameter(
+        "energyAccount", Shape::scalar, "1",
+        "1 (default): the energy outputs (fairleadWork, anchorWork, "
+        "waterWork, addedMassWork, the dissipated energies) are integrated "
+        "every step; 0: they are not, and stay 0 (a step costs about 6 % "
+        "less; the motion, the loads and kineticEnergy are the same)",
         {1.0});
 }
 
@@ -354,6 +244,7 @@ MooringLineModel::parameters(const double* values) const
     p.axialFrictionRatio = value(p_.axialFrictionRatio);
     p.staticFrictionScale = value(p_.staticFrictionScale);
     p.endInertia = flag(values, p_.endInertia);
+    p.energyAccount = flag(values, energyAccount_);
     p.currentSurface = vector3(values, currentSurface_);
     p.currentSeabed = vector3(values, currentSeabed_);
     sections_.read(values, variables(), p);
@@ -380,7 +271,8 @@ MooringLineModel::flow(const double* values) const
 }
 
 fmuExport::ConnectorOutputs
-MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
+MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m,
+                              const connectors::LineEnergy& energy) const
 {
     fmuExport::LineOutputs o;
     o.loads = m.loads;
@@ -397,6 +289,10 @@ MooringLineModel::lineOutputs(const connectors::MooringLineOutput& m) const
     const std::vector<double> sections
         = mooringLineFmu::SectionVariables::values(m);
     all.extra.insert(all.extra.end(), sections.begin(), sections.end());
+    const std::vector<double> energies
+        = mooringLineFmu::energyVariables::values(m, energy,
+                                                  mooringLineFmu::maxSections);
+    all.extra.insert(all.extra.end(), energies.begin(), energies.end());
     return all;
 }
 
@@ -411,11 +307,13 @@ MooringLineModel::evaluate(const double* values,
         const std::vector<connectors::Vector3> U = flow(values);
         return lineOutputs(
             law.evaluate(*state_, A, B, shapePoints, U,
-                         flowAcceleration(values, U, state_->time)));
+                         flowAcceleration(values, U, state_->time)),
+            energy_);
     }
     // Before fmi2ExitInitializationMode: the line at rest in its start shape
     return lineOutputs(law.evaluate(law.initialState(A, B, 0.0), A, B,
-                                    shapePoints, flow(values)));
+                                    shapePoints, flow(values)),
+                       connectors::LineEnergy());
 }
 
 void MooringLineModel::initializeState(const double* values, double time)
@@ -424,6 +322,7 @@ void MooringLineModel::initializeState(const double* values, double time)
         = law_.get().initialState(fmuExport::bodyKinematics(values, A),
                                   fmuExport::bodyKinematics(values, B), time);
     lastFlow_.record(time, flow(values));
+    energy_.clear(law_.get().parameters().sections.size() + 1);
 }
 
 void MooringLineModel::doStep(double* values, double time, double h)
@@ -442,23 +341,49 @@ void MooringLineModel::doStep(double* values, double time, double h)
         = flowAcceleration(values, water, time);
     connectors::MooringLineState next = *state_;
     law.advance(next, bodyA, bodyB, h, water, a);
-    writeOutputs(
-        values,
-        lineOutputs(law.evaluate(next, bodyA, bodyB, shapePoints, water, a)));
+    // the loads and the line's scalars; the rest when read
+    // (completeOutputs)
+    const connectors::MooringLineOutput m
+        = law.evaluate(next, bodyA, bodyB, 0, water, a,
+                       connectors::MooringLine::Detail::loads);
+    const double line[leadingLineOutputs]
+        = {m.fairleadTension, m.anchorTension, m.groundedLength, m.H, m.V};
+    writeLeadingOutputs(values, m.loads, line, leadingLineOutputs);
     state_ = std::move(next);
-    lastFlow_.record(time, water);
+    if (law.parameters().energyAccount) {
+        energy_ += law.stepEnergy();
+    }
+    lastFlow_.record(time, water, a);
 }
 
-std::vector<double> MooringLineModel::internalState() const
+void MooringLineModel::completeOutputs(double* values) const
 {
+    // as the last step evaluated its loads: its flow inputs (in `values`)
+    // and acceleration
+    const connectors::BodyKinematics bodyA
+        = fmuExport::bodyKinematics(values, A);
+    const connectors::BodyKinematics bodyB
+        = fmuExport::bodyKinematics(values, B);
+    const connectors::MooringLineOutput m = state_
+        ? law_.get().evaluate(*state_, bodyA, bodyB, shapePoints, flow(values),
+                              lastFlow_.stepAcceleration())
+        : law_.get().evaluate(law_.get().initialState(bodyA, bodyB, 0.0), bodyA,
+                              bodyB, shapePoints, flow(values));
+    writeTrailingOutputs(values, lineOutputs(m, energy_), leadingLineOutputs);
+}
+
+void MooringLineModel::saveInternalState(std::vector<double>& out) const
+{
+    out.clear();
     if (!state_) {
-        return {};
+        return;
     }
-    // the line's state, then the last step's start time and flow inputs
-    // (3 values a point, all zero for none)
-    std::vector<double> out = state_->serialize();
+    // the line's state, then the last step's start time, flow inputs and
+    // flow acceleration (3 values a point each, all zero for none), then
+    // the energy account (4 + 3 per section)
+    state_->serialize(out);
     lastFlow_.save(out);
-    return out;
+    energy_.appendValues(out);
 }
 
 void MooringLineModel::setInternalState(const double*,
@@ -466,26 +391,32 @@ void MooringLineModel::setInternalState(const double*,
 {
     if (state.empty()) {
         state_.reset();
+        energy_ = connectors::LineEnergy();
         return;
     }
     const connectors::MooringLineParameters& p = law_.get().parameters();
     const std::size_t line
         = connectors::MooringLineState::serializedSize(p.totalSegments());
-    const std::size_t withFlow = line + lastFlow_.size();
-    if (state.size() != withFlow) {
+    const std::size_t sections = p.sections.size() + 1;
+    const std::size_t energy = 4 + 3 * sections;
+    const std::size_t all = line + lastFlow_.size() + energy;
+    if (state.size() != all) {
         throw std::invalid_argument(
             "mooringLine: a saved state of " + std::to_string(state.size())
             + " values does not fit a line of "
-            + std::to_string(p.totalSegments()) + " segments ("
-            + std::to_string(withFlow) + " values: " + std::to_string(line)
-            + " of the line, 1 + 3 x " + std::to_string(shapePoints)
-            + " of the last step's flow)");
+            + std::to_string(p.totalSegments()) + " segments in "
+            + std::to_string(sections) + " sections (" + std::to_string(all)
+            + " values: " + std::to_string(line) + " of the line, 1 + 6 x "
+            + std::to_string(shapePoints) + " of the last step's flow, "
+            + std::to_string(energy) + " of the energy account)");
     }
     state_ = connectors::MooringLineState::deserialize(
         std::vector<double>(state.begin(),
                             state.begin() + std::ptrdiff_t(line)),
         p);
     lastFlow_.restore(state.data() + line);
+    energy_ = connectors::LineEnergy::fromValues(
+        state.data() + line + lastFlow_.size(), energy, sections);
 }
 
 } // namespace

@@ -121,8 +121,9 @@ inline ReferenceLine oc4(int segments)
 //  h, the anchor held: peak fairlead tension and its time, tension at the
 //  end, the work done on the line by the fairlead against the change of
 //  its potential and kinetic energy (v' M v / 2, added mass about the
-//  node's tangent) plus the dissipated energy, power integrals by the
-//  trapezoidal rule; and the first harmonic of the fairlead tension at
+//  node's tangent, the masses of a uniform line) plus the dissipated
+//  energy, power integrals by the trapezoidal rule; the law's energy
+//  account (any line); and the first harmonic of the fairlead tension at
 //  `frequency` [Hz] over the whole periods after the first (0: none).
 struct Snap {
     double peak = 0.0, peakTime = 0.0, final = 0.0;
@@ -135,6 +136,12 @@ struct Snap {
     //  (MooringLine::stepWork), and the imbalance with it, work - energy
     //  change - dissipated energy [J]
     double stepWork = 0.0, stepImbalance = 0.0;
+    //- The law's energy account summed over the run (MooringLine::
+    //  stepEnergy), the change of kinetic + potential energy from its
+    //  outputs, and what the account leaves unexplained: its work less
+    //  that change less its dissipated energy [J]
+    LineEnergy account;
+    double accountChange = 0.0, accountImbalance = 0.0;
     //- first-harmonic amplitude of the fairlead tension [N]
     double harmonic = 0.0;
     bool finite = true;
@@ -146,7 +153,7 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
 {
     constexpr double pi = 3.14159265358979323846;
     const MooringLineParameters& p = line.p;
-    const int N = p.segments;
+    const int N = p.totalSegments();
     MooringLine law(p);
     BodyKinematics B;
     B.p_WKo_W = line.anchor;
@@ -174,10 +181,12 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
         }
         return out.loads.potentialEnergy + kinetic;
     };
-    Snap result;
     MooringLineState s = law.initialState(fairlead(0.0), B, 0.0);
     MooringLineOutput out = law.evaluate(s, fairlead(0.0), B, 0);
     const double energy0 = energy(s, out);
+    const double outputEnergy0 = out.kineticEnergy + out.loads.potentialEnergy;
+    Snap result;
+    result.account.clear(p.sections.size() + 1);
     double power = 0.0, dissipation = out.loads.dissipatedPower;
     const int steps = int(std::lround(duration / h));
     const int perPeriod
@@ -191,6 +200,7 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
         const double newPower = -out.loads.A.f_W.dot(A.v_WKo_W);
         result.work += 0.5 * h * (power + newPower);
         result.stepWork += law.stepWork();
+        result.account += law.stepEnergy();
         result.throughput += 0.5 * h * (std::abs(power) + std::abs(newPower));
         result.dissipated
             += 0.5 * h * (dissipation + out.loads.dissipatedPower);
@@ -211,6 +221,10 @@ Snap energyBalance(const ReferenceLine& line, Fairlead fairlead, double h,
     result.change = energy(s, out) - energy0;
     result.imbalance = result.work - result.change - result.dissipated;
     result.stepImbalance = result.stepWork - result.change - result.dissipated;
+    result.accountChange
+        = out.kineticEnergy + out.loads.potentialEnergy - outputEnergy0;
+    result.accountImbalance = result.account.work() - result.accountChange
+        - result.account.dissipated();
     if (periods > 1) {
         result.harmonic
             = 2.0 * std::hypot(re, im) / ((periods - 1) * perPeriod);

@@ -207,11 +207,14 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
     // (4e-17 m, 4e-8 m at the coarse steps): measured within 0.002 pp
     // (lab) and 0.08 pp (OC4) of the fine step. CVODE at tolerance 1e-8
     // was 0.15 to 0.8 pp off at 1 ms (bench/mooringLine). One Newton
-    // solve per step: two force evaluations (the start's acceleration and
-    // the predictor's residual), one step per coupling step, except OC4 at
-    // N = 40, whose predictor misses by more than 1e-5 of a segment on
-    // some steps, which are halved (measured 1.7 steps, 4.7 evaluations
-    // per coupling step; its difference then 0.025 %).
+    // solve per step: two force evaluations (the predictor's residual and
+    // the step's end, whose forces are the next step's start and the
+    // loads'; measured 2.0005, 2.01, 2.0033 on the lab chain: a step in a
+    // hundred takes a second correction to close its energy balance), one
+    // step per coupling step, except OC4 at N = 40, whose predictor misses
+    // by more than 1e-5 of a segment on some steps, which are halved
+    // (measured 1.7 steps, 4.7 evaluations per coupling step; its
+    // difference then 0.025 %).
     struct Coupled {
         ReferenceLine (*line)(int);
         double amplitude, period;
@@ -233,7 +236,7 @@ TEST(MooringLineCoupling, CoarseStepsGiveTheResolvedTensionHarmonic)
                       << " force evaluations per step), " << fine << " N at "
                       << c.fine << " s (" << difference << " %)\n";
             EXPECT_LT(std::abs(difference), c.difference) << N; // goal: 1
-            EXPECT_LE(forces, N < 40 ? 2.0 : 6.0) << N;
+            EXPECT_LE(forces, N < 40 ? 2.02 : 6.0) << N;
         }
     }
 
@@ -379,7 +382,8 @@ TEST(MooringLineSnap, SlackTautForcingKeepsTheEnergyBalance)
                   << " J (from the loads at the steps' ends " << r.work
                   << " J), energy change " << r.change << " J, dissipated "
                   << r.dissipated << " J, unreported " << r.stepImbalance
-                  << " J of " << r.throughput << " J; harmonic " << r.harmonic
+                  << " J of " << r.throughput << " J (by the account "
+                  << r.accountImbalance << " J); harmonic " << r.harmonic
                   << " N, peak " << r.peak << " N\n";
     }
     ASSERT_TRUE(coarse.finite);
@@ -387,18 +391,21 @@ TEST(MooringLineSnap, SlackTautForcingKeepsTheEnergyBalance)
     // Unreported: the work of the fairlead in the scheme's own terms
     // (MooringLine::stepWork) less the change of kinetic and potential
     // energy and the dissipated power's trapezoidal sum. Left: the added
-    // mass's configuration dependent matrix (not energy consistent: 1e-4
-    // at 1e-5 s, 3e-8 without added mass), Newton stopped at 1e-5 of a
-    // segment, the dissipated power sampled at 1 ms; measured -3.7e-4
-    // (N = 10: -3.5e-5, N = 40: 4.7e-4); 1e-3 asserted (the old average
-    // of the tensions lost 1.2e-2). The loads' sampled power misses the
-    // snaps between the steps' ends (a 0.6 ms axial wave along the line):
-    // its work differs from the scheme's by -0.2 % (+0.4 % with the 1 ms
-    // steps resolved by substeps of 1e-5 s), the coupling's
-    // quadrature, which resolves at 1e-5 s (both 1e-4 off the balance).
+    // mass's work (MooringLine::stepEnergy, -1e-4 at 1e-5 s; 3e-8 without
+    // added mass) and the dissipated power sampled at 1 ms; measured
+    // -1.9e-4 (-5.9e-4 while Newton stopped at the first correction below
+    // 1e-5 of a segment); 1e-3 asserted (the old average of the tensions
+    // lost 1.2e-2). The account itself, which has both, closes to 1e-4
+    // (mooringLineEnergyTest). The loads' sampled power misses the snaps
+    // between the steps' ends (a 0.6 ms axial wave along the line): its
+    // work differs from the scheme's by -0.31 % (+0.4 % with the 1 ms
+    // steps resolved by substeps of 1e-5 s), the coupling's quadrature,
+    // which resolves at 1e-5 s (both 1e-4 off the balance).
     EXPECT_LT(std::abs(coarse.stepImbalance), 1e-3 * coarse.throughput);
     EXPECT_LT(std::abs(fine.stepImbalance), 3e-4 * fine.throughput);
     EXPECT_LT(std::abs(fine.work - fine.stepWork), 1e-4 * fine.throughput);
+    EXPECT_LT(std::abs(coarse.accountImbalance), 1e-4 * coarse.throughput);
+    EXPECT_LT(std::abs(fine.accountImbalance), 1e-4 * fine.throughput);
     // The tension's first harmonic over seconds 1 to 10 at 1 ms against
     // 1e-5 s: measured -0.14 % (1.4937 against 1.4957 N; -3.3 % before);
     // the 1 percentage point asserted at 0.3 %

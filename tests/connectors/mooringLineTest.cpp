@@ -221,11 +221,12 @@ TEST(MooringLine, RepeatedStepFromASavedStateIsIdentical)
 
 TEST(MooringLine, LoadsBetweenStepsDoNotChangeTheSteps)
 {
-    // The trapezoidal rule takes the start's accelerations from the last
-    // `evaluate` when the nodes are exactly where it found them (the FMU
-    // reports its loads after every step): the steps must be the same to
-    // the bit as without those calls, and a rollback in between (other
-    // inputs evaluated, then the saved state) must not reuse stale ones
+    // The trapezoidal rule takes the start's forces from the last step's
+    // end or the last `evaluate` when the nodes are exactly where they
+    // were found (the FMU reports its loads after every step; `evaluate`
+    // takes the step's end's likewise): the steps must be the same to the
+    // bit as without those calls, and a rollback in between (other inputs
+    // evaluated, then the saved state) must not reuse stale ones
     MooringLine quiet(chain(10)), reporting(chain(10));
     MooringLineState a = quiet.initialState(fairlead, anchor, 0.0);
     MooringLineState b = a;
@@ -243,8 +244,9 @@ TEST(MooringLine, LoadsBetweenStepsDoNotChangeTheSteps)
         }
         ASSERT_EQ(a.serialize(), b.serialize()) << step;
     }
-    // and the force evaluation is saved: a step held still takes two
-    // (start and predictor), one after `evaluate`
+    // and the force evaluation is saved: a step held still takes three
+    // (start, predictor, end), two after a step, the loads' `evaluate`
+    // none (the step's end's serve it)
     MooringLine still(chain(10));
     MooringLineState s = still.initialState(fairlead, anchor, 0.0);
     const long n0 = still.statistics().rhsEvaluations;
@@ -252,8 +254,8 @@ TEST(MooringLine, LoadsBetweenStepsDoNotChangeTheSteps)
     const long n1 = still.statistics().rhsEvaluations;
     still.evaluate(s, fairlead, anchor, 0);
     still.advance(s, fairlead, anchor, 0.1);
-    EXPECT_EQ(n1 - n0, 2);
-    EXPECT_EQ(still.statistics().rhsEvaluations - n1, 1);
+    EXPECT_EQ(n1 - n0, 3);
+    EXPECT_EQ(still.statistics().rhsEvaluations - n1, 2);
 }
 
 TEST(MooringLine, EnergyBalance)

@@ -150,12 +150,15 @@ TEST(MooringLineFlowInertiaFmu, SwitchIsDeclaredLastAndChecked)
     const LoadedFmu fmu("mooringLine");
     const pugi::xml_node variables
         = fmu.description.child("fmiModelDescription").child("ModelVariables");
-    pugi::xml_node last;
+    pugi::xml_node last, beforeLast;
     for (pugi::xml_node v : variables.children("ScalarVariable")) {
+        beforeLast = last;
         last = v;
     }
-    // declared after every other variable: theirs keep their value
-    // references
+    // declared after every other variable but energyAccount, declared
+    // after it: theirs keep their value references
+    EXPECT_STREQ(last.attribute("name").value(), "energyAccount");
+    last = beforeLast;
     EXPECT_STREQ(last.attribute("name").value(), "flowInertia");
     EXPECT_STREQ(last.attribute("causality").value(), "parameter");
     EXPECT_STREQ(last.child("Real").attribute("start").value(), "1");

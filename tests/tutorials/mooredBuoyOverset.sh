@@ -36,9 +36,7 @@
 #  - the restart from 1.5 s (startFrom latestTime) finds the lines' and the
 #    motion's state files (the added mass in it), runs to 3 s, the lines
 #    write their output on, and it ends at the uninterrupted run's end time
-#    and state: centre of rotation within 1e-5 m, orientation tensor within
-#    1e-5 (measured 3.4e-6 m and 3.5e-6; Euler, laminar, 17 digits: what a
-#    run writes is all it needs, docs/restarts.md); the solver log of the
+#    and state (below); the solver log of the
 #    restart says once for each line "Connector line<n>: FMU state restored
 #    at t = 1.5", as under rigidBodyMotion: the first evaluation, which
 #    restores it, is in one of the added-mass coupling's silent solves,
@@ -168,10 +166,22 @@ import sys
 
 import os
 
-# v1912 restarts into the same time steps: the runs agree to round-off
-# (below 1e-5 m and 1e-5 of the orientation matrix at 3 s).
-RESTART_TOL = 1e-5
-RESTART_ROT = 1e-5
+# v1912 restarts into the same time steps. The runs part at the first
+# step by OpenFOAM's own floor (docs/restarts.md: interFoam does not
+# restart bit for bit; the FMUs do, tests fmu.MooringLineRestartFmu.*):
+# 3.8e-10 of the centre of rotation and the orientation matrix at 1.51 s,
+# growing to 7.0e-9 at 1.6 s. Later, each step's discrete decisions (PIMPLE
+# ended by the coupling residual, the lines' Newton iterations ended by
+# their tolerances) can go the other way on such a difference and part
+# the runs by what the decision is worth: 1e-7 to 1.3e-6 within one step
+# near 2.3 s, then 1e-6 to 2.2e-5 at 3 s from one build to the next. So
+# the first 0.1 s after the restart are held to 1e-7 (14 times the
+# measured 7.0e-9; a line state not restored moves the buoy by far more
+# from the first step: below), and the end to 1e-4.
+FIRST_STEPS = 0.1
+FIRST_TOL = 1e-7
+RESTART_TOL = 1e-4
+RESTART_ROT = 1e-4
 if int(os.environ.get("FOAM_API", "1912")) >= 2312:
     # v2312's overInterDyMFoam sees a larger Courant number at the restart
     # than the uninterrupted run at the same time (interface Courant number
@@ -183,6 +193,7 @@ if int(os.environ.get("FOAM_API", "1912")) >= 2312:
     # in the waves)
     RESTART_TOL = 3e-4
     RESTART_ROT = 1e-3
+    FIRST_STEPS = 0  # other steps: not compared step by step
 
 def last(log):
     text = open(log).read()
@@ -190,6 +201,31 @@ def last(log):
     orient = re.findall(r"Orientation: \(([^)]*)\)", text)[-1]
     times = re.findall(r"^Time = (\S+)", text, re.M)
     return ([float(v) for v in centre.split()], [float(v) for v in orient.split()], times[-1])
+
+def by_step(log):
+    """{time: the centre of rotation and orientation at the step's end}"""
+    states = {}
+    for step in open(log).read().split("\nTime = ")[1:]:
+        centre = re.findall(r"Centre of rotation: \(([^)]*)\)", step)
+        orient = re.findall(r"Orientation: \(([^)]*)\)", step)
+        if centre and orient:
+            states[step.split("\n", 1)[0].strip()] = [
+                float(v) for v in (centre[-1] + " " + orient[-1]).split()]
+    return states
+
+if FIRST_STEPS > 0:
+    once, again = by_step(sys.argv[1]), by_step(sys.argv[2])
+    first = sorted((float(t), t) for t in again if float(t) <= 1.5 + FIRST_STEPS + 1e-9)
+    missing = [t for _, t in first if t not in once]
+    if not first or missing:
+        print(f"FAIL: the restart's steps {missing or 'none'} are not the uninterrupted run's")
+        sys.exit(1)
+    d = max(abs(a - b) for _, t in first for a, b in zip(once[t], again[t]))
+    print(f"the restart's first {len(first)} steps (to {first[-1][1]} s) within {d:.2g}"
+          f" of the uninterrupted run's centre of rotation and orientation")
+    if d >= FIRST_TOL:
+        print(f"FAIL: limit {FIRST_TOL} over the first {FIRST_STEPS} s")
+        sys.exit(1)
 
 c1, q1, t1 = last(sys.argv[1])
 c2, q2, t2 = last(sys.argv[2])
