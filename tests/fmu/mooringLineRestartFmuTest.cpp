@@ -24,11 +24,11 @@ using Motion = std::function<BodyKinematics(double)>;
 
 //- The outputs compared after every step: the loads on both ends, the
 //  fairlead tension and the energy outputs
-const std::vector<std::string> compared = {
-    "A.F[1]",       "A.F[2]",           "A.F[3]",          "A.M[1]",
-    "A.M[2]",       "A.M[3]",           "B.F[1]",          "B.F[3]",
-    "fairleadTension", "kineticEnergy", "fairleadWork",    "dissipatedEnergy",
-    "potentialEnergy"};
+const std::vector<std::string> compared
+    = {"A.F[1]",          "A.F[2]",        "A.F[3]",       "A.M[1]",
+       "A.M[2]",          "A.M[3]",        "B.F[1]",       "B.F[3]",
+       "fairleadTension", "kineticEnergy", "fairleadWork", "dissipatedEnergy",
+       "potentialEnergy"};
 
 //- One CFD time step from t to t + h as the bridge takes it: the state
 //  saved into `saved`, three outer correctors (the first two with A's
@@ -60,8 +60,8 @@ std::vector<double> bridgeStep(const LoadedFmu& fmu, Instance& in,
 //  step's outputs equal the uninterrupted run's
 using Initialise = std::function<fmi2Status(const LoadedFmu&, Instance&)>;
 
-void expectRestartExact(const Initialise& initialise,
-                        const Motion& A, double h, int restartAt, int steps)
+void expectRestartExact(const Initialise& initialise, const Motion& A, double h,
+                        int restartAt, int steps)
 {
     LoadedFmu fmu("mooringLine");
     Instance once(fmu), first(fmu);
@@ -81,7 +81,8 @@ void expectRestartExact(const Initialise& initialise,
     // restart time (fmuConnectorCore::restorePending)
     Instance restarted(fmu);
     ASSERT_EQ(restarted.restore(bytes), fmi2OK) << restarted.lastMessage();
-    ASSERT_EQ(restarted.set(inputs(A(restartAt * h), BodyKinematics())), fmi2OK);
+    ASSERT_EQ(restarted.set(inputs(A(restartAt * h), BodyKinematics())),
+              fmi2OK);
     fmi2FMUstate savedRestarted = nullptr;
     for (int k = restartAt; k < steps; ++k) {
         const std::vector<double> want
@@ -108,14 +109,20 @@ TEST(MooringLineRestartFmu, ChainOnTheSeabedRestartsExactly)
 //  0.5 m of water, on the seabed) surging 0.112 m at 1 Hz from rest,
 //  lifting off and snapping taut every cycle: the steps that halve and
 //  those that iterate Newton further
-const std::map<std::string, double> labChain
-    = {{"unstretchedLength", 1.2},   {"EA", 3.416e5},
-       {"axialDamping", 2.473},      {"massPerLength", 0.0796},
-       {"diameter", 3.6e-3},         {"normalDrag", 1.33},
-       {"tangentialDrag", 0.2},      {"normalAddedMass", 1.0},
-       {"tangentialAddedMass", 0.5}, {"seabedContact", 1.0},
-       {"seabedStiffness", 3e5},     {"seabedDamping", 3e3},
-       {"B.p[1]", -1.0},             {"B.p[3]", -0.5}};
+const std::map<std::string, double> labChain = {{"unstretchedLength", 1.2},
+                                                {"EA", 3.416e5},
+                                                {"axialDamping", 2.473},
+                                                {"massPerLength", 0.0796},
+                                                {"diameter", 3.6e-3},
+                                                {"normalDrag", 1.33},
+                                                {"tangentialDrag", 0.2},
+                                                {"normalAddedMass", 1.0},
+                                                {"tangentialAddedMass", 0.5},
+                                                {"seabedContact", 1.0},
+                                                {"seabedStiffness", 3e5},
+                                                {"seabedDamping", 3e3},
+                                                {"B.p[1]", -1.0},
+                                                {"B.p[3]", -0.5}};
 
 BodyKinematics labChainFairlead(double t)
 {
@@ -125,9 +132,8 @@ BodyKinematics labChainFairlead(double t)
     const double rate = t < 1.0 ? 0.5 * pi * std::sin(pi * t) : 0.0;
     BodyKinematics k;
     k.p_WKo_W = Vector3(-a * ramp * std::sin(w * t), 0.0, -0.05);
-    k.v_WKo_W
-        = Vector3(-a * (rate * std::sin(w * t) + ramp * w * std::cos(w * t)),
-                  0.0, 0.0);
+    k.v_WKo_W = Vector3(
+        -a * (rate * std::sin(w * t) + ramp * w * std::cos(w * t)), 0.0, 0.0);
     return k;
 }
 
