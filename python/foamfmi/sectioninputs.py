@@ -15,6 +15,7 @@ alone changed, per unit of the input, on the same wave and mesh.
 """
 
 import collections
+import math
 
 from foamfmi import uncertainty
 
@@ -74,3 +75,49 @@ def pick_variant(base, variants, key):
         return None
     x0 = value(base[0], key)
     return max(variants, key=lambda v: abs(value(v[0], key) - x0))
+
+
+def window_range(case, key):
+    """The experiment's value of key over its window moved by one period
+    either way (experimentRao's raoXWindowLow/High): (low, high), or
+    None where the table has no such range. The springs' mean has the
+    means of the two gauges' ranges (the range of their mean lies within
+    it)."""
+    if key == "tensionMean":
+        low = [case.get(k + "WindowLow") for k in ("tensionWeather", "tensionLee")]
+        high = [case.get(k + "WindowHigh") for k in ("tensionWeather", "tensionLee")]
+        if None in low or None in high:
+            return None
+        return 0.5 * sum(low), 0.5 * sum(high)
+    low, high = case.get(key + "WindowLow"), case.get(key + "WindowHigh")
+    return None if low is None or high is None else (low, high)
+
+
+# The quantities that are per the incident amplitude a (RAOs): the
+# calibrated wave's spread moves them
+PER_AMPLITUDE = ("sway", "heave", "roll", "tensionMean")
+
+
+def data_uncertainty(case, key, spread_key):
+    """The experimental value's standard uncertainty u_D (ASME V&V 20-2009)
+    of quantity key of an experiment case (sectionwaves.read_experiment),
+    from three independent parts, each None where the data has none:
+    repetitions: half the spread of the repeated runs (column
+    spread_key; None: one run or no column); calibration: the value
+    times half the relative spread of the calibrated incident wave
+    (before and after the tests, aSpread over a) for the quantities per
+    a; window: the range over the window moved by a period either way as
+    a uniform interval (half-range over sqrt 3): the response is still
+    building up and beating over the window, and a window placed a
+    fraction of a period off, in the experiment or in the CFD, moves the
+    value within that range. Returns (u_D, {part: standard uncertainty
+    or None})."""
+    parts = {"repetitions": None, "calibration": None, "window": None}
+    if spread_key and case.get(spread_key) and case.get("nRep", 1) > 1:
+        parts["repetitions"] = 0.5 * case[spread_key]
+    if key in PER_AMPLITUDE and case.get("amplitudeSpread") is not None:
+        parts["calibration"] = abs(case[key]) * 0.5 * case["amplitudeSpread"] / case["amplitude"]
+    span = window_range(case, key)
+    if span is not None:
+        parts["window"] = uncertainty.uniform_standard_uncertainty(*span)
+    return math.sqrt(sum(u * u for u in parts.values() if u is not None)), parts

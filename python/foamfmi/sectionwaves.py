@@ -147,7 +147,7 @@ EXPERIMENT_COLUMNS = {
     "swayMean": "swayMean", "tensionWeatherMean": "tensionSBMean",
     "tensionLeeMean": "tensionPSMean", "wpUpAmp": "wpUpAmp",
     "swaySpread": "raoSwaySpread", "heaveSpread": "raoHeaveSpread",
-    "rollSpread": "raoRollSpread", "k": "k",
+    "rollSpread": "raoRollSpread", "k": "k", "amplitudeSpread": "aSpread",
 }
 # The window's spread of experimentRao, by the keys of QUANTITIES
 for _key, _stem in (("sway", "Sway"), ("heave", "Heave"), ("roll", "Roll"),

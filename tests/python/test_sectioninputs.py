@@ -30,6 +30,30 @@ class SectionInputsTest(unittest.TestCase):
         self.assertAlmostEqual(sectioninputs.standard_uncertainty(friction), 0.25 / 3 ** 0.5,
                                places=12)
 
+    def test_data_uncertainty(self):
+        # One repetition: the calibration and the window only. RAO 2 per
+        # a = 0.01 calibrated to 0.0002 (before and after): u_cal = 2 x
+        # 0.0001/0.01 = 0.02; the window's 1.7-2.3: u_win = 0.3/sqrt 3
+        case = {"roll": 2.0, "rollSpread": 0.0, "nRep": 1, "amplitude": 0.01,
+                "amplitudeSpread": 0.0002, "rollWindowLow": 1.7, "rollWindowHigh": 2.3}
+        u, parts = sectioninputs.data_uncertainty(case, "roll", "rollSpread")
+        self.assertIsNone(parts["repetitions"])
+        self.assertAlmostEqual(parts["calibration"], 0.02, places=12)
+        self.assertAlmostEqual(parts["window"], 0.3 / 3 ** 0.5, places=12)
+        self.assertAlmostEqual(u, (0.02 ** 2 + 0.03) ** 0.5, places=12)
+        # Two repetitions 0.1 apart add half their spread; the springs'
+        # mean takes the mean of the two gauges' windows; the drift load
+        # (not per a, no window) has none
+        case.update(nRep=2, rollSpread=0.1)
+        self.assertAlmostEqual(
+            sectioninputs.data_uncertainty(case, "roll", "rollSpread")[1]["repetitions"], 0.05)
+        springs = {"tensionMean": 10.0, "amplitude": 0.01, "amplitudeSpread": 0.0,
+                   "tensionWeatherWindowLow": 9.0, "tensionWeatherWindowHigh": 11.0,
+                   "tensionLeeWindowLow": 8.0, "tensionLeeWindowHigh": 12.0}
+        self.assertEqual(sectioninputs.window_range(springs, "tensionMean"), (8.5, 11.5))
+        self.assertEqual(sectioninputs.data_uncertainty({"drift": 0.3}, "drift", None),
+                         (0.0, {"repetitions": None, "calibration": None, "window": None}))
+
 
 if __name__ == "__main__":
     unittest.main()
