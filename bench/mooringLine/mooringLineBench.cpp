@@ -26,7 +26,10 @@
 //
 // Usage: mooringLineBench [lab|oc4] (default both; a few minutes), or
 //        mooringLineBench lab|oc4 N h [CVODE tolerance] (one run; the
-//        trapezoidal rule without a tolerance)
+//        trapezoidal rule without a tolerance), or
+//        mooringLineBench friction N h mu [surge [period [vf]]] (the lab
+//        chain with seabed friction; frictionRow)
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -258,6 +261,60 @@ void snapTable()
     row(20, 1e-3, false, 1e-8);
 }
 
+//- Seabed friction against MoorDyn's (moordyn/moordynDriver.cpp with
+//  mu=): the lab chain at N, h with seabedFriction mu and frictionVelocity
+//  vf, its fairlead surging `surge` m with period T (as `run`); over the
+//  third period the fairlead tension's mean and first harmonic, and how
+//  the grounded free nodes (below the seabed, z < Q's z) move: their mean
+//  number, their largest horizontal speed, and the share of their
+//  node-steps faster than vf (friction saturated at mu Fn)
+void frictionRow(int N, double h, double mu, double surge, double period,
+                 double vf)
+{
+    Case c = lab();
+    c.amplitude = surge;
+    c.period = period;
+    MooringLineParameters p = c.line.p;
+    p.segments = N;
+    p.seabedFriction = mu;
+    p.frictionVelocity = vf;
+    MooringLine line(p);
+    BodyKinematics B;
+    B.p_WKo_W = c.line.anchor;
+    const int perPeriod = int(std::lround(period / h));
+    MooringLineState s = line.initialState(fairleadAt(c, 0.0), B, 0.0);
+    const double cpuStart = cpuSeconds();
+    std::complex<double> a1 = 0.0;
+    double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    for (int k = 1; k <= 3 * perPeriod; ++k) {
+        const double t = k * h;
+        const BodyKinematics A = fairleadAt(c, t);
+        line.advance(s, A, B, h);
+        const double T = line.evaluate(s, A, B, 0).fairleadTension;
+        if (k <= 2 * perPeriod) {
+            continue;
+        }
+        mean += T;
+        a1 += T * std::exp(std::complex<double>(0.0, -2.0 * pi * t / period));
+        for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
+            if (s.nodes[i + 2] < B.p_WKo_W.z()) {
+                const double v = std::hypot(s.nodes[i + 3], s.nodes[i + 4]);
+                grounded += 1.0;
+                fastest = std::max(fastest, v);
+                sliding += v > vf ? 1.0 : 0.0;
+            }
+        }
+    }
+    std::printf("friction N = %d h = %g mu = %g vf = %g surge %g m period %g "
+                "s: mean %.9g N, amplitude %.9g N; grounded nodes %.3g, "
+                "fastest %.3g m/s, faster than vf %.3g of node-steps; CPU "
+                "%.3g s per simulated s\n",
+                N, h, mu, vf, surge, period, mean / perPeriod,
+                2.0 * std::abs(a1) / perPeriod, grounded / perPeriod, fastest,
+                grounded > 0.0 ? sliding / grounded : 0.0,
+                (cpuSeconds() - cpuStart) / (3.0 * period));
+}
+
 } // namespace
 
 //- Slack-taut forcing (references::slackTaut): the lab chain's fairlead
@@ -292,6 +349,14 @@ int main(int argc, char** argv)
     if ((argc == 4 || argc == 5) && std::strcmp(argv[1], "slacktaut") == 0) {
         slackTautRow(std::atoi(argv[2]), std::atof(argv[3]),
                      argc == 5 ? std::atof(argv[4]) : 0.0);
+        return 0;
+    }
+    if (argc >= 5 && argc <= 8 && std::strcmp(argv[1], "friction") == 0) {
+        // friction N h mu [surge [period [vf]]]
+        frictionRow(std::atoi(argv[2]), std::atof(argv[3]), std::atof(argv[4]),
+                    argc > 5 ? std::atof(argv[5]) : 0.01,
+                    argc > 6 ? std::atof(argv[6]) : 1.0,
+                    argc > 7 ? std::atof(argv[7]) : 0.01);
         return 0;
     }
     if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol

@@ -18,7 +18,8 @@
 // simulated second over the stepping loop (MoorDyn_Init's start
 // equilibrium not counted).
 //
-// Usage: moordynDriver lab|oc4 INPUT N dtM h [start]
+// Usage: moordynDriver lab|oc4 INPUT N dtM h [start] [mu=M] [fricDamp=C]
+//        [surge=A] [period=T] [vf=V]
 //   INPUT: a MoorDyn input file of that line (lab.txt, oc4.txt here); its
 //   line's NumSegs and the dtM option are replaced by N and dtM in a copy
 //   written to a temporary directory, where MoorDyn also writes its output
@@ -26,8 +27,19 @@
 //   each coupling step instead of the step's mean velocity (the point then
 //   ends the step at x(t) + h v(t), off the bench's path by about
 //   h^2/2 times the acceleration).
+//   mu=M, fricDamp=C: MoorDyn's seabed friction (the options
+//   FrictionCoefficient and FricDamp [N s/m], written into the copy's
+//   OPTIONS section; MoorDyn's defaults 0 and 200); surge=A, period=T: the
+//   fairlead's surge amplitude [m] and period [s] (default the line's, as
+//   mooringLineBench). With mu= the driver also prints, over the third
+//   period, the tension's mean and how the grounded free nodes (below the
+//   seabed, z < the anchor's z) move, as `mooringLineBench friction` does:
+//   their mean number, their largest horizontal speed, and the share of
+//   their node-steps faster than V (default 0.01 m/s; MoorDyn's friction
+//   saturates above Fn/C, which is V where C = Fn/V).
 #include <MoorDyn2.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -78,8 +90,10 @@ struct Motion {
 };
 
 //- The input file with the line's NumSegs (6th column of the row after
-//  the LINES header's two rows) and the dtM option replaced
-std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
+//  the LINES header's two rows) and the dtM option replaced, and `options`
+//  (rows "value name") inserted after the OPTIONS header
+std::string withSegmentsAndStep(const std::string& path, int N, double dtM,
+                                const std::string& options = "")
 {
     std::ifstream in(path);
     if (!in) {
@@ -120,6 +134,9 @@ std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
             step = true;
         }
         out << line << '\n';
+        if (line.find("OPTIONS") != std::string::npos && line[0] == '-') {
+            out << options;
+        }
     }
     if (!segments || !step) {
         throw std::runtime_error(path + ": no "
@@ -133,9 +150,35 @@ std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
 
 int main(int argc, char** argv)
 {
-    const bool startVelocity = argc == 7 && std::strcmp(argv[6], "start") == 0;
-    if (argc != 6 && !startVelocity) {
-        std::fprintf(stderr, "usage: %s lab|oc4 INPUT N dtM h [start]\n",
+    bool startVelocity = false, friction = false;
+    double mu = 0.0, fricDamp = 200.0, surge = -1.0, period = -1.0, vf = 0.01;
+    for (int k = 6; k < argc; ++k) {
+        const std::string a = argv[k];
+        const std::size_t eq = a.find('=');
+        const std::string key = a.substr(0, eq);
+        const double value
+            = eq == std::string::npos ? 0.0 : std::atof(a.c_str() + eq + 1);
+        if (a == "start") {
+            startVelocity = true;
+        } else if (key == "mu" && eq != std::string::npos) {
+            mu = value;
+            friction = true;
+        } else if (key == "fricDamp" && eq != std::string::npos) {
+            fricDamp = value;
+        } else if (key == "surge" && eq != std::string::npos) {
+            surge = value;
+        } else if (key == "period" && eq != std::string::npos) {
+            period = value;
+        } else if (key == "vf" && eq != std::string::npos) {
+            vf = value;
+        } else {
+            argc = 0; // usage
+        }
+    }
+    if (argc < 6) {
+        std::fprintf(stderr,
+                     "usage: %s lab|oc4 INPUT N dtM h [start] [mu=M] "
+                     "[fricDamp=C] [surge=A] [period=T] [vf=V]\n",
                      argv[0]);
         return 2;
     }
@@ -145,8 +188,14 @@ int main(int argc, char** argv)
                      argv[1]);
         return 2;
     }
-    const Motion motion = lab ? Motion {0.0, 0.0, -0.05, 0.01, 1.0}
-                              : Motion {-40.868, 0.0, -14.0, 1.0, 10.0};
+    Motion motion = lab ? Motion {0.0, 0.0, -0.05, 0.01, 1.0}
+                        : Motion {-40.868, 0.0, -14.0, 1.0, 10.0};
+    if (surge >= 0.0) {
+        motion.amplitude = surge;
+    }
+    if (period > 0.0) {
+        motion.period = period;
+    }
     const int N = std::atoi(argv[3]);
     const double dtM = std::atof(argv[4]), h = std::atof(argv[5]);
     if (N < 1 || !(dtM > 0.0) || !(h > 0.0)) {
@@ -163,7 +212,13 @@ int main(int argc, char** argv)
     }
     const std::string input = std::string(directory) + "/line.txt";
     try {
-        std::ofstream(input) << withSegmentsAndStep(argv[2], N, dtM);
+        char options[160] = "";
+        if (friction) {
+            std::snprintf(options, sizeof options,
+                          "%.17g  FrictionCoefficient\n%.17g  FricDamp\n", mu,
+                          fricDamp);
+        }
+        std::ofstream(input) << withSegmentsAndStep(argv[2], N, dtM, options);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "moordynDriver: %s\n", e.what());
         return 1;
@@ -195,6 +250,10 @@ int main(int argc, char** argv)
         = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     const int perPeriod = int(std::lround(motion.period / h));
     std::complex<double> a1 = 0.0;
+    // the tension's mean and the grounded free nodes (mu=)
+    double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    const double seabed = lab ? -0.5 : -200.0;
+    MoorDynLine mooring = MoorDyn_GetLine(system, 1);
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = cpuSeconds();
     for (int k = 1; k <= 3 * perPeriod; ++k) {
@@ -219,6 +278,21 @@ int main(int argc, char** argv)
             a1 += T
                 * std::exp(std::complex<double>(
                     0.0, -2.0 * pi * k * h / motion.period));
+            mean += T;
+        }
+        for (int i = 1; friction && k > 2 * perPeriod && i < N; ++i) {
+            double r[3], u[3];
+            if (MoorDyn_GetLineNodePos(mooring, i, r) != MOORDYN_SUCCESS
+                || MoorDyn_GetLineNodeVel(mooring, i, u) != MOORDYN_SUCCESS) {
+                std::fprintf(stderr, "moordynDriver: node %d: no state\n", i);
+                return 1;
+            }
+            if (r[2] < seabed) {
+                const double speed = std::hypot(u[0], u[1]);
+                grounded += 1.0;
+                fastest = std::max(fastest, speed);
+                sliding += speed > vf ? 1.0 : 0.0;
+            }
         }
     }
     const double cpu = (cpuSeconds() - cpuStart) / (3.0 * motion.period);
@@ -234,5 +308,15 @@ int main(int argc, char** argv)
                 "%.4g s (CPU %.4g s) per simulated s, start tension %.9g N\n",
                 argv[1], N, dtM, h, startVelocity ? " (start velocity)" : "",
                 2.0 * std::abs(a1) / perPeriod, wall, cpu, startTension);
+    if (friction) {
+        std::printf("MoorDyn friction N = %d dtM = %g mu = %g fricDamp = %g "
+                    "surge %g m period %g s: mean %.9g N, amplitude %.9g N; "
+                    "grounded nodes %.3g, fastest %.3g m/s, faster than "
+                    "%g m/s %.3g of node-steps\n",
+                    N, dtM, mu, fricDamp, motion.amplitude, motion.period,
+                    mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
+                    grounded / perPeriod, fastest, vf,
+                    grounded > 0.0 ? sliding / grounded : 0.0);
+    }
     return 0;
 }
