@@ -266,8 +266,11 @@ void snapTable()
 //  vf, its fairlead surging `surge` m with period T (as `run`); over the
 //  third period the fairlead tension's mean and first harmonic, and how
 //  the grounded free nodes (below the seabed, z < Q's z) move: their mean
-//  number, their largest horizontal speed, and the share of their
-//  node-steps faster than vf (friction saturated at mu Fn)
+//  number, their largest horizontal speed, the share of their node-steps
+//  faster than vf (friction saturated at mu Fn), and their push on the
+//  seabed Fn (the law's: kb (zb - z) d l - cb s vz d l, s the damping's
+//  ramp) over their submerged weight w l, weighted by |v_h|^2 (as the
+//  friction's power below vf: mu Fn |v_h|^2/vf, MoorDyn's mu C |v_h|^2)
 void frictionRow(int N, double h, double mu, double surge, double period,
                  double vf)
 {
@@ -286,6 +289,11 @@ void frictionRow(int N, double h, double mu, double surge, double period,
     const double cpuStart = cpuSeconds();
     std::complex<double> a1 = 0.0;
     double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    double pushed = 0.0, squares = 0.0;
+    const double l = p.length / N, d = p.diameter;
+    const double wl
+        = (p.massPerLength - p.waterDensity * pi / 4.0 * d * d) * p.gravity * l;
+    const double restDepth = wl / (p.seabedStiffness * d * l);
     for (int k = 1; k <= 3 * perPeriod; ++k) {
         const double t = k * h;
         const BodyKinematics A = fairleadAt(c, t);
@@ -297,8 +305,15 @@ void frictionRow(int N, double h, double mu, double surge, double period,
         mean += T;
         a1 += T * std::exp(std::complex<double>(0.0, -2.0 * pi * t / period));
         for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
-            if (s.nodes[i + 2] < B.p_WKo_W.z()) {
+            const double depth = B.p_WKo_W.z() - s.nodes[i + 2];
+            if (depth > 0.0) {
                 const double v = std::hypot(s.nodes[i + 3], s.nodes[i + 4]);
+                const double push = d * l
+                    * (p.seabedStiffness * depth
+                       - p.seabedDamping * std::min(depth / restDepth, 1.0)
+                           * s.nodes[i + 5]);
+                pushed += std::max(push, 0.0) / wl * v * v;
+                squares += v * v;
                 grounded += 1.0;
                 fastest = std::max(fastest, v);
                 sliding += v > vf ? 1.0 : 0.0;
@@ -307,11 +322,12 @@ void frictionRow(int N, double h, double mu, double surge, double period,
     }
     std::printf("friction N = %d h = %g mu = %g vf = %g surge %g m period %g "
                 "s: mean %.9g N, amplitude %.9g N; grounded nodes %.3g, "
-                "fastest %.3g m/s, faster than vf %.3g of node-steps; CPU "
-                "%.3g s per simulated s\n",
+                "fastest %.3g m/s, faster than vf %.3g of node-steps, push "
+                "%.3g w l; CPU %.3g s per simulated s\n",
                 N, h, mu, vf, surge, period, mean / perPeriod,
                 2.0 * std::abs(a1) / perPeriod, grounded / perPeriod, fastest,
                 grounded > 0.0 ? sliding / grounded : 0.0,
+                squares > 0.0 ? pushed / squares : 0.0,
                 (cpuSeconds() - cpuStart) / (3.0 * period));
 }
 

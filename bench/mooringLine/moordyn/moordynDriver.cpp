@@ -36,7 +36,10 @@
 //   seabed, z < the anchor's z) move, as `mooringLineBench friction` does:
 //   their mean number, their largest horizontal speed, and the share of
 //   their node-steps faster than V (default 0.01 m/s; MoorDyn's friction
-//   saturates above Fn/C, which is V where C = Fn/V).
+//   saturates above Fn/C, which is V where C = Fn/V), and their push on
+//   the seabed (MoorDyn's: kb (depth - z) d l - cb vz d l) over their
+//   submerged weight w l, weighted by |v_h|^2 (mooringLineBench.cpp,
+//   frictionRow; the lab chain's d, l, w, kb, cb of lab.txt).
 #include <MoorDyn2.h>
 
 #include <algorithm>
@@ -252,6 +255,9 @@ int main(int argc, char** argv)
     std::complex<double> a1 = 0.0;
     // the tension's mean and the grounded free nodes (mu=)
     double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    double pushed = 0.0, squares = 0.0;
+    const double d = 0.0036, l = 1.2 / N, kb = 3e5, cb = 3e3;
+    const double wl = (0.0796 - 1025.0 * pi / 4.0 * d * d) * 9.81 * l;
     const double seabed = lab ? -0.5 : -200.0;
     MoorDynLine mooring = MoorDyn_GetLine(system, 1);
     const auto start = std::chrono::steady_clock::now();
@@ -289,6 +295,9 @@ int main(int argc, char** argv)
             }
             if (r[2] < seabed) {
                 const double speed = std::hypot(u[0], u[1]);
+                const double push = ((seabed - r[2]) * kb - u[2] * cb) * d * l;
+                pushed += std::abs(push) / wl * speed * speed;
+                squares += speed * speed;
                 grounded += 1.0;
                 fastest = std::max(fastest, speed);
                 sliding += speed > vf ? 1.0 : 0.0;
@@ -312,11 +321,12 @@ int main(int argc, char** argv)
         std::printf("MoorDyn friction N = %d dtM = %g mu = %g fricDamp = %g "
                     "surge %g m period %g s: mean %.9g N, amplitude %.9g N; "
                     "grounded nodes %.3g, fastest %.3g m/s, faster than "
-                    "%g m/s %.3g of node-steps\n",
+                    "%g m/s %.3g of node-steps, push %.3g w l\n",
                     N, dtM, mu, fricDamp, motion.amplitude, motion.period,
                     mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
                     grounded / perPeriod, fastest, vf,
-                    grounded > 0.0 ? sliding / grounded : 0.0);
+                    grounded > 0.0 ? sliding / grounded : 0.0,
+                    squares > 0.0 ? pushed / squares : 0.0);
     }
     return 0;
 }
