@@ -19,7 +19,7 @@
 // equilibrium not counted).
 //
 // Usage: moordynDriver lab|oc4 INPUT N dtM h [start] [mu=M] [fricDamp=C]
-//        [surge=A] [period=T] [vf=V]
+//        [surge=A | sway=A] [period=T] [vf=V]
 //   INPUT: a MoorDyn input file of that line (lab.txt, oc4.txt here); its
 //   line's NumSegs and the dtM option are replaced by N and dtM in a copy
 //   written to a temporary directory, where MoorDyn also writes its output
@@ -31,8 +31,9 @@
 //   FrictionCoefficient and FricDamp [N s/m], written into the copy's
 //   OPTIONS section; MoorDyn's defaults 0 and 200); surge=A, period=T: the
 //   fairlead's surge amplitude [m] and period [s] (default the line's, as
-//   mooringLineBench). With mu= the driver also prints, over the third
-//   period, the tension's mean and how the grounded free nodes (below the
+//   mooringLineBench); sway=A: the same motion along y. With mu= the
+//   driver also prints, over the third period, the tension's mean, its
+//   second harmonic and how the grounded free nodes (below the
 //   seabed, z < the anchor's z) move, as `mooringLineBench friction` does:
 //   their mean number, their largest horizontal speed, and the share of
 //   their node-steps faster than V (default 0.01 m/s; MoorDyn's friction
@@ -72,13 +73,16 @@ double cpuSeconds()
 //- The bench's fairlead motion (mooringLineBench.cpp, fairleadAt)
 struct Motion {
     double x0, y0, z0, amplitude, period;
+    //- 0: surge (along x), 1: sway (along y)
+    int axis = 0;
     void at(double t, double x[3]) const
     {
         const double r
             = t < period ? 0.5 * (1.0 - std::cos(pi * t / period)) : 1.0;
-        x[0] = x0 + amplitude * r * std::sin(2.0 * pi * t / period);
+        x[0] = x0;
         x[1] = y0;
         x[2] = z0;
+        x[axis] += amplitude * r * std::sin(2.0 * pi * t / period);
     }
     void velocityAt(double t, double v[3]) const
     {
@@ -87,8 +91,8 @@ struct Motion {
             = t < period ? 0.5 * (1.0 - std::cos(pi * t / period)) : 1.0;
         const double dr
             = t < period ? 0.5 * pi / period * std::sin(pi * t / period) : 0.0;
-        v[0] = amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t));
-        v[1] = v[2] = 0.0;
+        v[0] = v[1] = v[2] = 0.0;
+        v[axis] = amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t));
     }
 };
 
@@ -154,6 +158,7 @@ std::string withSegmentsAndStep(const std::string& path, int N, double dtM,
 int main(int argc, char** argv)
 {
     bool startVelocity = false, friction = false;
+    int axis = 0;
     double mu = 0.0, fricDamp = 200.0, surge = -1.0, period = -1.0, vf = 0.01;
     for (int k = 6; k < argc; ++k) {
         const std::string a = argv[k];
@@ -168,8 +173,10 @@ int main(int argc, char** argv)
             friction = true;
         } else if (key == "fricDamp" && eq != std::string::npos) {
             fricDamp = value;
-        } else if (key == "surge" && eq != std::string::npos) {
+        } else if ((key == "surge" || key == "sway")
+                   && eq != std::string::npos) {
             surge = value;
+            axis = key == "sway" ? 1 : 0;
         } else if (key == "period" && eq != std::string::npos) {
             period = value;
         } else if (key == "vf" && eq != std::string::npos) {
@@ -181,7 +188,7 @@ int main(int argc, char** argv)
     if (argc < 6) {
         std::fprintf(stderr,
                      "usage: %s lab|oc4 INPUT N dtM h [start] [mu=M] "
-                     "[fricDamp=C] [surge=A] [period=T] [vf=V]\n",
+                     "[fricDamp=C] [surge=A | sway=A] [period=T] [vf=V]\n",
                      argv[0]);
         return 2;
     }
@@ -196,6 +203,7 @@ int main(int argc, char** argv)
     if (surge >= 0.0) {
         motion.amplitude = surge;
     }
+    motion.axis = axis;
     if (period > 0.0) {
         motion.period = period;
     }
@@ -252,7 +260,7 @@ int main(int argc, char** argv)
     const double startTension
         = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     const int perPeriod = int(std::lround(motion.period / h));
-    std::complex<double> a1 = 0.0;
+    std::complex<double> a1 = 0.0, a2 = 0.0;
     // the tension's mean and the grounded free nodes (mu=)
     double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
     double pushed = 0.0, squares = 0.0;
@@ -284,6 +292,9 @@ int main(int argc, char** argv)
             a1 += T
                 * std::exp(std::complex<double>(
                     0.0, -2.0 * pi * k * h / motion.period));
+            a2 += T
+                * std::exp(std::complex<double>(
+                    0.0, -4.0 * pi * k * h / motion.period));
             mean += T;
         }
         for (int i = 1; friction && k > 2 * perPeriod && i < N; ++i) {
@@ -319,13 +330,15 @@ int main(int argc, char** argv)
                 2.0 * std::abs(a1) / perPeriod, wall, cpu, startTension);
     if (friction) {
         std::printf("MoorDyn friction N = %d dtM = %g mu = %g fricDamp = %g "
-                    "surge %g m period %g s: mean %.9g N, amplitude %.9g N; "
+                    "%s %g m period %g s: mean %.9g N, amplitude %.9g N, "
+                    "second %.9g N; "
                     "grounded nodes %.3g, fastest %.3g m/s, faster than "
                     "%g m/s %.3g of node-steps, push %.3g w l\n",
-                    N, dtM, mu, fricDamp, motion.amplitude, motion.period,
-                    mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
-                    grounded / perPeriod, fastest, vf,
-                    grounded > 0.0 ? sliding / grounded : 0.0,
+                    N, dtM, mu, fricDamp, axis == 1 ? "sway" : "surge",
+                    motion.amplitude, motion.period, mean / perPeriod,
+                    2.0 * std::abs(a1) / perPeriod,
+                    2.0 * std::abs(a2) / perPeriod, grounded / perPeriod,
+                    fastest, vf, grounded > 0.0 ? sliding / grounded : 0.0,
                     squares > 0.0 ? pushed / squares : 0.0);
     }
     return 0;
