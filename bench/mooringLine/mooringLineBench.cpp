@@ -326,9 +326,8 @@ void frictionRow(int N, double h, double mu, double surge, double period,
     }
     std::printf("friction N = %d h = %g mu = %g vf = %g %s %g m period %g "
                 "s: mean %.9g N, amplitude %.9g N, second %.9g N; grounded "
-                "nodes %.3g, "
-                "fastest %.3g m/s, faster than vf %.3g of node-steps, push "
-                "%.3g w l; CPU %.3g s per simulated s\n",
+                "nodes %.3g, fastest %.3g m/s, faster than vf %.3g of "
+                "node-steps, push %.3g w l; CPU %.3g s per simulated s\n",
                 N, h, mu, vf, sway ? "sway" : "surge", surge, period,
                 mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
                 2.0 * std::abs(a2) / perPeriod, grounded / perPeriod, fastest,

@@ -31,16 +31,17 @@
 //   FrictionCoefficient and FricDamp [N s/m], written into the copy's
 //   OPTIONS section; MoorDyn's defaults 0 and 200); surge=A, period=T: the
 //   fairlead's surge amplitude [m] and period [s] (default the line's, as
-//   mooringLineBench); sway=A: the same motion along y. With mu= the
-//   driver also prints, over the third period, the tension's mean, its
-//   second harmonic and how the grounded free nodes (below the
-//   seabed, z < the anchor's z) move, as `mooringLineBench friction` does:
-//   their mean number, their largest horizontal speed, and the share of
-//   their node-steps faster than V (default 0.01 m/s; MoorDyn's friction
-//   saturates above Fn/C, which is V where C = Fn/V), and their push on
-//   the seabed (MoorDyn's: kb (depth - z) d l - cb vz d l) over their
-//   submerged weight w l, weighted by |v_h|^2 (mooringLineBench.cpp,
-//   frictionRow; the lab chain's d, l, w, kb, cb of lab.txt).
+//   mooringLineBench); sway=A: the same motion along y. mu= is for the
+//   lab chain only: the driver then also prints, over the third period,
+//   the tension's mean, its second harmonic and how the grounded free
+//   nodes (below the seabed, z < the anchor's z) move, as
+//   `mooringLineBench friction` does: their mean number, their largest
+//   horizontal speed, the share of their node-steps faster than V
+//   (default 0.01 m/s; MoorDyn's friction saturates above Fn/C, which is
+//   V where C = Fn/V), and their push on the seabed (MoorDyn's:
+//   kb (depth - z) d l - cb vz d l) over their submerged weight w l,
+//   weighted by |v_h|^2 (mooringLineBench.cpp, frictionRow; d, l, w, kb,
+//   cb of lab.txt).
 #include <MoorDyn2.h>
 
 #include <algorithm>
@@ -184,6 +185,10 @@ int main(int argc, char** argv)
         } else {
             argc = 0; // usage
         }
+    }
+    if (argc >= 6 && friction && std::strcmp(argv[1], "lab") != 0) {
+        std::fprintf(stderr, "moordynDriver: mu= is for the lab chain\n");
+        return 2;
     }
     if (argc < 6) {
         std::fprintf(stderr,
@@ -331,9 +336,8 @@ int main(int argc, char** argv)
     if (friction) {
         std::printf("MoorDyn friction N = %d dtM = %g mu = %g fricDamp = %g "
                     "%s %g m period %g s: mean %.9g N, amplitude %.9g N, "
-                    "second %.9g N; "
-                    "grounded nodes %.3g, fastest %.3g m/s, faster than "
-                    "%g m/s %.3g of node-steps, push %.3g w l\n",
+                    "second %.9g N; grounded nodes %.3g, fastest %.3g m/s, "
+                    "faster than %g m/s %.3g of node-steps, push %.3g w l\n",
                     N, dtM, mu, fricDamp, axis == 1 ? "sway" : "surge",
                     motion.amplitude, motion.period, mean / perPeriod,
                     2.0 * std::abs(a1) / perPeriod,
