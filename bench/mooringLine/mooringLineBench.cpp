@@ -27,8 +27,8 @@
 // Usage: mooringLineBench [lab|oc4] (default both; a few minutes), or
 //        mooringLineBench lab|oc4 N h [CVODE tolerance] (one run; the
 //        trapezoidal rule without a tolerance), or
-//        mooringLineBench friction N h mu [surge [period [vf [sway]]]]
-//        (the lab chain with seabed friction; frictionRow)
+//        mooringLineBench friction N h mu [surge [period [vf [surge|sway
+//        [r]]]]] (the lab chain with seabed friction; frictionRow)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -264,7 +264,8 @@ void snapTable()
 
 //- Seabed friction against MoorDyn's (moordyn/moordynDriver.cpp with
 //  mu=): the lab chain at N, h with seabedFriction mu and frictionVelocity
-//  vf, its fairlead surging (or swaying) `surge` m with period T (as
+//  vf (and axialFrictionRatio r: 1, isotropic, as MoorDyn's), its
+//  fairlead surging (or swaying) `surge` m with period T (as
 //  `run`); over the third period the fairlead tension's mean, first and
 //  second harmonics (a sway's tension has twice its frequency), and how
 //  the grounded free nodes (below the seabed, z < Q's z) move: their mean
@@ -274,7 +275,7 @@ void snapTable()
 //  ramp) over their submerged weight w l, weighted by |v_h|^2 (as the
 //  friction's power below vf: mu Fn |v_h|^2/vf, MoorDyn's mu C |v_h|^2)
 void frictionRow(int N, double h, double mu, double surge, double period,
-                 double vf, bool sway)
+                 double vf, bool sway, double r)
 {
     Case c = lab();
     c.amplitude = surge;
@@ -284,6 +285,7 @@ void frictionRow(int N, double h, double mu, double surge, double period,
     p.segments = N;
     p.seabedFriction = mu;
     p.frictionVelocity = vf;
+    p.axialFrictionRatio = r;
     MooringLine line(p);
     BodyKinematics B;
     B.p_WKo_W = c.line.anchor;
@@ -324,16 +326,17 @@ void frictionRow(int N, double h, double mu, double surge, double period,
             }
         }
     }
-    std::printf("friction N = %d h = %g mu = %g vf = %g %s %g m period %g "
-                "s: mean %.9g N, amplitude %.9g N, second %.9g N; grounded "
-                "nodes %.3g, fastest %.3g m/s, faster than vf %.3g of "
-                "node-steps, push %.3g w l; CPU %.3g s per simulated s\n",
-                N, h, mu, vf, sway ? "sway" : "surge", surge, period,
-                mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
-                2.0 * std::abs(a2) / perPeriod, grounded / perPeriod, fastest,
-                grounded > 0.0 ? sliding / grounded : 0.0,
-                squares > 0.0 ? pushed / squares : 0.0,
-                (cpuSeconds() - cpuStart) / (3.0 * period));
+    std::printf(
+        "friction N = %d h = %g mu = %g vf = %g r = %g %s %g m period %g "
+        "s: mean %.9g N, amplitude %.9g N, second %.9g N; grounded "
+        "nodes %.3g, fastest %.3g m/s, faster than vf %.3g of "
+        "node-steps, push %.3g w l; CPU %.3g s per simulated s\n",
+        N, h, mu, vf, r, sway ? "sway" : "surge", surge, period,
+        mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
+        2.0 * std::abs(a2) / perPeriod, grounded / perPeriod, fastest,
+        grounded > 0.0 ? sliding / grounded : 0.0,
+        squares > 0.0 ? pushed / squares : 0.0,
+        (cpuSeconds() - cpuStart) / (3.0 * period));
 }
 
 } // namespace
@@ -372,13 +375,14 @@ int main(int argc, char** argv)
                      argc == 5 ? std::atof(argv[4]) : 0.0);
         return 0;
     }
-    if (argc >= 5 && argc <= 9 && std::strcmp(argv[1], "friction") == 0) {
-        // friction N h mu [surge [period [vf [sway]]]]
+    if (argc >= 5 && argc <= 10 && std::strcmp(argv[1], "friction") == 0) {
+        // friction N h mu [surge [period [vf [surge|sway [r]]]]]
         frictionRow(std::atoi(argv[2]), std::atof(argv[3]), std::atof(argv[4]),
                     argc > 5 ? std::atof(argv[5]) : 0.01,
                     argc > 6 ? std::atof(argv[6]) : 1.0,
                     argc > 7 ? std::atof(argv[7]) : 0.01,
-                    argc > 8 && std::strcmp(argv[8], "sway") == 0);
+                    argc > 8 && std::strcmp(argv[8], "sway") == 0,
+                    argc > 9 ? std::atof(argv[9]) : 1.0);
         return 0;
     }
     if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol
