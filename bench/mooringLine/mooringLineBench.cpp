@@ -26,7 +26,10 @@
 //
 // Usage: mooringLineBench [lab|oc4] (default both; a few minutes), or
 //        mooringLineBench lab|oc4 N h [CVODE tolerance] (one run; the
-//        trapezoidal rule without a tolerance)
+//        trapezoidal rule without a tolerance), or
+//        mooringLineBench friction N h mu [surge [period [vf [surge|sway
+//        [r]]]]] (the lab chain with seabed friction; frictionRow)
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -60,6 +63,8 @@ struct Case {
     //- Coupling steps of the table; CVODE's tolerance for the comparison
     std::vector<double> steps;
     double cvodeTolerance;
+    //- The fairlead's direction of motion: surge (x) or sway (y)
+    Vector3 direction = Vector3::UnitX();
 };
 
 Case lab()
@@ -81,11 +86,10 @@ BodyKinematics fairleadAt(const Case& c, double t)
         ? 0.5 * pi / c.period * std::sin(pi * t / c.period)
         : 0.0;
     BodyKinematics A;
-    A.p_WKo_W = c.line.fairlead
-        + Vector3(c.amplitude * r * std::sin(w * t), 0.0, 0.0);
-    A.v_WKo_W = Vector3(c.amplitude
-                            * (dr * std::sin(w * t) + r * w * std::cos(w * t)),
-                        0.0, 0.0);
+    A.p_WKo_W
+        = c.line.fairlead + c.direction * c.amplitude * r * std::sin(w * t);
+    A.v_WKo_W = c.direction * c.amplitude
+        * (dr * std::sin(w * t) + r * w * std::cos(w * t));
     return A;
 }
 
@@ -258,6 +262,83 @@ void snapTable()
     row(20, 1e-3, false, 1e-8);
 }
 
+//- Seabed friction against MoorDyn's (moordyn/moordynDriver.cpp with
+//  mu=): the lab chain at N, h with seabedFriction mu and frictionVelocity
+//  vf (and axialFrictionRatio r: 1, isotropic, as MoorDyn's), its
+//  fairlead surging (or swaying) `surge` m with period T (as
+//  `run`); over the third period the fairlead tension's mean, first and
+//  second harmonics (a sway's tension has twice its frequency), and how
+//  the grounded free nodes (below the seabed, z < Q's z) move: their mean
+//  number, their largest horizontal speed, the share of their node-steps
+//  faster than vf (friction saturated at mu Fn), and their push on the
+//  seabed Fn (the law's: kb (zb - z) d l - cb s vz d l, s the damping's
+//  ramp) over their submerged weight w l, weighted by |v_h|^2 (as the
+//  friction's power below vf: mu Fn |v_h|^2/vf, MoorDyn's mu C |v_h|^2)
+void frictionRow(int N, double h, double mu, double surge, double period,
+                 double vf, bool sway, double r)
+{
+    Case c = lab();
+    c.amplitude = surge;
+    c.period = period;
+    c.direction = sway ? Vector3::UnitY() : Vector3::UnitX();
+    MooringLineParameters p = c.line.p;
+    p.segments = N;
+    p.seabedFriction = mu;
+    p.frictionVelocity = vf;
+    p.axialFrictionRatio = r;
+    MooringLine line(p);
+    BodyKinematics B;
+    B.p_WKo_W = c.line.anchor;
+    const int perPeriod = int(std::lround(period / h));
+    MooringLineState s = line.initialState(fairleadAt(c, 0.0), B, 0.0);
+    const double cpuStart = cpuSeconds();
+    std::complex<double> a1 = 0.0, a2 = 0.0;
+    double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    double pushed = 0.0, squares = 0.0;
+    const double l = p.length / N, d = p.diameter;
+    const double wl
+        = (p.massPerLength - p.waterDensity * pi / 4.0 * d * d) * p.gravity * l;
+    const double restDepth = wl / (p.seabedStiffness * d * l);
+    for (int k = 1; k <= 3 * perPeriod; ++k) {
+        const double t = k * h;
+        const BodyKinematics A = fairleadAt(c, t);
+        line.advance(s, A, B, h);
+        const double T = line.evaluate(s, A, B, 0).fairleadTension;
+        if (k <= 2 * perPeriod) {
+            continue;
+        }
+        mean += T;
+        a1 += T * std::exp(std::complex<double>(0.0, -2.0 * pi * t / period));
+        a2 += T * std::exp(std::complex<double>(0.0, -4.0 * pi * t / period));
+        for (std::size_t i = 0; i + 5 < s.nodes.size(); i += 6) {
+            const double depth = B.p_WKo_W.z() - s.nodes[i + 2];
+            if (depth > 0.0) {
+                const double v = std::hypot(s.nodes[i + 3], s.nodes[i + 4]);
+                const double push = d * l
+                    * (p.seabedStiffness * depth
+                       - p.seabedDamping * std::min(depth / restDepth, 1.0)
+                           * s.nodes[i + 5]);
+                pushed += std::max(push, 0.0) / wl * v * v;
+                squares += v * v;
+                grounded += 1.0;
+                fastest = std::max(fastest, v);
+                sliding += v > vf ? 1.0 : 0.0;
+            }
+        }
+    }
+    std::printf(
+        "friction N = %d h = %g mu = %g vf = %g r = %g %s %g m period %g "
+        "s: mean %.9g N, amplitude %.9g N, second %.9g N; grounded "
+        "nodes %.3g, fastest %.3g m/s, faster than vf %.3g of "
+        "node-steps, push %.3g w l; CPU %.3g s per simulated s\n",
+        N, h, mu, vf, r, sway ? "sway" : "surge", surge, period,
+        mean / perPeriod, 2.0 * std::abs(a1) / perPeriod,
+        2.0 * std::abs(a2) / perPeriod, grounded / perPeriod, fastest,
+        grounded > 0.0 ? sliding / grounded : 0.0,
+        squares > 0.0 ? pushed / squares : 0.0,
+        (cpuSeconds() - cpuStart) / (3.0 * period));
+}
+
 } // namespace
 
 //- Slack-taut forcing (references::slackTaut): the lab chain's fairlead
@@ -292,6 +373,16 @@ int main(int argc, char** argv)
     if ((argc == 4 || argc == 5) && std::strcmp(argv[1], "slacktaut") == 0) {
         slackTautRow(std::atoi(argv[2]), std::atof(argv[3]),
                      argc == 5 ? std::atof(argv[4]) : 0.0);
+        return 0;
+    }
+    if (argc >= 5 && argc <= 10 && std::strcmp(argv[1], "friction") == 0) {
+        // friction N h mu [surge [period [vf [surge|sway [r]]]]]
+        frictionRow(std::atoi(argv[2]), std::atof(argv[3]), std::atof(argv[4]),
+                    argc > 5 ? std::atof(argv[5]) : 0.01,
+                    argc > 6 ? std::atof(argv[6]) : 1.0,
+                    argc > 7 ? std::atof(argv[7]) : 0.01,
+                    argc > 8 && std::strcmp(argv[8], "sway") == 0,
+                    argc > 9 ? std::atof(argv[9]) : 1.0);
         return 0;
     }
     if (argc == 5 && std::strcmp(argv[1], "snap") == 0) { // snap N h tol

@@ -18,7 +18,8 @@
 // simulated second over the stepping loop (MoorDyn_Init's start
 // equilibrium not counted).
 //
-// Usage: moordynDriver lab|oc4 INPUT N dtM h [start]
+// Usage: moordynDriver lab|oc4 INPUT N dtM h [start] [mu=M] [fricDamp=C]
+//        [surge=A | sway=A] [period=T] [vf=V]
 //   INPUT: a MoorDyn input file of that line (lab.txt, oc4.txt here); its
 //   line's NumSegs and the dtM option are replaced by N and dtM in a copy
 //   written to a temporary directory, where MoorDyn also writes its output
@@ -26,8 +27,24 @@
 //   each coupling step instead of the step's mean velocity (the point then
 //   ends the step at x(t) + h v(t), off the bench's path by about
 //   h^2/2 times the acceleration).
+//   mu=M, fricDamp=C: MoorDyn's seabed friction (the options
+//   FrictionCoefficient and FricDamp [N s/m], written into the copy's
+//   OPTIONS section; MoorDyn's defaults 0 and 200); surge=A, period=T: the
+//   fairlead's surge amplitude [m] and period [s] (default the line's, as
+//   mooringLineBench); sway=A: the same motion along y. mu= is for the
+//   lab chain only: the driver then also prints, over the third period,
+//   the tension's mean, its second harmonic and how the grounded free
+//   nodes (below the seabed, z < the anchor's z) move, as
+//   `mooringLineBench friction` does: their mean number, their largest
+//   horizontal speed, the share of their node-steps faster than V
+//   (default 0.01 m/s; MoorDyn's friction saturates above Fn/C, which is
+//   V where C = Fn/V), and their push on the seabed (MoorDyn's:
+//   kb (depth - z) d l - cb vz d l) over their submerged weight w l,
+//   weighted by |v_h|^2 (mooringLineBench.cpp, frictionRow; d, l, w, kb,
+//   cb of lab.txt).
 #include <MoorDyn2.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -57,13 +74,16 @@ double cpuSeconds()
 //- The bench's fairlead motion (mooringLineBench.cpp, fairleadAt)
 struct Motion {
     double x0, y0, z0, amplitude, period;
+    //- 0: surge (along x), 1: sway (along y)
+    int axis = 0;
     void at(double t, double x[3]) const
     {
         const double r
             = t < period ? 0.5 * (1.0 - std::cos(pi * t / period)) : 1.0;
-        x[0] = x0 + amplitude * r * std::sin(2.0 * pi * t / period);
+        x[0] = x0;
         x[1] = y0;
         x[2] = z0;
+        x[axis] += amplitude * r * std::sin(2.0 * pi * t / period);
     }
     void velocityAt(double t, double v[3]) const
     {
@@ -72,14 +92,16 @@ struct Motion {
             = t < period ? 0.5 * (1.0 - std::cos(pi * t / period)) : 1.0;
         const double dr
             = t < period ? 0.5 * pi / period * std::sin(pi * t / period) : 0.0;
-        v[0] = amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t));
-        v[1] = v[2] = 0.0;
+        v[0] = v[1] = v[2] = 0.0;
+        v[axis] = amplitude * (dr * std::sin(w * t) + r * w * std::cos(w * t));
     }
 };
 
 //- The input file with the line's NumSegs (6th column of the row after
-//  the LINES header's two rows) and the dtM option replaced
-std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
+//  the LINES header's two rows) and the dtM option replaced, and `options`
+//  (rows "value name") inserted after the OPTIONS header
+std::string withSegmentsAndStep(const std::string& path, int N, double dtM,
+                                const std::string& options = "")
 {
     std::ifstream in(path);
     if (!in) {
@@ -120,6 +142,9 @@ std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
             step = true;
         }
         out << line << '\n';
+        if (line.find("OPTIONS") != std::string::npos && line[0] == '-') {
+            out << options;
+        }
     }
     if (!segments || !step) {
         throw std::runtime_error(path + ": no "
@@ -133,9 +158,42 @@ std::string withSegmentsAndStep(const std::string& path, int N, double dtM)
 
 int main(int argc, char** argv)
 {
-    const bool startVelocity = argc == 7 && std::strcmp(argv[6], "start") == 0;
-    if (argc != 6 && !startVelocity) {
-        std::fprintf(stderr, "usage: %s lab|oc4 INPUT N dtM h [start]\n",
+    bool startVelocity = false, friction = false;
+    int axis = 0;
+    double mu = 0.0, fricDamp = 200.0, surge = -1.0, period = -1.0, vf = 0.01;
+    for (int k = 6; k < argc; ++k) {
+        const std::string a = argv[k];
+        const std::size_t eq = a.find('=');
+        const std::string key = a.substr(0, eq);
+        const double value
+            = eq == std::string::npos ? 0.0 : std::atof(a.c_str() + eq + 1);
+        if (a == "start") {
+            startVelocity = true;
+        } else if (key == "mu" && eq != std::string::npos) {
+            mu = value;
+            friction = true;
+        } else if (key == "fricDamp" && eq != std::string::npos) {
+            fricDamp = value;
+        } else if ((key == "surge" || key == "sway")
+                   && eq != std::string::npos) {
+            surge = value;
+            axis = key == "sway" ? 1 : 0;
+        } else if (key == "period" && eq != std::string::npos) {
+            period = value;
+        } else if (key == "vf" && eq != std::string::npos) {
+            vf = value;
+        } else {
+            argc = 0; // usage
+        }
+    }
+    if (argc >= 6 && friction && std::strcmp(argv[1], "lab") != 0) {
+        std::fprintf(stderr, "moordynDriver: mu= is for the lab chain\n");
+        return 2;
+    }
+    if (argc < 6) {
+        std::fprintf(stderr,
+                     "usage: %s lab|oc4 INPUT N dtM h [start] [mu=M] "
+                     "[fricDamp=C] [surge=A | sway=A] [period=T] [vf=V]\n",
                      argv[0]);
         return 2;
     }
@@ -145,8 +203,15 @@ int main(int argc, char** argv)
                      argv[1]);
         return 2;
     }
-    const Motion motion = lab ? Motion {0.0, 0.0, -0.05, 0.01, 1.0}
-                              : Motion {-40.868, 0.0, -14.0, 1.0, 10.0};
+    Motion motion = lab ? Motion {0.0, 0.0, -0.05, 0.01, 1.0}
+                        : Motion {-40.868, 0.0, -14.0, 1.0, 10.0};
+    if (surge >= 0.0) {
+        motion.amplitude = surge;
+    }
+    motion.axis = axis;
+    if (period > 0.0) {
+        motion.period = period;
+    }
     const int N = std::atoi(argv[3]);
     const double dtM = std::atof(argv[4]), h = std::atof(argv[5]);
     if (N < 1 || !(dtM > 0.0) || !(h > 0.0)) {
@@ -163,7 +228,13 @@ int main(int argc, char** argv)
     }
     const std::string input = std::string(directory) + "/line.txt";
     try {
-        std::ofstream(input) << withSegmentsAndStep(argv[2], N, dtM);
+        char options[160] = "";
+        if (friction) {
+            std::snprintf(options, sizeof options,
+                          "%.17g  FrictionCoefficient\n%.17g  FricDamp\n", mu,
+                          fricDamp);
+        }
+        std::ofstream(input) << withSegmentsAndStep(argv[2], N, dtM, options);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "moordynDriver: %s\n", e.what());
         return 1;
@@ -194,7 +265,14 @@ int main(int argc, char** argv)
     const double startTension
         = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     const int perPeriod = int(std::lround(motion.period / h));
-    std::complex<double> a1 = 0.0;
+    std::complex<double> a1 = 0.0, a2 = 0.0;
+    // the tension's mean and the grounded free nodes (mu=)
+    double mean = 0.0, grounded = 0.0, fastest = 0.0, sliding = 0.0;
+    double pushed = 0.0, squares = 0.0;
+    const double d = 0.0036, l = 1.2 / N, kb = 3e5, cb = 3e3;
+    const double wl = (0.0796 - 1025.0 * pi / 4.0 * d * d) * 9.81 * l;
+    const double seabed = lab ? -0.5 : -200.0;
+    MoorDynLine mooring = MoorDyn_GetLine(system, 1);
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = cpuSeconds();
     for (int k = 1; k <= 3 * perPeriod; ++k) {
@@ -219,6 +297,27 @@ int main(int argc, char** argv)
             a1 += T
                 * std::exp(std::complex<double>(
                     0.0, -2.0 * pi * k * h / motion.period));
+            a2 += T
+                * std::exp(std::complex<double>(
+                    0.0, -4.0 * pi * k * h / motion.period));
+            mean += T;
+        }
+        for (int i = 1; friction && k > 2 * perPeriod && i < N; ++i) {
+            double r[3], u[3];
+            if (MoorDyn_GetLineNodePos(mooring, i, r) != MOORDYN_SUCCESS
+                || MoorDyn_GetLineNodeVel(mooring, i, u) != MOORDYN_SUCCESS) {
+                std::fprintf(stderr, "moordynDriver: node %d: no state\n", i);
+                return 1;
+            }
+            if (r[2] < seabed) {
+                const double speed = std::hypot(u[0], u[1]);
+                const double push = ((seabed - r[2]) * kb - u[2] * cb) * d * l;
+                pushed += std::abs(push) / wl * speed * speed;
+                squares += speed * speed;
+                grounded += 1.0;
+                fastest = std::max(fastest, speed);
+                sliding += speed > vf ? 1.0 : 0.0;
+            }
         }
     }
     const double cpu = (cpuSeconds() - cpuStart) / (3.0 * motion.period);
@@ -234,5 +333,17 @@ int main(int argc, char** argv)
                 "%.4g s (CPU %.4g s) per simulated s, start tension %.9g N\n",
                 argv[1], N, dtM, h, startVelocity ? " (start velocity)" : "",
                 2.0 * std::abs(a1) / perPeriod, wall, cpu, startTension);
+    if (friction) {
+        std::printf("MoorDyn friction N = %d dtM = %g mu = %g fricDamp = %g "
+                    "%s %g m period %g s: mean %.9g N, amplitude %.9g N, "
+                    "second %.9g N; grounded nodes %.3g, fastest %.3g m/s, "
+                    "faster than %g m/s %.3g of node-steps, push %.3g w l\n",
+                    N, dtM, mu, fricDamp, axis == 1 ? "sway" : "surge",
+                    motion.amplitude, motion.period, mean / perPeriod,
+                    2.0 * std::abs(a1) / perPeriod,
+                    2.0 * std::abs(a2) / perPeriod, grounded / perPeriod,
+                    fastest, vf, grounded > 0.0 ? sliding / grounded : 0.0,
+                    squares > 0.0 ? pushed / squares : 0.0);
+    }
     return 0;
 }
