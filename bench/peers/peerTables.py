@@ -1,8 +1,11 @@
 """Reading the runs bench/peers keeps: a table of numbers (series.dat,
-motion.dat), a run's run.dat, and a column interpolated in time. For
+motion.dat), a run's run.dat (postprocessing.read_key_values), and a
+column interpolated in time. For
 bench/peers/peersReport and its light-body part (lightReport.py)."""
 
 import os
+
+from foamfmi.postprocessing import read_key_values as read_settings  # noqa: F401
 
 
 def read_table(path):
@@ -12,22 +15,6 @@ def read_table(path):
             if line.strip() and not line.startswith("#"):
                 rows.append([float(v) for v in line.split()])
     return rows
-
-
-def read_settings(path):
-    """run.dat's keys and values (numbers where they read as one)."""
-    run = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            key, value = line.split(None, 1)
-            value = value.strip()
-            try:
-                run[key] = float(value)
-            except ValueError:
-                run[key] = value
-    return run
 
 
 def interpolate(rows, column, t):

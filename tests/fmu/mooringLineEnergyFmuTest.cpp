@@ -104,24 +104,8 @@ const SurgedLine defaultLine {"default line", {}, Vector3::Zero(), 0.55, 2.0};
 //- The lab chain (tests/connectors/MooringLineReferences.hpp: 1.2 m in
 //  0.5 m of water) surging 0.112 m, lifting off the seabed and snapping
 //  taut every cycle (9.4 N against 0.56 N), 10 s
-const SurgedLine labChain {"lab chain",
-                           {{"unstretchedLength", 1.2},
-                            {"EA", 3.416e5},
-                            {"axialDamping", 2.473},
-                            {"massPerLength", 0.0796},
-                            {"diameter", 3.6e-3},
-                            {"normalDrag", 1.33},
-                            {"tangentialDrag", 0.2},
-                            {"normalAddedMass", 1.0},
-                            {"tangentialAddedMass", 0.5},
-                            {"seabedContact", 1.0},
-                            {"seabedStiffness", 3e5},
-                            {"seabedDamping", 3e3},
-                            {"B.p[1]", -1.0},
-                            {"B.p[3]", -0.5}},
-                           Vector3(0.0, 0.0, -0.05),
-                           0.112,
-                           10.0};
+const SurgedLine labChain {"lab chain", labChainParameters,
+                           Vector3(0.0, 0.0, -0.05), 0.112, 10.0};
 
 //- Sums from the FMU's outputs after every coupling step of h
 struct Cycle {

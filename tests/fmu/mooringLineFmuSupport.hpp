@@ -34,6 +34,25 @@ inline const std::map<std::string, double> chainParameters
        {"A.p[3]", -2.0},
        {"B.p[1]", 0.0}}; // the anchor at B's reference point
 
+//- The lab chain (tests/connectors/MooringLineReferences.hpp: 1.2 m in
+//  0.5 m of water, on the seabed), its anchor 1 m from A's reference
+//  point and 0.5 m below it
+inline const std::map<std::string, double> labChainParameters
+    = {{"unstretchedLength", 1.2},
+       {"EA", 3.416e5},
+       {"axialDamping", 2.473},
+       {"massPerLength", 0.0796},
+       {"diameter", 3.6e-3},
+       {"normalDrag", 1.33},
+       {"tangentialDrag", 0.2},
+       {"normalAddedMass", 1.0},
+       {"tangentialAddedMass", 0.5},
+       {"seabedContact", 1.0},
+       {"seabedStiffness", 3e5},
+       {"seabedDamping", 3e3},
+       {"B.p[1]", -1.0},
+       {"B.p[3]", -0.5}};
+
 inline connectors::MooringLineParameters lawParameters()
 {
     connectors::MooringLineParameters p = connectors::references::chain100(10);

@@ -105,25 +105,9 @@ TEST(MooringLineRestartFmu, ChainOnTheSeabedRestartsExactly)
         floater, 0.1, 20, 60);
 }
 
-//- The lab chain (tests/connectors/MooringLineReferences.hpp: 1.2 m in
-//  0.5 m of water, on the seabed) surging 0.112 m at 1 Hz from rest,
-//  lifting off and snapping taut every cycle: the steps that halve and
-//  those that iterate Newton further
-const std::map<std::string, double> labChain = {{"unstretchedLength", 1.2},
-                                                {"EA", 3.416e5},
-                                                {"axialDamping", 2.473},
-                                                {"massPerLength", 0.0796},
-                                                {"diameter", 3.6e-3},
-                                                {"normalDrag", 1.33},
-                                                {"tangentialDrag", 0.2},
-                                                {"normalAddedMass", 1.0},
-                                                {"tangentialAddedMass", 0.5},
-                                                {"seabedContact", 1.0},
-                                                {"seabedStiffness", 3e5},
-                                                {"seabedDamping", 3e3},
-                                                {"B.p[1]", -1.0},
-                                                {"B.p[3]", -0.5}};
-
+//- The lab chain's fairlead (labChainParameters) surging 0.112 m at 1 Hz
+//  from rest, lifting the chain off and snapping it taut every cycle: the
+//  steps that halve and those that iterate Newton further
 BodyKinematics labChainFairlead(double t)
 {
     constexpr double pi = 3.14159265358979323846;
@@ -145,7 +129,7 @@ TEST(MooringLineRestartFmu, SnappingLabChainRestartsExactly)
         [](const LoadedFmu& fmu, Instance& in) {
             fmi2Status s = fmu.api.EnterInitializationMode(in.c);
             if (s == fmi2OK) {
-                s = in.set(labChain);
+                s = in.set(labChainParameters);
             }
             if (s == fmi2OK) {
                 s = in.set(inputs(labChainFairlead(0.0), BodyKinematics()));
