@@ -18,7 +18,9 @@ class PostProcessingError(ValueError):
 
 def read_table(path):
     """Rows of numbers of a whitespace table, '#' lines skipped, rows of
-    another length than the first (a line cut by a stopped run) left out."""
+    another length than the first (a line cut by a stopped run) left out.
+    A last line without its newline is read (digitised curves often end
+    so); read_named_table, for the tables runs write, leaves it out."""
     rows = []
     with open(path) as f:
         for line in f:
@@ -33,15 +35,18 @@ def read_table(path):
     return rows
 
 
-def whole_rows(path):
+def whole_rows(path, cut_end=False):
     """(rows, longest row in bytes) of a table written in whole rows (a
     connector's, bodies.dat, fmuConnectorFlow's samples); PostProcessingError
     when it ends in a cut row or a row has another number of columns than
-    its last '#' header line names."""
+    its last '#' header line names. cut_end: a cut last row (one without
+    its newline, as a kill -9 inside a write leaves) is left out instead."""
     with open(path, "rb") as f:
         data = f.read()
     if data and not data.endswith(b"\n"):
-        raise PostProcessingError(f"{path}: ends in a cut row: {data[-80:]!r}")
+        if not cut_end:
+            raise PostProcessingError(f"{path}: ends in a cut row: {data[-80:]!r}")
+        data = data[:data.rfind(b"\n") + 1]
     columns, rows, longest = None, 0, 0
     for line in data.decode().splitlines():
         if line.startswith("#"):
@@ -77,12 +82,14 @@ def header_column(path, name):
 
 
 def read_named_table(path):
-    """(names, rows) of a table with a '# Time ...' header: the rows with
-    as many numbers as the header has names (a line cut by a stopped run
-    is left out)."""
+    """(names, rows) of a table with a '# Time ...' header: the whole rows
+    with as many numbers as the header has names (a line cut by a stopped
+    run, which may lack numbers or its newline, is left out)."""
     names, rows = None, []
     with open(path) as f:
         for line in f:
+            if not line.endswith("\n"):
+                break
             if line.startswith("#"):
                 if re.match(r"#\s*Time\s", line):
                     names = line[1:].split()

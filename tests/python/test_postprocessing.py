@@ -81,6 +81,12 @@ class Tables(unittest.TestCase):
 
     def test_read_table_leaves_out_a_cut_line(self):
         self.assertEqual(postprocessing.read_table(self.path), [[0.01, 0.2, 0.0], [0.02, 0.21, 1.0]])
+        # A table a run writes, cut inside its last number, keeps the row's
+        # count of numbers but not its newline: left out all the same
+        write(self.path, "# Time length tension\n0.01 0.2 0\n0.02 0.21 1.5")
+        self.assertEqual(postprocessing.read_named_table(self.path)[1], [[0.01, 0.2, 0.0]])
+        # A digitised curve that ends without a newline keeps its last row
+        self.assertEqual(postprocessing.read_table(self.path), [[0.01, 0.2, 0.0], [0.02, 0.21, 1.5]])
 
     def test_named_columns(self):
         self.assertEqual(postprocessing.header_column(self.path, "tension"), 2)
@@ -96,6 +102,8 @@ class Tables(unittest.TestCase):
         # The file of setUp ends in a cut row (no newline): refused
         with self.assertRaisesRegex(postprocessing.PostProcessingError, "ends in a cut row"):
             postprocessing.whole_rows(self.path)
+        # Or, asked to, counts the whole rows before it ("0.02 0.21 1.0\n": 14 bytes)
+        self.assertEqual(postprocessing.whole_rows(self.path, cut_end=True), (2, 14))
         # Whole rows: counted, the longest with its newline ("0.02 0.21 1.0\n": 14 bytes)
         write(self.path, "# Time length tension\n0.01 0.2 0\n0.02 0.21 1.0\n")
         self.assertEqual(postprocessing.whole_rows(self.path), (2, 14))
