@@ -182,8 +182,60 @@ Foam::functionObjects::fmuConnectorFlow::sample
         {
             flows[i] = sums[i]/max(counts[i], scalar(1));
         }
+        if (wave_)
+        {
+            addWave(points, flows);
+        }
     }
     return flows;
+}
+
+
+Foam::scalar Foam::functionObjects::fmuConnectorFlow::waveWeight
+(
+    const point& p
+) const
+{
+    // The distance inside the bounds, across gravity
+    scalar d = GREAT;
+    for (direction c = 0; c < vector::nComponents; ++c)
+    {
+        if (horizontal_[c])
+        {
+            d = min(d, min(p[c] - bounds_.min()[c], bounds_.max()[c] - p[c]));
+        }
+    }
+    if (d <= 0)
+    {
+        return 1;
+    }
+    if (d >= blendWidth_)
+    {
+        return 0;
+    }
+    return 0.5*(1 + cos(constant::mathematical::pi*d/blendWidth_));
+}
+
+
+void Foam::functionObjects::fmuConnectorFlow::addWave
+(
+    const List<pointField>& points,
+    List<vectorField>& flows
+) const
+{
+    const scalar t = time_.value();
+    forAll(points, i)
+    {
+        forAll(points[i], k)
+        {
+            const scalar w = waveWeight(points[i][k]);
+            if (w > 0)
+            {
+                flows[i][k] =
+                    w*wave_->U(points[i][k], t) + (1 - w)*flows[i][k];
+            }
+        }
+    }
 }
 
 
@@ -284,7 +336,9 @@ Foam::functionObjects::fmuConnectorFlow::fmuConnectorFlow
 :
     fvMeshFunctionObject(name, runTime, dict),
     logFiles(obr_, name),
-    fresh_(false)
+    fresh_(false),
+    blendWidth_(0),
+    horizontal_(false)
 {
     read(dict);
 }
@@ -307,6 +361,43 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
             fmuConnectorCore::restartMode::exact
         )
      == fmuConnectorCore::restartMode::fresh;
+
+    // The wave beyond the mesh (collective: every processor makes the
+    // patch's wave model), and the mesh's horizontal, solved directions
+    wave_.clear();
+    blendWidth_ = dict.getOrDefault<scalar>("blendWidth", 0);
+    if (blendWidth_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "function object " << name() << ": entry blendWidth "
+            << blendWidth_ << " is negative; expected the width (m) inside"
+            << " the mesh's bounds over which the incident wave hands over"
+            << " to the CFD's flow, 0 for none" << exit(FatalIOError);
+    }
+    if (dict.found("incidentWave"))
+    {
+        wave_.reset(new incidentWave(mesh_, dict, "incidentWave"));
+        bounds_ = mesh_.bounds();
+        const vector up(wave_->up());
+        const Vector<label> solved(mesh_.geometricD());
+        for (direction c = 0; c < vector::nComponents; ++c)
+        {
+            horizontal_[c] = solved[c] == 1 && mag(up[c]) < 0.5;
+        }
+        Info<< "Function object " << name() << ": the points of the lines"
+            << " beyond the mesh's horizontal bounds " << bounds_
+            << " take the " << wave_->describe().c_str() << ", handed over"
+            << " to the CFD's flow over " << blendWidth_ << " m inside them"
+            << endl;
+    }
+    else if (dict.found("blendWidth"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "function object " << name() << ": entry blendWidth without"
+            << " incidentWave; expected incidentWave <patch> (the patch"
+            << " whose waves the points beyond the mesh take) with it"
+            << exit(FatalIOError);
+    }
 
     if (connectors_.empty())
     {

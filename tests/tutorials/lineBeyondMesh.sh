@@ -1,0 +1,44 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# Lines longer than the CFD domain: tutorials/mooredBoxWaves with dynamic
+# lines (mooringLine.fmu) in a tank 2 m long instead of 6 m (Allrun
+# -tank-length 2), so that the anchors (x = +-1.385 m) are 0.385 m beyond
+# the tank's ends and about a third of each line's shape points lies
+# outside the mesh; fmuConnectorFlow takes the inlet's Stokes II wave there
+# (incidentWave inlet; blendWidth 0.2). Mesh factor 0.375 to 2 s (the
+# ramp's end, a write time): about 40 s of CPU time. Checks:
+#  - the solver reaches 2 s;
+#  - each line is written as VTK at every write time with the points and
+#    tensions of its output rows (checkLineOutputs.py);
+#  - every shape point beyond the tank, at every step, has the velocity of
+#    the textbook second-order Stokes wave there and then, to 1e-9 of
+#    H omega/2; at 2 s the points in the 0.2 m hand-over have the blend of
+#    the wave and OpenFOAM's own probe of U, those further inside the probe
+#    (checkIncidentWave.py, whose head gives the tolerances' reasons).
+# Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so,
+# libimplicitRigidBodySolvers.so and build/fmus/mooringLine.fmu. Exits
+# non-zero on the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+
+requireFile "$FOAM_USER_LIBBIN/libfoamFmiBridge.so" \
+    "the bridge library (build it: ./Allwmake)"
+requireFile "$FOAM_USER_LIBBIN/libimplicitRigidBodySolvers.so" \
+    "the implicit rigid-body solver library (build it: ./Allwmake)"
+requireFile "$FOAMFMI_FMU_DIR/mooringLine.fmu" \
+    "the mooringLine FMU (build it: cmake --build build)"
+
+makeWorkDir
+case=$workDir/mooredBoxWavesShortTank
+runTutorial mooredBoxWaves "$case" -mesh-factor 0.375 -end-time 2 \
+    -lines dynamic -tank-length 2 -no-plot
+checkRanToEnd "$case" 2
+grep -q '^ *incidentWave inlet;' "$case/system/lineFlow" \
+    || fail "Allrun -tank-length 2 did not set incidentWave in system/lineFlow"
+
+python3 "$(dirname "$0")/checkIncidentWave.py" "$case" line1 line2 line3 line4 \
+    --flow lineFlow --solver "$(caseSolverOf "$case")" --blend 0.2 --depth 0.5 \
+    --bounds -1 1 -0.5 0.5 > "$workDir/check.out" 2>&1 \
+    || { cat "$workDir/check.out" 1>&2; fail "the lines beyond the tank: see above"; }
+while read -r line; do pass "$line"; done < "$workDir/check.out"
+
