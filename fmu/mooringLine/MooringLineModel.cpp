@@ -50,7 +50,7 @@ public:
     void setParameters(const double* values) override
     {
         law_.build(parameters(values));
-        flag(values, flowInertia_); // 0 or 1, refused otherwise
+        flowInertia(values); // 0, 1 or 2, refused otherwise
     }
 
     //- The shape, the sections' values and the energy outputs: computed
@@ -90,17 +90,34 @@ private:
     lineOutputs(const connectors::MooringLineOutput& out,
                 const connectors::LineEnergy& energy) const;
 
-    //- The flow inputs as points from P to Q; empty when all are zero
-    std::vector<connectors::Vector3> flow(const double* values) const;
+    //- The inputs from `first` (x of the shape points, then y, then z)
+    //  as points from P to Q; empty when all are zero
+    std::vector<connectors::Vector3>
+    shapeInputs(const double* values, fmi2ValueReference first) const;
+    //- The flow inputs shape.U
+    std::vector<connectors::Vector3> flow(const double* values) const
+    {
+        return shapeInputs(values, flow_);
+    }
+    //- How the flow's acceleration is taken: 0 not, 1 the change of the
+    //  inputs shape.U, 2 the inputs shape.A
+    int flowInertia(const double* values) const;
     //- The flow's acceleration over a step from `time` with the flow
-    //  inputs `U` (FlowHistory; none with flowInertia = 0)
+    //  inputs `U` (flowInertia 1: FlowHistory; 2: the inputs shape.A; 0:
+    //  none)
     std::vector<connectors::Vector3>
     flowAcceleration(const double* values,
                      const std::vector<connectors::Vector3>& U,
                      double time) const
     {
-        return flag(values, flowInertia_) ? lastFlow_.acceleration(U, time)
-                                          : std::vector<connectors::Vector3> {};
+        switch (flowInertia(values)) {
+        case 1:
+            return lastFlow_.acceleration(U, time);
+        case 2:
+            return shapeInputs(values, flowAcceleration_);
+        default:
+            return {};
+        }
     }
 
     //- The flow inputs of the last step and its start time (at the start:
@@ -111,8 +128,9 @@ private:
     ScalarBlocks p_;
     Block currentSurface_, currentSeabed_;
     mooringLineFmu::SectionVariables sections_;
-    //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..]
-    fmi2ValueReference flow_ = 0;
+    //- First of the inputs shape.Ux[1..], shape.Uy[1..], shape.Uz[1..],
+    //  and of shape.Ax[1..], shape.Ay[1..], shape.Az[1..]
+    fmi2ValueReference flow_ = 0, flowAcceleration_ = 0;
     fmuExport::BuiltLaw<connectors::MooringLine> law_;
     std::optional<connectors::MooringLineState> state_;
     //- The law's energy account summed over the steps since the start
@@ -188,7 +206,8 @@ MooringLineModel::MooringLineModel()
         "flowInertia", Shape::scalar, "1",
         "1 (default): the flow's acceleration, the change of the inputs "
         "shape.U over the previous step, acts on the line as (1 + Ca) rho V "
-        "dU/dt, normal and tangential (Froude-Krylov and added mass); 0: not",
+        "dU/dt, normal and tangential (Froude-Krylov and added mass); 2: the "
+        "inputs shape.A are that acceleration; 0: none",
         {1.0});
     energyAccount_ = t.parameter(
         "energyAccount", Shape::scalar, "1",
@@ -197,6 +216,35 @@ MooringLineModel::MooringLineModel()
         "every step; 0: they are not, and stay 0 (a step costs about 6 % "
         "less; the motion, the loads and kineticEnergy are the same)",
         {1.0});
+    for (const char* axis : {"x", "y", "z"}) {
+        for (int i = 1; i <= shapePoints; ++i) {
+            const std::string point = std::to_string(i);
+            const Block b = t.input(
+                std::string("shape.A") + axis + "[" + point + "]",
+                Shape::scalar, "m/s2",
+                std::string("water acceleration, ") + axis
+                    + " (global frame), at point " + point + " of " + n
+                    + " of the shape outputs of the previous step, at the "
+                      "start of the step (used with flowInertia = 2)",
+                {0.0});
+            if (flowAcceleration_ == 0) {
+                flowAcceleration_ = b.first;
+            }
+        }
+    }
+}
+
+int MooringLineModel::flowInertia(const double* values) const
+{
+    const double value = scalar(values, flowInertia_);
+    if (value != 0.0 && value != 1.0 && value != 2.0) {
+        throw connectors::ParameterError(
+            connectors::Refusal::outOfRange, "flowInertia",
+            "mooringLine: parameter flowInertia = "
+                + connectors::formatValue(value)
+                + " is out of range (allowed: 0, 1 or 2)");
+    }
+    return int(value);
 }
 
 connectors::MooringLineParameters
@@ -252,14 +300,15 @@ MooringLineModel::parameters(const double* values) const
 }
 
 std::vector<connectors::Vector3>
-MooringLineModel::flow(const double* values) const
+MooringLineModel::shapeInputs(const double* values,
+                              fmi2ValueReference first) const
 {
     std::vector<connectors::Vector3> points(
         static_cast<std::size_t>(shapePoints), connectors::Vector3::Zero());
     bool any = false;
     for (int k = 0; k < shapePoints; ++k) {
         for (int axis = 0; axis < 3; ++axis) {
-            const double u = values[flow_ + axis * shapePoints + k];
+            const double u = values[first + axis * shapePoints + k];
             points[std::size_t(k)][axis] = u;
             any = any || u != 0.0;
         }

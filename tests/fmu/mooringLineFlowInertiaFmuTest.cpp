@@ -1,7 +1,8 @@
 // mooringLine.fmu in an accelerating flow: the change of the flow inputs
 // shape.Ux/Uy/Uz[k] over the previous step is the flow's acceleration the
 // law takes (flowInertia = 1, the default; none at the first step); with
-// flowInertia = 0 the run is that of the flow alone. The last step's
+// flowInertia = 0 the run is that of the flow alone; with flowInertia = 2
+// the inputs shape.Ax/Ay/Az[k] are the acceleration. The last step's
 // flow, kept in the FMU state, makes steps repeated after fmi2SetFMUstate
 // and states serialized into another instance continue bit for bit.
 #include <gtest/gtest.h>
@@ -108,6 +109,59 @@ TEST(MooringLineFlowInertiaFmu, AccelerationIsTheChangeOfTheFlowInputs)
     }
 }
 
+//- The inputs shape.Ax/Ay/Az[k] of the acceleration a at the 11 points
+std::map<std::string, double> accelerationInputs(const std::vector<Vector3>& a)
+{
+    std::map<std::string, double> m;
+    for (int k = 0; k < 11; ++k) {
+        const std::string point = "[" + std::to_string(k + 1) + "]";
+        for (int axis = 0; axis < 3; ++axis) {
+            m[std::string("shape.A") + "xyz"[axis] + point]
+                = a.empty() ? 0.0 : a[std::size_t(k)][axis];
+        }
+    }
+    return m;
+}
+
+TEST(MooringLineFlowInertiaFmu, AccelerationInputsTakeThePlaceOfTheChange)
+{
+    // flowInertia = 2 given, as shape.A, the very accelerations that
+    // flowInertia = 1 takes from the change of the flow inputs: the same
+    // run to the bit; then shape.A of another flow: another run
+    LoadedFmu fmu("mooringLine");
+    Instance change(fmu), given(fmu), other(fmu);
+    ASSERT_EQ(start(fmu, change, 1.0), fmi2OK) << change.lastMessage();
+    ASSERT_EQ(start(fmu, given, 2.0), fmi2OK) << given.lastMessage();
+    ASSERT_EQ(start(fmu, other, 2.0), fmi2OK) << other.lastMessage();
+    const double h = 0.05;
+    double largestDifference = 0.0;
+    for (int k = 0; k < 30; ++k) {
+        const double t = k * h;
+        std::vector<Vector3> a;
+        if (k > 0) {
+            // from the previous step's time as the FMU was given it
+            const double before = (k - 1) * h;
+            const std::vector<Vector3> U = flowAt(t), Ub = flowAt(before);
+            for (std::size_t i = 0; i < U.size(); ++i) {
+                a.push_back((U[i] - Ub[i]) / (t - before));
+            }
+        }
+        ASSERT_EQ(given.set(accelerationInputs(a)), fmi2OK);
+        std::vector<Vector3> twice = a;
+        for (Vector3& x : twice) {
+            x *= 2.0;
+        }
+        ASSERT_EQ(other.set(accelerationInputs(twice)), fmi2OK);
+        const std::vector<double> want = step(fmu, change, t, h);
+        EXPECT_EQ(step(fmu, given, t, h), want) << k;
+        const std::vector<double> o = step(fmu, other, t, h);
+        largestDifference = std::max(largestDifference, std::abs(o[1] - want[1]));
+    }
+    // twice the acceleration across the line: its inertia force on the
+    // fairlead's half segment alone grows by 32 N (above)
+    EXPECT_GT(largestDifference, 10.0);
+}
+
 TEST(MooringLineFlowInertiaFmu, RepeatedStepsEqualTheUninterruptedRun)
 {
     LoadedFmu fmu("mooringLine");
@@ -150,23 +204,34 @@ TEST(MooringLineFlowInertiaFmu, SwitchIsDeclaredLastAndChecked)
     const LoadedFmu fmu("mooringLine");
     const pugi::xml_node variables
         = fmu.description.child("fmiModelDescription").child("ModelVariables");
-    pugi::xml_node last, beforeLast;
+    pugi::xml_node last;
     for (pugi::xml_node v : variables.children("ScalarVariable")) {
-        beforeLast = last;
         last = v;
     }
-    // declared after every other variable but energyAccount, declared
-    // after it: theirs keep their value references
-    EXPECT_STREQ(last.attribute("name").value(), "energyAccount");
-    last = beforeLast;
-    EXPECT_STREQ(last.attribute("name").value(), "flowInertia");
+    // declared after every other variable but energyAccount and the
+    // acceleration inputs shape.A, declared after it in that order:
+    // theirs keep their value references
+    EXPECT_STREQ(last.attribute("name").value(), "shape.Az[11]");
+    pugi::xml_node v = variables.first_child();
+    while (v && std::string(v.attribute("name").value()) != "flowInertia") {
+        v = v.next_sibling("ScalarVariable");
+    }
+    ASSERT_TRUE(v);
+    EXPECT_STREQ(v.next_sibling("ScalarVariable").attribute("name").value(),
+                 "energyAccount");
+    EXPECT_STREQ(v.next_sibling("ScalarVariable")
+                     .next_sibling("ScalarVariable")
+                     .attribute("name")
+                     .value(),
+                 "shape.Ax[1]");
+    last = v;
     EXPECT_STREQ(last.attribute("causality").value(), "parameter");
     EXPECT_STREQ(last.child("Real").attribute("start").value(), "1");
     LoadedFmu loaded("mooringLine");
     expectInitializationRefused(
         loaded, changed(chainParameters, {{"flowInertia", 0.5}}),
         "fmi2ExitInitializationMode: mooringLine: parameter flowInertia = 0.5 "
-        "is out of range (allowed: 0 or 1)");
+        "is out of range (allowed: 0, 1 or 2)");
 }
 
 } // namespace
