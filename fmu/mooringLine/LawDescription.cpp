@@ -22,7 +22,10 @@ water velocity at the points of the shape outputs of the previous step,
 held over the step and interpolated along the line. Their change over the
 previous step is the flow's acceleration a, held over the step: with
 <code>flowInertia</code> = 1 (default) it acts on the line as
-(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass).
+(1 + Ca) rho V a, normal and tangential (Froude-Krylov and added mass);
+with <code>flowInertia</code> = 2 a is the inputs
+<code>shape.Ax/Ay/Az[k]</code> instead, the water's acceleration at the
+same points at the start of the step.
 <code>freeSurface</code> = 1 removes buoyancy, drag and added mass above
 <code>waterLevel</code>. <code>seabedFriction</code> adds Coulomb friction
 on the seabed, regularised below <code>frictionVelocity</code>,

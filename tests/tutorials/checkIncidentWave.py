@@ -31,6 +31,26 @@ that patch in incidentWave and B (m) in blendWidth. For each LINE:
     d/B))/2;
   - over all the lines, at least one point beyond the bounds moves with
     the wave (speed above H omega/20) and one point lies in the hand-over.
+
+With --acceleration (the function object's `acceleration true;`, the
+rows holding Ax/Ay/Az[k] after the velocities):
+  - beyond the bounds, at every step, the wave's acceleration: the time
+    derivative of the same ramped wave, differentiated here analytically
+    (the bridge takes a central difference over 1e-4 T: within 1e-7 of
+    it); tolerance 1e-6 of H omega^2/2; rows within 1e-3 s of the ramp's
+    end, where the ramped wave has no derivative, left out;
+  - inside, at the points in mid-water (0.25 < z < 0.4 m: above the two
+    coarse bed cells, whose interpolation to the no-slip bed damps the
+    sampled velocity but not the pressure, below the box's bottom at
+    0.417 m), every step after 0.5 s: the acceleration the pressure and
+    gravity give (the bridge's) against the centred difference of the
+    sampled velocities of the steps before and after, (U(t+) - U(t-))/
+    (t+ - t-): within 2.5 % of the largest acceleration there (measured
+    1.1-1.7 %: the difference's O(h^2) error, the convective term, about
+    k a U / a = 2 %, and the points' motion), and within half of what the
+    acceleration of the step before would give (measured 0.30-0.35 of it):
+    an acceleration a step late, as the change of the sampled velocities
+    over the previous step is, fails.
 Prints what it found; exits non-zero at the first failure.
 """
 import math
@@ -61,6 +81,65 @@ def stokes2(wave, point, t):
     return (c * u, 0.0, c * w)
 
 
+def stokes2_acceleration(wave, point, t):
+    """Time derivative of stokes2 at point, time t (not at t = rampTime)."""
+    H, T, ramp, depth, phase = wave
+    omega = 2 * math.pi / T
+    k = waves.wave_number(omega, depth)
+    theta = k * point[0] - omega * t + phase
+    z = min(max(point[2], 0.0), depth)
+    s = math.sinh(k * depth)
+    second = 0.75 * H * H / 4 * omega * k / s ** 4
+    dudt = (H / 2 * omega ** 2 * math.sin(theta) * math.cosh(k * z) / s
+            + 2 * omega * second * math.cosh(2 * k * z) * math.sin(2 * theta))
+    dwdt = (-H / 2 * omega ** 2 * math.cos(theta) * math.sinh(k * z) / s
+            - 2 * omega * second * math.sinh(2 * k * z) * math.cos(2 * theta))
+    u, _, w = stokes2(wave, point, t)
+    c = min(max(t / ramp, 0.0), 1.0)
+    dc = 1.0 / ramp if t < ramp else 0.0
+    return (c * dudt + (dc * u / c if c > 0 else 0.0), 0.0, c * dwdt + (dc * w / c if c > 0 else 0.0))
+
+
+def check_acceleration(wave, line, rows_c, col, rows_f, n, low, high):
+    """The acceleration columns of a line's flow rows (see the head);
+    (point-steps beyond, worst error there, mid-water error / largest,
+    the same with the step before's acceleration / largest)."""
+    H, T, ramp = wave[0], wave[1], wave[2]
+    scale = H / 2 * (2 * math.pi / T) ** 2
+    beyond, worst = 0, 0.0
+    mid, lagged, largest = 0.0, 0.0, 0.0
+    for j, (rc, rf) in enumerate(zip(rows_c, rows_f)):
+        t = rc[0]
+        for k in range(n):
+            p = [rc[col[f"shape.{a}[{k + 1}]"]] for a in "xyz"]
+            a = rf[1 + 3 * n + 3 * k:4 + 3 * n + 3 * k]
+            if inside_distance(p, low, high) <= 0:
+                if abs(t - ramp) < 1e-3:
+                    continue
+                expected = stokes2_acceleration(wave, p, t)
+                e = max(abs(x - y) for x, y in zip(a, expected))
+                worst = max(worst, e)
+                beyond += 1
+                if e > 1e-6 * scale:
+                    fail(f"{line} at t = {t}, point {k + 1} at {p}: acceleration {a}, "
+                         f"the wave's {expected}")
+            elif 0.25 < p[2] < 0.4 and t > 0.5 and 0 < j < len(rows_f) - 1:
+                before, after = rows_f[j - 1], rows_f[j + 1]
+                du = [(after[1 + 3 * k + i] - before[1 + 3 * k + i]) / (after[0] - before[0])
+                      for i in range(3)]
+                a_before = before[1 + 3 * n + 3 * k:4 + 3 * n + 3 * k]
+                mid = max(mid, max(abs(x - y) for x, y in zip(a, du)))
+                lagged = max(lagged, max(abs(x - y) for x, y in zip(a_before, du)))
+                largest = max(largest, max(map(abs, a)))
+    if largest == 0:
+        fail(f"{line}: no point in mid-water (0.25 < z < 0.4 m) after 0.5 s")
+    if mid > 0.025 * largest or mid > 0.5 * lagged:
+        fail(f"{line}: in mid-water the acceleration is {mid:.3g} m/s2 from the centred "
+             f"difference of the velocities (largest acceleration {largest:.3g} m/s2; "
+             f"the step before's is {lagged:.3g} from it)")
+    return beyond, worst, mid / largest, lagged / largest
+
+
 def inside_distance(point, low, high):
     """Distance inside the bounds across x and y (negative beyond them)."""
     return min(min(point[i] - low[i], high[i] - point[i]) for i in (0, 1))
@@ -75,6 +154,7 @@ def main(argv):
     p.add_argument("--blend", required=True, type=float, metavar="B")
     p.add_argument("--depth", required=True, type=float, metavar="D")
     p.add_argument("--bounds", required=True, type=float, nargs=4, metavar=("X0", "X1", "Y0", "Y1"))
+    p.add_argument("--acceleration", action="store_true", help="the rows hold accelerations too")
     args = p.parse_args(argv)
     case, flow, solver, blend, names = args.case, args.flow, args.solver, args.blend, args.lines
     inlet = foamdict.parse(os.path.join(case, "constant", "waveProperties"), case)["inlet"]
@@ -112,6 +192,14 @@ def main(argv):
                     fail(f"{line} at t = {rc[0]}, point {k} at {p}: U {got}, the wave's {expected}")
                 if math.sqrt(sum(c * c for c in expected)) > scale / 10:
                     moving += 1
+        if args.acceleration:
+            if len(rows_f[0]) != 1 + 6 * n:
+                fail(f"{line}: flow rows of {len(rows_f[0])} values, expected the time, then "
+                     f"the velocity and the acceleration at {n} points")
+            b, w, m, lag = check_acceleration(wave, line, rows_c, col, rows_f, n, low, high)
+            print(f"{line}: acceleration at {b} point-steps beyond the tank = the wave's within "
+                  f"{w:.2g} m/s2; in mid-water within {100 * m:.2g} % of the largest from the "
+                  f"centred difference of the velocities (the step before's: {100 * lag:.2g} %)")
         rows, points = lines.check_vtk(case, line, times)
         t_name = times[-1][1]
         row = min(rows_f, key=lambda r: abs(r[0] - float(t_name)))

@@ -261,6 +261,12 @@ void Foam::fmuConnectorCore::setFlow(const vectorField& U)
 }
 
 
+void Foam::fmuConnectorCore::setAcceleration(const vectorField& a)
+{
+    line_.setAcceleration(a, where());
+}
+
+
 void Foam::fmuConnectorCore::setStartKinematics
 (
     const std::function<std::pair<kinematics, kinematics>()>& start

@@ -91,13 +91,40 @@ void Foam::fmuConnectorLine::lookup
         sectionRefs_.push_back(fmu.variable(name).valueReference);
     }
 
-    // The water velocity inputs: all of them at every shape point, or none
+    // The water's velocity and acceleration inputs: each all of them at
+    // every shape point, or none
+    lookupInputs(fmu, n, "shape.U", "water velocity", where, flowRefs_);
+    flowValues_.assign(flowRefs_.size(), 0);
+    lookupInputs
+    (
+        fmu, n, "shape.A", "water acceleration", where, accelerationRefs_
+    );
+    accelerationValues_.assign(accelerationRefs_.size(), 0);
+}
+
+
+void Foam::fmuConnectorLine::lookupInputs
+(
+    const fmuImport::Fmu& fmu,
+    const label n,
+    const std::string& base,
+    const char* what,
+    const std::string& where,
+    std::vector<unsigned int>& refs
+)
+{
+    auto indexed = [&base](const char axis, const label k)
+    {
+        return word(base + axis + '[' + std::to_string(k) + ']', false);
+    };
+
     wordList missing;
+    refs.clear();
     for (label k = 1; k <= max(n, label(1)); ++k)
     {
-        for (const char* base : {"shape.Ux", "shape.Uy", "shape.Uz"})
+        for (const char axis : {'x', 'y', 'z'})
         {
-            const word name(indexed(base, k));
+            const word name(indexed(axis, k));
             if
             (
                 fmu.hasVariable(name)
@@ -105,7 +132,7 @@ void Foam::fmuConnectorLine::lookup
              && fmu.variable(name).type == fmuImport::Type::Real
             )
             {
-                flowRefs_.push_back(fmu.variable(name).valueReference);
+                refs.push_back(fmu.variable(name).valueReference);
             }
             else
             {
@@ -113,21 +140,20 @@ void Foam::fmuConnectorLine::lookup
             }
         }
     }
-    if (flowRefs_.empty())
+    if (refs.empty())
     {
         return;
     }
-    if (missing.size() || fmu.hasVariable(indexed("shape.Ux", n + 1)))
+    if (missing.size() || fmu.hasVariable(indexed('x', n + 1)))
     {
         FatalErrorInFunction
-            << where.c_str() << "the FMU declares water velocity inputs"
-            << " shape.Ux/Uy/Uz but not as Real inputs at each of its " << n
-            << " shape points (outputs shape.x/y/z[1.." << n << "])"
+            << where.c_str() << "the FMU declares " << what << " inputs "
+            << base.c_str() << "x/y/z but not as Real inputs at each of its "
+            << n << " shape points (outputs shape.x/y/z[1.." << n << "])"
             << (missing.size() ? "; missing: " : "")
             << fmuConnectorSettings::listed(missing).c_str()
             << exit(FatalError);
     }
-    flowValues_.assign(flowRefs_.size(), 0);
 }
 
 
@@ -184,11 +210,34 @@ void Foam::fmuConnectorLine::setFlow
 }
 
 
+void Foam::fmuConnectorLine::setAcceleration
+(
+    const vectorField& a,
+    const std::string& where
+)
+{
+    if (3*a.size() != label(accelerationRefs_.size()))
+    {
+        FatalErrorInFunction
+            << where.c_str() << a.size() << " water accelerations given for "
+            << accelerationRefs_.size()/3 << " inputs" << abort(FatalError);
+    }
+    forAll(a, k)
+    {
+        std::copy(a[k].cdata(), a[k].cdata() + 3, &accelerationValues_[3*k]);
+    }
+}
+
+
 void Foam::fmuConnectorLine::setInputs(fmuImport::Instance& instance) const
 {
     if (!flowRefs_.empty())
     {
         instance.setReal(flowRefs_, flowValues_);
+    }
+    if (!accelerationRefs_.empty())
+    {
+        instance.setReal(accelerationRefs_, accelerationValues_);
     }
 }
 

@@ -53,12 +53,17 @@ bool Foam::functionObjects::fmuConnectorFlow::restoreFlow()
     // velocities written with it, complete
     if (!fresh_)
     {
+        wordList entries(connectors_);
+        if (acceleration_)
+        {
+            entries.append("acceleration");
+        }
         restartFiles::require
         (
             time_,
             time_.timeName(),
             fileName("uniform")/"fmuConnectorFlow"/name(),
-            connectors_,
+            entries,
             "function object " + name() + ": the water velocity at the"
             " lines",
             " (or, when the function object or one of its connectors is new"
@@ -73,12 +78,21 @@ bool Foam::functionObjects::fmuConnectorFlow::restoreFlow()
 
     IFstream is(path);
     const dictionary flows(is);
+    const dictionary* accelerations = flows.findDict("acceleration");
     for (const word& connector : connectors_)
     {
         vectorField flow;
         if (flows.readIfPresent(connector, flow))
         {
             fmuConnectorCore::find(time_, connector)->setFlow(flow);
+        }
+        if (acceleration_ && accelerations)
+        {
+            vectorField a;
+            if (accelerations->readIfPresent(connector, a))
+            {
+                fmuConnectorCore::find(time_, connector)->setAcceleration(a);
+            }
         }
     }
     Info<< "Function object " << name() << ": water velocity at the lines"
@@ -124,16 +138,16 @@ void Foam::functionObjects::fmuConnectorFlow::startFlow(const bool restored)
         return;
     }
 
-    const List<vectorField> flows(sample(points));
+    const FixedList<List<vectorField>, 2> flows(sampleFlow(points));
     if (Pstream::master())
     {
         forAll(connectors_, i)
         {
             if (points[i].size())
             {
-                fmuConnectorCore::find(time_, connectors_[i])
-                    ->setFlow(flows[i]);
-                Info<< "Function object " << name() << ": water velocity at"
+                setFlow(i, flows);
+                Info<< "Function object " << name() << ": water velocity"
+                    << (acceleration_ ? " and acceleration" : "") << " at"
                     << " the start shape of " << connectors_[i]
                     << " set for the first time step" << endl;
             }
@@ -142,106 +156,9 @@ void Foam::functionObjects::fmuConnectorFlow::startFlow(const bool restored)
 }
 
 
-Foam::List<Foam::vectorField>
-Foam::functionObjects::fmuConnectorFlow::sample
-(
-    const List<pointField>& points
-) const
-{
-    const volVectorField& U = lookupObject<volVectorField>(UName_);
-
-    // Each processor samples the points in its cells; a point on a
-    // processor boundary may be found by two, whose values are averaged
-    autoPtr<interpolation<vector>> interp
-    (
-        interpolation<vector>::New(scheme_, U)
-    );
-    List<vectorField> sums(points.size());
-    List<scalarField> counts(points.size());
-    forAll(points, i)
-    {
-        sums[i].setSize(points[i].size(), Zero);
-        counts[i].setSize(points[i].size(), Zero);
-        forAll(points[i], k)
-        {
-            const label celli = mesh_.findCell(points[i][k]);
-            if (celli >= 0)
-            {
-                sums[i][k] = interp->interpolate(points[i][k], celli);
-                counts[i][k] = 1;
-            }
-        }
-    }
-    Pstream::listCombineGather(sums, plusEqOp<vectorField>());
-    Pstream::listCombineGather(counts, plusEqOp<scalarField>());
-
-    List<vectorField> flows(points.size());
-    if (Pstream::master())
-    {
-        forAll(points, i)
-        {
-            flows[i] = sums[i]/max(counts[i], scalar(1));
-        }
-        if (wave_)
-        {
-            addWave(points, flows);
-        }
-    }
-    return flows;
-}
-
-
-Foam::scalar Foam::functionObjects::fmuConnectorFlow::waveWeight
-(
-    const point& p
-) const
-{
-    // The distance inside the bounds, across gravity
-    scalar d = GREAT;
-    for (direction c = 0; c < vector::nComponents; ++c)
-    {
-        if (horizontal_[c])
-        {
-            d = min(d, min(p[c] - bounds_.min()[c], bounds_.max()[c] - p[c]));
-        }
-    }
-    if (d <= 0)
-    {
-        return 1;
-    }
-    if (d >= blendWidth_)
-    {
-        return 0;
-    }
-    return 0.5*(1 + cos(constant::mathematical::pi*d/blendWidth_));
-}
-
-
-void Foam::functionObjects::fmuConnectorFlow::addWave
-(
-    const List<pointField>& points,
-    List<vectorField>& flows
-) const
-{
-    const scalar t = time_.value();
-    forAll(points, i)
-    {
-        forAll(points[i], k)
-        {
-            const scalar w = waveWeight(points[i][k]);
-            if (w > 0)
-            {
-                flows[i][k] =
-                    w*wave_->U(points[i][k], t) + (1 - w)*flows[i][k];
-            }
-        }
-    }
-}
-
-
 void Foam::functionObjects::fmuConnectorFlow::writeFlow
 (
-    const List<vectorField>& flows
+    const FixedList<List<vectorField>, 2>& flows
 ) const
 {
     const fileName path(statePath(time_.timeName()));
@@ -250,7 +167,16 @@ void Foam::functionObjects::fmuConnectorFlow::writeFlow
     os.precision(17);
     forAll(connectors_, i)
     {
-        os.writeEntry(connectors_[i], flows[i]);
+        os.writeEntry(connectors_[i], flows[0][i]);
+    }
+    if (acceleration_)
+    {
+        os.beginBlock("acceleration");
+        forAll(connectors_, i)
+        {
+            os.writeEntry(connectors_[i], flows[1][i]);
+        }
+        os.endBlock();
     }
     // To a temporary name, renamed: a kill never leaves half of it
     restartFiles::writeText
@@ -306,13 +232,25 @@ void Foam::functionObjects::fmuConnectorFlow::writeFileHeader
         *fmuConnectorCore::find(time_, connectors_[i]);
 
     OStringStream os;
-    writeHeader(os, "Water velocity at the shape points of " + connectors_[i]);
+    writeHeader
+    (
+        os,
+        word(acceleration_ ? "Water velocity and acceleration" : "Water velocity")
+      + " at the shape points of " + connectors_[i]
+    );
     writeCommented(os, "Time");
-    for (label k = 1; k <= core.line().nPoints(); ++k)
+    for (const char* c : {"U", "A"})
     {
-        for (const char* c : {"Ux", "Uy", "Uz"})
+        if (*c == 'A' && !acceleration_)
         {
-            writeTabbed(os, word(c) + '[' + Foam::name(k) + ']');
+            break;
+        }
+        for (label k = 1; k <= core.line().nPoints(); ++k)
+        {
+            for (const char axis : {'x', 'y', 'z'})
+            {
+                writeTabbed(os, word(c) + axis + '[' + Foam::name(k) + ']');
+            }
         }
     }
     os  << nl;
@@ -337,6 +275,7 @@ Foam::functionObjects::fmuConnectorFlow::fmuConnectorFlow
     fvMeshFunctionObject(name, runTime, dict),
     logFiles(obr_, name),
     fresh_(false),
+    acceleration_(false),
     blendWidth_(0),
     horizontal_(false)
 {
@@ -361,6 +300,8 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
             fmuConnectorCore::restartMode::exact
         )
      == fmuConnectorCore::restartMode::fresh;
+
+    acceleration_ = dict.getOrDefault<bool>("acceleration", false);
 
     // The wave beyond the mesh (collective: every processor makes the
     // patch's wave model), and the mesh's horizontal, solved directions
@@ -433,6 +374,15 @@ bool Foam::functionObjects::fmuConnectorFlow::read(const dictionary& dict)
                     << " declares no water velocity inputs (shape.Ux/Uy/Uz[k]"
                     << " at its shape points)" << exit(FatalIOError);
             }
+            if (acceleration_ && !core->line().takesAcceleration())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "function object " << name() << ": entry acceleration"
+                    << " is on, but connector " << connector << "'s FMU "
+                    << core->file() << " declares no water acceleration"
+                    << " inputs (shape.Ax/Ay/Az[k] at its shape points)"
+                    << exit(FatalIOError);
+            }
         }
     }
 
@@ -469,22 +419,27 @@ bool Foam::functionObjects::fmuConnectorFlow::execute()
     Pstream::scatter(points);
     #endif
 
-    const List<vectorField> flows(sample(points));
+    const FixedList<List<vectorField>, 2> flows(sampleFlow(points));
     if (Pstream::master())
     {
         forAll(connectors_, i)
         {
-            const vectorField& flow = flows[i];
-            fmuConnectorCore::find(time_, connectors_[i])->setFlow(flow);
+            setFlow(i, flows);
 
             // Formatted as the file's stream formats (initStream), the time
             // to the file's precision, not the time name's
             OStringStream os;
             initStream(os);
             os  << setw(charWidth()) << time_.value();
-            for (const vector& u : flow)
+            for (const List<vectorField>& values : flows)
             {
-                os  << tab << u.x() << tab << u.y() << tab << u.z();
+                if (values.size())
+                {
+                    for (const vector& u : values[i])
+                    {
+                        os  << tab << u.x() << tab << u.y() << tab << u.z();
+                    }
+                }
             }
             os  << nl;
             appendRows

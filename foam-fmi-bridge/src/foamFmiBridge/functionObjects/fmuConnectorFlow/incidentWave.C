@@ -135,6 +135,17 @@ Foam::vector Foam::incidentWave::U(const point& p, const scalar t) const
 }
 
 
+Foam::vector Foam::incidentWave::acceleration
+(
+    const point& p,
+    const scalar t
+) const
+{
+    const scalar dt = 1e-4*(model_.*(&stokesMembers::wavePeriod_));
+    return (U(p, t + dt) - U(p, t - dt))/(2*dt);
+}
+
+
 Foam::vector Foam::incidentWave::up() const
 {
     using m = stokesMembers;
