@@ -19,7 +19,10 @@
 #    (checkIncidentWave.py, whose head gives the tolerances' reasons);
 #  - the acceleration beyond the tank is the wave's time derivative, and
 #    in mid-water it agrees with the centred difference of the sampled
-#    velocities, better than the step before's would (not a step late).
+#    velocities, better than the step before's would (not a step late);
+#  - the velocities and accelerations written at 2 s restore a run
+#    restarted from there (three steps), and a state file whose
+#    accelerations were lost stops the restart with an error naming them.
 # Needs platforms/<WM_OPTIONS>/lib/libfoamFmiBridge.so,
 # libimplicitRigidBodySolvers.so and build/fmus/mooringLine.fmu. Exits
 # non-zero on the first failure.
@@ -56,3 +59,30 @@ python3 "$(dirname "$0")/checkIncidentWave.py" "$case" line1 line2 line3 line4 \
     || { cat "$workDir/check.out" 1>&2; fail "the lines beyond the tank: see above"; }
 while read -r line; do pass "$line"; done < "$workDir/check.out"
 
+
+# --- A restart from 2 s ------------------------------------------------------
+state=$case/2/uniform/fmuConnectorFlow/lineFlow
+requireFile "$state" "the water's velocity and acceleration written at 2 s"
+grep -q '^acceleration' "$state" || fail "$state: no acceleration dictionary"
+solver=$(caseSolverOf "$case")
+sed -i 's/^endTime .*;/endTime         2.05;/; s/^startFrom .*;/startFrom       latestTime;/' \
+    "$case/system/controlDict" "$case/system/runSettings"
+cp "$state" "$workDir/lineFlow.written"
+# without the accelerations: refused, naming them
+sed -i '/^acceleration/,$d' "$state"
+(cd "$case" && "$solver" > log.restartLost 2>&1) \
+    && fail "a restart whose state file lost the accelerations ran (see $case/log.restartLost)"
+grep -q 'acceleration' "$case/log.restartLost" \
+    && grep -q 'FOAM FATAL IO ERROR' "$case/log.restartLost" \
+    || fail "a restart without the accelerations failed without naming them: $(tail -n 5 "$case/log.restartLost")"
+pass "a state file without the accelerations stops the restart with an error naming them"
+cp "$workDir/lineFlow.written" "$state"
+# (the refused run began the files of 2 s; OpenFOAM would number the next)
+rm -rf "$case"/postProcessing/*/2
+(cd "$case" && "$solver" > log.restart 2>&1) \
+    || { tail -n 20 "$case/log.restart" 1>&2; fail "the restart from 2 s failed"; }
+grep -q 'water velocity at the lines restored from' "$case/log.restart" \
+    || fail "the restart did not restore the lines' water velocity and acceleration"
+rows=$(grep -vc '^#' "$case/postProcessing/lineFlow/2/line1.dat")
+[ "$rows" -ge 2 ] || fail "the restart wrote $rows rows of line1's flow"
+pass "restarted from 2 s with the velocities and accelerations written then: $rows steps to 2.05 s"
