@@ -155,7 +155,8 @@ TEST(MooringLineFlowInertiaFmu, AccelerationInputsTakeThePlaceOfTheChange)
         const std::vector<double> want = step(fmu, change, t, h);
         EXPECT_EQ(step(fmu, given, t, h), want) << k;
         const std::vector<double> o = step(fmu, other, t, h);
-        largestDifference = std::max(largestDifference, std::abs(o[1] - want[1]));
+        largestDifference
+            = std::max(largestDifference, std::abs(o[1] - want[1]));
     }
     // twice the acceleration across the line: its inertia force on the
     // fairlead's half segment alone grows by 32 N (above)
