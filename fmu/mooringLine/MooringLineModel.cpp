@@ -84,6 +84,12 @@ private:
     static constexpr std::size_t leadingLineOutputs = 5;
 
     connectors::MooringLineParameters parameters(const double* values) const;
+    //- Declare the inputs <base>x/y/z[k] at the shape points, x of every
+    //  point first; their blocks
+    std::vector<fmuExport::Block> declareShapeInputs(const std::string& base,
+                                                     const std::string& unit,
+                                                     const std::string& what,
+                                                     const std::string& note);
     //- The outputs of the law's output `out` and the energy account
     //  summed since the start `energy`
     fmuExport::ConnectorOutputs
@@ -160,25 +166,9 @@ MooringLineModel::MooringLineModel()
                       {0.0, 0.0, 0.0});
     sections_.declareParameters(t);
     declareBodies({1, 0, 0});
-    std::vector<Block> flowInputs;
-    const std::string n = std::to_string(shapePoints);
-    for (const char* axis : {"x", "y", "z"}) {
-        for (int i = 1; i <= shapePoints; ++i) {
-            const std::string point = std::to_string(i);
-            const Block b = t.input(
-                std::string("shape.U") + axis + "[" + point + "]",
-                Shape::scalar, "m/s",
-                std::string("water velocity, ") + axis
-                    + " (global frame), at point " + point + " of " + n
-                    + " of the shape outputs of the previous step, added to "
-                      "the current",
-                {0.0});
-            if (flowInputs.empty()) {
-                flow_ = b.first;
-            }
-            flowInputs.push_back(b);
-        }
-    }
+    const std::vector<Block> flowInputs = declareShapeInputs(
+        "shape.U", "m/s", "water velocity", "added to the current");
+    flow_ = flowInputs.front().first;
     const std::vector<Block> positions = positionBlocks();
     const std::vector<Block> motion = join(positions, velocityBlocks());
     const Block all {(p_.*scalars[0].block).first, scalarCount};
@@ -216,22 +206,33 @@ MooringLineModel::MooringLineModel()
         "every step; 0: they are not, and stay 0 (a step costs about 6 % "
         "less; the motion, the loads and kineticEnergy are the same)",
         {1.0});
+    flowAcceleration_
+        = declareShapeInputs("shape.A", "m/s2", "water acceleration",
+                             "at the start of the step (used with "
+                             "flowInertia = 2)")
+              .front()
+              .first;
+}
+
+std::vector<Block> MooringLineModel::declareShapeInputs(const std::string& base,
+                                                        const std::string& unit,
+                                                        const std::string& what,
+                                                        const std::string& note)
+{
+    std::vector<Block> blocks;
+    const std::string n = std::to_string(shapePoints);
     for (const char* axis : {"x", "y", "z"}) {
         for (int i = 1; i <= shapePoints; ++i) {
             const std::string point = std::to_string(i);
-            const Block b = t.input(
-                std::string("shape.A") + axis + "[" + point + "]",
-                Shape::scalar, "m/s2",
-                std::string("water acceleration, ") + axis
-                    + " (global frame), at point " + point + " of " + n
-                    + " of the shape outputs of the previous step, at the "
-                      "start of the step (used with flowInertia = 2)",
-                {0.0});
-            if (flowAcceleration_ == 0) {
-                flowAcceleration_ = b.first;
-            }
+            blocks.push_back(table().input(
+                base + axis + "[" + point + "]", Shape::scalar, unit,
+                what + ", " + axis + " (global frame), at point " + point
+                    + " of " + n + " of the shape outputs of the previous "
+                    + "step, " + note,
+                {0.0}));
         }
     }
+    return blocks;
 }
 
 int MooringLineModel::flowInertia(const double* values) const

@@ -66,38 +66,40 @@ def fail(msg):
     sys.exit(f"checkIncidentWave: {msg}")
 
 
-def stokes2(wave, point, t):
-    """Velocity (u, v, w) of the second-order Stokes wave at point, time t."""
+def stokes2_terms(wave, point, t):
+    """The unramped second-order Stokes wave's velocity (u, w) and its
+    time derivative (du/dt, dw/dt) at point, time t; the ramp c(t) and
+    its slope."""
     H, T, ramp, depth, phase = wave
     omega = 2 * math.pi / T
     k = waves.wave_number(omega, depth)
     theta = k * point[0] - omega * t + phase
     z = min(max(point[2], 0.0), depth)
     s = math.sinh(k * depth)
+    first = H / 2 * omega / s
     second = 0.75 * H * H / 4 * omega * k / s ** 4
-    u = H / 2 * omega * math.cos(theta) * math.cosh(k * z) / s + second * math.cosh(2 * k * z) * math.cos(2 * theta)
-    w = H / 2 * omega * math.sin(theta) * math.sinh(k * z) / s + second * math.sinh(2 * k * z) * math.sin(2 * theta)
+    ch, sh = math.cosh(k * z), math.sinh(k * z)
+    ch2, sh2 = math.cosh(2 * k * z), math.sinh(2 * k * z)
+    u = first * math.cos(theta) * ch + second * ch2 * math.cos(2 * theta)
+    w = first * math.sin(theta) * sh + second * sh2 * math.sin(2 * theta)
+    dudt = omega * (first * math.sin(theta) * ch + 2 * second * ch2 * math.sin(2 * theta))
+    dwdt = -omega * (first * math.cos(theta) * sh + 2 * second * sh2 * math.cos(2 * theta))
     c = min(max(t / ramp, 0.0), 1.0)
+    dc = 1.0 / ramp if t < ramp else 0.0
+    return (u, w), (dudt, dwdt), c, dc
+
+
+def stokes2(wave, point, t):
+    """Velocity (u, v, w) of the ramped second-order Stokes wave at point,
+    time t."""
+    (u, w), _, c, _ = stokes2_terms(wave, point, t)
     return (c * u, 0.0, c * w)
 
 
 def stokes2_acceleration(wave, point, t):
     """Time derivative of stokes2 at point, time t (not at t = rampTime)."""
-    H, T, ramp, depth, phase = wave
-    omega = 2 * math.pi / T
-    k = waves.wave_number(omega, depth)
-    theta = k * point[0] - omega * t + phase
-    z = min(max(point[2], 0.0), depth)
-    s = math.sinh(k * depth)
-    second = 0.75 * H * H / 4 * omega * k / s ** 4
-    dudt = (H / 2 * omega ** 2 * math.sin(theta) * math.cosh(k * z) / s
-            + 2 * omega * second * math.cosh(2 * k * z) * math.sin(2 * theta))
-    dwdt = (-H / 2 * omega ** 2 * math.cos(theta) * math.sinh(k * z) / s
-            - 2 * omega * second * math.sinh(2 * k * z) * math.cos(2 * theta))
-    u, _, w = stokes2(wave, point, t)
-    c = min(max(t / ramp, 0.0), 1.0)
-    dc = 1.0 / ramp if t < ramp else 0.0
-    return (c * dudt + (dc * u / c if c > 0 else 0.0), 0.0, c * dwdt + (dc * w / c if c > 0 else 0.0))
+    (u, w), (dudt, dwdt), c, dc = stokes2_terms(wave, point, t)
+    return (c * dudt + dc * u, 0.0, c * dwdt + dc * w)
 
 
 def check_acceleration(wave, line, rows_c, col, rows_f, n, low, high):

@@ -191,22 +191,34 @@ Foam::labelList Foam::fmuConnectorLine::sections() const
 }
 
 
+void Foam::fmuConnectorLine::setPoints
+(
+    const vectorField& v,
+    std::vector<double>& values,
+    const char* what,
+    const std::string& where
+)
+{
+    if (3*v.size() != label(values.size()))
+    {
+        FatalErrorInFunction
+            << where.c_str() << v.size() << ' ' << what << " given for "
+            << values.size()/3 << " inputs" << abort(FatalError);
+    }
+    forAll(v, k)
+    {
+        std::copy(v[k].cdata(), v[k].cdata() + 3, &values[3*k]);
+    }
+}
+
+
 void Foam::fmuConnectorLine::setFlow
 (
     const vectorField& U,
     const std::string& where
 )
 {
-    if (3*U.size() != label(flowRefs_.size()))
-    {
-        FatalErrorInFunction
-            << where.c_str() << U.size() << " water velocities given for "
-            << flowRefs_.size()/3 << " inputs" << abort(FatalError);
-    }
-    forAll(U, k)
-    {
-        std::copy(U[k].cdata(), U[k].cdata() + 3, &flowValues_[3*k]);
-    }
+    setPoints(U, flowValues_, "water velocities", where);
 }
 
 
@@ -216,16 +228,7 @@ void Foam::fmuConnectorLine::setAcceleration
     const std::string& where
 )
 {
-    if (3*a.size() != label(accelerationRefs_.size()))
-    {
-        FatalErrorInFunction
-            << where.c_str() << a.size() << " water accelerations given for "
-            << accelerationRefs_.size()/3 << " inputs" << abort(FatalError);
-    }
-    forAll(a, k)
-    {
-        std::copy(a[k].cdata(), a[k].cdata() + 3, &accelerationValues_[3*k]);
-    }
+    setPoints(a, accelerationValues_, "water accelerations", where);
 }
 
 
