@@ -45,12 +45,13 @@ rows holding Ax/Ay/Az[k] after the velocities):
     0.417 m), every step after 0.5 s: the acceleration the pressure and
     gravity give (the bridge's) against the centred difference of the
     sampled velocities of the steps before and after, (U(t+) - U(t-))/
-    (t+ - t-): within 2.5 % of the largest acceleration there (measured
-    1.1-1.7 %: the difference's O(h^2) error, the convective term, about
-    k a U / a = 2 %, and the points' motion), and within half of what the
-    acceleration of the step before would give (measured 0.30-0.35 of it):
-    an acceleration a step late, as the change of the sampled velocities
-    over the previous step is, fails.
+    (t+ - t-): within 3 % of the largest acceleration there (measured
+    1.1-1.7 % on v1912, 1.4-2.2 % on v2312: the difference's O(h^2)
+    error, the convective term, about k a U / a = 2 %, and the points'
+    motion), and within half of what the acceleration of the step before
+    would give (measured 0.30-0.37 of it): an acceleration a step late,
+    as the change of the sampled velocities over the previous step is,
+    fails.
 Prints what it found; exits non-zero at the first failure.
 """
 import math
@@ -135,7 +136,7 @@ def check_acceleration(wave, line, rows_c, col, rows_f, n, low, high):
                 largest = max(largest, max(map(abs, a)))
     if largest == 0:
         fail(f"{line}: no point in mid-water (0.25 < z < 0.4 m) after 0.5 s")
-    if mid > 0.025 * largest or mid > 0.5 * lagged:
+    if mid > 0.03 * largest or mid > 0.5 * lagged:
         fail(f"{line}: in mid-water the acceleration is {mid:.3g} m/s2 from the centred "
              f"difference of the velocities (largest acceleration {largest:.3g} m/s2; "
              f"the step before's is {lagged:.3g} from it)")

@@ -36,6 +36,7 @@ import json
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -167,13 +168,20 @@ functions
     }}
 }}
 """)
+    base = os.path.join(case, "postProcessing", "probeLine")
+    shutil.rmtree(base, ignore_errors=True)
     out = subprocess.run(
         [solver, "-postProcess", "-dict", "system/probeLine", "-time", time_name],
         cwd=case, capture_output=True, text=True,
     )
     if out.returncode != 0:
         fail(f"{solver} -postProcess (probes) failed:\n{out.stdout[-2000:]}{out.stderr[-2000:]}")
-    path = os.path.join(case, "postProcessing", "probeLine", time_name, "U")
+    # v1912 writes the probes under the time probed, v2312 under the
+    # controlDict's start time: the one folder there is
+    folders = os.listdir(base) if os.path.isdir(base) else []
+    if len(folders) != 1:
+        fail(f"{base}: {len(folders)} folders after probing one time, expected one")
+    path = os.path.join(base, folders[0], "U")
     values = None
     with open(path) as f:
         for line in f:
