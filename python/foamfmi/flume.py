@@ -31,15 +31,16 @@ class FlumeError(ValueError):
     """A run that cannot be read or analysed."""
 
 
-def separate_along(x, z, k, neighbours=1):
+def separate_along(x, z, k, neighbours=2, decay=0.0):
     """Incident and reflected complex amplitudes at each gauge x[i] (sorted)
-    from the complex first-harmonic amplitudes z: the reflected wave from a
-    least-squares fit (harmonics.separate_waves) over the gauge and its
-    `neighbours` nearest gauges each side (at the ends: the nearest
-    2 neighbours + 1 gauges inward), the incident wave the gauge's own
-    amplitude less it (so that an incident wave that decays along the
-    flume is not averaged over the neighbours). Returns two lists of
-    complex amplitudes at the gauges."""
+    from the complex first-harmonic amplitudes z: the reflected wave
+    Z_R exp(i k x) from a least-squares fit (Mansard and Funke 1980, with
+    the incident wave Z_I exp(-(i k + decay) x) decaying by `decay` per
+    metre) over the gauge and its `neighbours` nearest gauges each side
+    (at the ends, as many inward), the incident wave the gauge's own
+    amplitude less the reflected one (so that the incident wave's loss
+    along the flume is the gauges' own). Returns two lists of complex
+    amplitudes at the gauges."""
     n = len(x)
     width = 2 * neighbours + 1
     if n < 2:
@@ -48,8 +49,10 @@ def separate_along(x, z, k, neighbours=1):
     for i in range(n):
         lo = min(max(0, i - neighbours), max(0, n - width))
         sel = list(range(lo, min(n, lo + width)))
-        xs = [x[j] - x[i] for j in sel]
-        zr = harmonics.separate_waves([z[j] for j in sel], xs, k)[1]
+        xs = np.array([x[j] - x[i] for j in sel])
+        a = np.column_stack([np.exp(-(1j * k + decay) * xs), np.exp(1j * k * xs)])
+        zr = complex(np.linalg.lstsq(a, np.array([z[j] for j in sel], dtype=complex),
+                                     rcond=None)[0][1])
         incident.append(z[i] - zr)
         reflected.append(zr)
     return incident, reflected
@@ -88,27 +91,32 @@ def analyse(period, times, eta, t0, t1):
     xs = sorted(eta)
     fits = [harmonics.fit_window(times, eta[x], omega, t0, t1) for x in xs]
     z = [f.amplitudes[0] for f in fits]
-    incident, reflected = separate_along(xs, z, k)
+    # The incident wave's decay: that of the gauges' amplitudes
+    decay = -math.log(1.0 - decay_per_metre(xs, [abs(v) for v in z])) if len(xs) > 1 else 0.0
+    incident, reflected = separate_along(xs, z, k, decay=decay)
     return [{"x": x, "amplitude": abs(f.amplitudes[0]), "incident": abs(zi),
              "reflected": abs(zr), "second": abs(f.amplitudes[1]), "mean": f.mean}
             for x, f, zi, zr in zip(xs, fits, incident, reflected)]
 
 
 def summary(rows, calibrated, x_wp4=-1.5):
-    """The incident wave at the first gauge, at WP_4 and at the last gauge
-    (the section's position) per the calibrated amplitude, and the loss per
-    metre between the first and the last gauge."""
+    """The wave (the first-harmonic amplitude of the elevation) at the
+    first gauge, at WP_4 and at the last gauge (the section's position)
+    per the calibrated amplitude, the loss per metre between the first and
+    the last gauge, and the largest of the local estimates of the reflected
+    wave per the wave there (the gauges' amplitudes differ from the
+    incident wave's by at most that)."""
     first, last = rows[0], rows[-1]
     wp4 = min(rows, key=lambda r: abs(r["x"] - x_wp4))
     if abs(wp4["x"] - x_wp4) > 1e-6:
         raise FlumeError("no gauge at WP_4 (x = %g)" % x_wp4)
     return {"xFirst": first["x"], "xLast": last["x"],
-            "first": first["incident"] / calibrated,
-            "WP4": wp4["incident"] / calibrated,
-            "last": last["incident"] / calibrated,
+            "first": first["amplitude"] / calibrated,
+            "WP4": wp4["amplitude"] / calibrated,
+            "last": last["amplitude"] / calibrated,
             "lossPerMetre": decay_per_metre([r["x"] for r in rows],
-                                            [r["incident"] for r in rows]),
-            "reflection": max(r["reflected"] / r["incident"] for r in rows)}
+                                            [r["amplitude"] for r in rows]),
+            "reflection": max(r["reflected"] / r["amplitude"] for r in rows)}
 
 
 def write_kept(folder, run, rows):
