@@ -33,14 +33,13 @@ class FlumeError(ValueError):
 
 def separate_along(x, z, k, neighbours=2, decay=0.0):
     """Incident and reflected complex amplitudes at each gauge x[i] (sorted)
-    from the complex first-harmonic amplitudes z: the reflected wave
-    Z_R exp(i k x) from a least-squares fit (Mansard and Funke 1980, with
-    the incident wave Z_I exp(-(i k + decay) x) decaying by `decay` per
-    metre) over the gauge and its `neighbours` nearest gauges each side
-    (at the ends, as many inward), the incident wave the gauge's own
-    amplitude less the reflected one (so that the incident wave's loss
-    along the flume is the gauges' own). Returns two lists of complex
-    amplitudes at the gauges."""
+    from the complex first-harmonic amplitudes z: the reflected wave from
+    a least-squares fit (harmonics.separate_waves, the incident wave
+    decaying by `decay` per metre) over the gauge and its `neighbours`
+    nearest gauges each side (at the ends, as many inward), the incident
+    wave the gauge's own amplitude less the reflected one (so that the
+    incident wave's loss along the flume is the gauges' own). Returns two
+    lists of complex amplitudes at the gauges."""
     n = len(x)
     width = 2 * neighbours + 1
     if n < 2:
@@ -49,13 +48,16 @@ def separate_along(x, z, k, neighbours=2, decay=0.0):
     for i in range(n):
         lo = min(max(0, i - neighbours), max(0, n - width))
         sel = list(range(lo, min(n, lo + width)))
-        xs = np.array([x[j] - x[i] for j in sel])
-        a = np.column_stack([np.exp(-(1j * k + decay) * xs), np.exp(1j * k * xs)])
-        zr = complex(np.linalg.lstsq(a, np.array([z[j] for j in sel], dtype=complex),
-                                     rcond=None)[0][1])
+        zr = harmonics.separate_waves([z[j] for j in sel], [x[j] - x[i] for j in sel], k,
+                                      decay)[1]
         incident.append(z[i] - zr)
         reflected.append(zr)
     return incident, reflected
+
+
+def log_slope(x, a):
+    """d ln a / dx of a least-squares fit a = a0 exp(slope x)."""
+    return np.polyfit(np.asarray(x, dtype=float), np.log(np.asarray(a, dtype=float)), 1)[0]
 
 
 def decay_per_metre(x, a):
@@ -63,8 +65,7 @@ def decay_per_metre(x, a):
     of a least-squares fit a = a0 exp(-d x): 1 - exp(-d)."""
     if len(x) < 2:
         return float("nan")
-    slope = np.polyfit(np.asarray(x, dtype=float), np.log(np.asarray(a, dtype=float)), 1)[0]
-    return 1.0 - math.exp(slope)
+    return 1.0 - math.exp(log_slope(x, a))
 
 
 def window(period, x_in, ramp_time, experiment=None):
@@ -92,7 +93,7 @@ def analyse(period, times, eta, t0, t1):
     fits = [harmonics.fit_window(times, eta[x], omega, t0, t1) for x in xs]
     z = [f.amplitudes[0] for f in fits]
     # The incident wave's decay: that of the gauges' amplitudes
-    decay = -math.log(1.0 - decay_per_metre(xs, [abs(v) for v in z])) if len(xs) > 1 else 0.0
+    decay = -log_slope(xs, [abs(v) for v in z]) if len(xs) > 1 else 0.0
     incident, reflected = separate_along(xs, z, k, decay=decay)
     return [{"x": x, "amplitude": abs(f.amplitudes[0]), "incident": abs(zi),
              "reflected": abs(zr), "second": abs(f.amplitudes[1]), "mean": f.mean}

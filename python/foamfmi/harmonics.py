@@ -105,16 +105,18 @@ def incident_reflected(z1, z2, x1, x2, k):
     return zi, zr
 
 
-def separate_waves(z, x, k):
+def separate_waves(z, x, k, decay=0.0):
     """Complex amplitudes at x = 0 of the incident wave Z_I exp(-i k x) and
     the reflected wave Z_R exp(i k x) from the complex amplitudes z_j of
     their sum at two or more gauges x_j: the least-squares solution
     (Mansard and Funke 1980; with two gauges, Goda and Suzuki's exact one).
-    Spacings near a multiple of half a wavelength leave it ill-posed."""
+    Spacings near a multiple of half a wavelength leave it ill-posed.
+    decay: the incident wave's relative loss rate per metre of travel,
+    Z_I exp(-(i k + decay) x) (a flume that damps it; 0: none)."""
     if len(z) != len(x) or len(z) < 2:
         raise ValueError("separate_waves: %d amplitudes at %d gauges (two or more)"
                          % (len(z), len(x)))
     xs = np.asarray(x, dtype=float)
-    a = np.column_stack([np.exp(-1j * k * xs), np.exp(1j * k * xs)])
+    a = np.column_stack([np.exp(-(1j * k + decay) * xs), np.exp(1j * k * xs)])
     c = np.linalg.lstsq(a, np.asarray(z, dtype=complex), rcond=None)[0]
     return complex(c[0]), complex(c[1])

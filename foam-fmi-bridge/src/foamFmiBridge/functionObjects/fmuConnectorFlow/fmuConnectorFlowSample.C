@@ -13,10 +13,30 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::List<Foam::labelList>
+Foam::functionObjects::fmuConnectorFlow::findCells
+(
+    const List<pointField>& points
+) const
+{
+    List<labelList> cells(points.size());
+    forAll(points, i)
+    {
+        cells[i].setSize(points[i].size());
+        forAll(points[i], k)
+        {
+            cells[i][k] = mesh_.findCell(points[i][k]);
+        }
+    }
+    return cells;
+}
+
+
 Foam::List<Foam::vectorField>
 Foam::functionObjects::fmuConnectorFlow::sample
 (
     const List<pointField>& points,
+    const List<labelList>& cells,
     const volVectorField& field,
     vector (incidentWave::*wave)(const point&, scalar) const
 ) const
@@ -35,7 +55,7 @@ Foam::functionObjects::fmuConnectorFlow::sample
         counts[i].setSize(points[i].size(), Zero);
         forAll(points[i], k)
         {
-            const label celli = mesh_.findCell(points[i][k]);
+            const label celli = cells[i][k];
             if (celli >= 0)
             {
                 sums[i][k] = interp->interpolate(points[i][k], celli);
@@ -76,13 +96,19 @@ Foam::functionObjects::fmuConnectorFlow::sampleFlow
     const List<pointField>& points
 ) const
 {
+    // The cell of each point, found once for both fields
+    const List<labelList> cells(findCells(points));
     FixedList<List<vectorField>, 2> flows;
-    flows[0] =
-        sample(points, lookupObject<volVectorField>(UName_), &incidentWave::U);
+    flows[0] = sample
+    (
+        points, cells, lookupObject<volVectorField>(UName_), &incidentWave::U
+    );
     if (acceleration_)
     {
-        flows[1] =
-            sample(points, waterAcceleration()(), &incidentWave::acceleration);
+        flows[1] = sample
+        (
+            points, cells, waterAcceleration()(), &incidentWave::acceleration
+        );
     }
     return flows;
 }
