@@ -118,7 +118,7 @@ Foam::tmp<Foam::volVectorField>
 Foam::functionObjects::fmuConnectorFlow::waterAcceleration() const
 {
     wordList missing;
-    for (const word& field : {"p_rgh", "rho"})
+    for (const word field : {"p_rgh", "rho"})
     {
         if (!foundObject<volScalarField>(field))
         {
