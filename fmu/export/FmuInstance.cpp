@@ -186,12 +186,19 @@ void FmuInstance::computeOutputs()
 void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
                           fmi2Real value[])
 {
-    bool needsOutputs = false, needsDeferred = false;
+    // In one pass without a branch per value (a connector's outputs every
+    // step); a reference to no Real variable is named by realAccess after
+    bool needsOutputs = false, needsDeferred = false, unknown = false;
+    const std::size_t size = realAccess_.size();
+    const RealAccess* const accessOf = realAccess_.data();
     for (std::size_t i = 0; i < n; ++i) {
-        const RealAccess access = realAccess(vr[i]);
-        needsOutputs
-            |= access == RealAccess::output || access == RealAccess::local;
+        const RealAccess a = vr[i] < size ? accessOf[vr[i]] : RealAccess::none;
+        unknown |= a == RealAccess::none;
+        needsOutputs |= a == RealAccess::output || a == RealAccess::local;
         needsDeferred |= vr[i] - deferred_.first < deferred_.size;
+    }
+    for (std::size_t i = 0; unknown && i < n; ++i) {
+        realAccess(vr[i]);
     }
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
@@ -210,9 +217,18 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
                           const fmi2Real value[])
 {
     // Every value reference is checked before any value is set; the
-    // values are then copied in a loop that writes nothing else
-    bool parameters = false;
+    // values are then copied in a loop that writes nothing else. Inputs
+    // alone (a connector's every step) are told in one pass without a
+    // branch per value; otherwise each is checked and the first that
+    // cannot be set is named
+    bool inputsOnly = true;
+    const std::size_t size = realAccess_.size();
+    const RealAccess* const accessOf = realAccess_.data();
     for (std::size_t i = 0; i < n; ++i) {
+        inputsOnly &= vr[i] < size && accessOf[vr[i]] == RealAccess::input;
+    }
+    bool parameters = false;
+    for (std::size_t i = 0; !inputsOnly && i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);
         if (access == RealAccess::input) {
             continue;
