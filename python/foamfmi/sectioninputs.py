@@ -37,9 +37,17 @@ INPUTS = (
           "the offset tests, 59.21-60.88 N/m the two together; the model has their mean",
           "-spring-rate"),
 )
-# The incident wave's amplitude: no run option sets it (the RAOs are per
-# each one's own); its range is the CFD's at WP_4 to the experiment's
-INCIDENT = "incidentAmplitude"
+# The incident wave's amplitude: a run with the generator's height scaled
+# (Allrun -incident-scale S, run.dat's incidentScale) changes it with the
+# mesh and the window kept; the sensitivity is per metre of the incident
+# amplitude each run separates at WP_4 (the RAOs are per each one's own),
+# and its range the CFD's to the experiment's calibrated one
+INCIDENT = "incidentScale"
+
+
+def incident_scale(run):
+    """The generator's height over the wave's (1: the wave's own)."""
+    return float(run.get(INCIDENT, 1.0))
 
 
 def value(run, key):
@@ -51,8 +59,9 @@ def value(run, key):
 
 def changed(run):
     """The keys of the inputs the run does not have at the model's
-    value."""
-    return [i.key for i in INPUTS if abs(value(run, i.key) - i.nominal) > 1e-9 * max(1, i.nominal)]
+    value, INCIDENT last where its generator's height is scaled."""
+    keys = [i.key for i in INPUTS if abs(value(run, i.key) - i.nominal) > 1e-9 * max(1, i.nominal)]
+    return keys + [INCIDENT] if abs(incident_scale(run) - 1.0) > 1e-9 else keys
 
 
 def standard_uncertainty(item):
@@ -69,12 +78,25 @@ def sensitivity(base, variant, key, quantity):
 
 
 def pick_variant(base, variants, key):
-    """Of the runs with input key changed, the one farthest from the
-    base's value (the widest span of the range), or None."""
+    """Of the runs with input key changed (INCIDENT: scaled), the one
+    farthest from the base's value (the widest span of the range), or
+    None."""
     if not variants:
         return None
+    if key == INCIDENT:
+        return max(variants, key=lambda v: abs(incident_scale(v[0]) - 1.0))
     x0 = value(base[0], key)
     return max(variants, key=lambda v: abs(value(v[0], key) - x0))
+
+
+def incident_contribution(base, variant, quantity, calibrated, cfd):
+    """s u of the incident amplitude for quantity: s its change per metre
+    of incident amplitude between the runs (run, r) base and variant
+    (their own incidentAmplitude, separated at WP_4), u uniform over the
+    CFD's amplitude cfd to the experiment's calibrated one (m)."""
+    (_, r0), (_, r1) = base, variant
+    s = (r1[quantity] - r0[quantity]) / (r1["incidentAmplitude"] - r0["incidentAmplitude"])
+    return s * uncertainty.uniform_standard_uncertainty(min(cfd, calibrated), max(cfd, calibrated))
 
 
 def window_range(case, key):

@@ -100,6 +100,7 @@ def sensitivity_runs(runs, case):
     one with the model's inputs as (run, r), or None, and per input key
     the runs with that input alone changed [(run, r)]."""
     base, variants = None, {i.key: [] for i in sectioninputs.INPUTS}
+    variants[sectioninputs.INCIDENT] = []
     for name, run, series, r, exp in runs:
         if (exp is not case or abs(run["meshFactor"] - SENSITIVITY_MESH) > 1e-9
                 or not in_experiment_flume(run)):
@@ -123,8 +124,18 @@ def input_contributions(runs, case, quantity):
         contributions.append(None if variant is None else
                              sectioninputs.sensitivity(base, variant, item.key, quantity)
                              * sectioninputs.standard_uncertainty(item))
-    contributions.append(None)  # the incident amplitude: no run sets it
+    variant = (sectioninputs.pick_variant(base, variants[sectioninputs.INCIDENT],
+                                          sectioninputs.INCIDENT) if base else None)
+    contributions.append(None if variant is None else sectioninputs.incident_contribution(
+        base, variant, quantity, case["amplitude"], incident_amplitude(runs, case, base)))
     return contributions, uncertainty.input_uncertainty(c for c in contributions if c is not None)
+
+
+def incident_amplitude(runs, case, base):
+    """The CFD's incident amplitude of the case (m): its production
+    run's, else that of base (run, r)."""
+    found = production(runs, case)
+    return (found[2] if found else base[1])["incidentAmplitude"]
 
 
 def same_settings(a, b):
@@ -132,7 +143,8 @@ def same_settings(a, b):
     return (a["period"] == b["period"] and a["height"] == b["height"]
             and a["meshFactor"] == b["meshFactor"] and generator(a) == generator(b)
             and all(sectioninputs.value(a, i.key) == sectioninputs.value(b, i.key)
-                    for i in sectioninputs.INPUTS))
+                    for i in sectioninputs.INPUTS)
+            and sectioninputs.incident_scale(a) == sectioninputs.incident_scale(b))
 
 
 def numerical_uncertainty(runs, case, key):

@@ -79,6 +79,10 @@ def read_case(case):
     for key in ("mass", "KG", "springRate"):
         if key in logged:
             run[key] = float(logged[key])
+    # The generator's height over the wave's (Allrun -incident-scale),
+    # logged only when not 1
+    if "incidentScale" in logged:
+        run["incidentScale"] = float(logged["incidentScale"])
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))

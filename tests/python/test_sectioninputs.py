@@ -15,6 +15,24 @@ class SectionInputsTest(unittest.TestCase):
         self.assertEqual(sectioninputs.changed({"KG": 0.108, "guideFriction": 0.5}),
                          ["guideFriction", "KG"])
 
+    def test_incident_scale(self):
+        # A run whose generator's height is scaled changes the incident
+        # amplitude, listed after the section's inputs
+        self.assertEqual(sectioninputs.changed({"incidentScale": 1.0}), [])
+        self.assertEqual(sectioninputs.changed({"incidentScale": 1.22, "mass": 46.8}),
+                         ["mass", "incidentScale"])
+        base = ({}, {"sway": 0.50, "incidentAmplitude": 0.0100})
+        runs = [({"incidentScale": 1.1}, {}), ({"incidentScale": 0.7}, {})]
+        self.assertIs(sectioninputs.pick_variant(base, runs, sectioninputs.INCIDENT), runs[1])
+        # s per metre of the runs' own incident amplitudes: -0.02/0.002 =
+        # -10 /m; u uniform over 10.7-12.0 mm: 0.65e-3/sqrt 3
+        variant = ({"incidentScale": 1.2}, {"sway": 0.48, "incidentAmplitude": 0.0120})
+        c = sectioninputs.incident_contribution(base, variant, "sway", 0.0120, 0.0107)
+        self.assertAlmostEqual(c, -10.0 * 0.65e-3 / 3 ** 0.5, places=12)
+        # the range is the same whichever end is the CFD's
+        self.assertAlmostEqual(
+            sectioninputs.incident_contribution(base, variant, "sway", 0.0107, 0.0120), c, places=15)
+
     def test_sensitivity(self):
         base = ({"mass": 46.2207}, {"heave": 1.5})
         variant = ({"mass": 46.8}, {"heave": 1.4})
