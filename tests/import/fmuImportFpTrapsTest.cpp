@@ -51,6 +51,44 @@ TEST(FpTraps, OverflowInTheFmuIsItsErrorNotSigfpe)
         << "the FMU's overflow flag leaked to the caller";
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+// foam-fmi-bridge masks the x87 traps of OpenFOAM's solver thread for good
+// (OpenFOAM has no long double arithmetic) and leaves its SSE traps: the
+// FMU's long double overflow (overflowStep overflows in long double first)
+// still must not trap, and the caller's x87 mask and SSE traps survive
+TEST(FpTraps, HostWithSseTrapsOnlyStillProtectsTheFmu)
+{
+    const fmuImport::Fmu fmu(fmuPath("overflowStep"));
+    const TrapsEnabled traps;
+    unsigned short control;
+    __asm__ __volatile__("fnstcw %0" : "=m"(control));
+    control |= FE_ALL_EXCEPT;
+    __asm__ __volatile__("fldcw %0" : : "m"(control));
+    unsigned int sse;
+    __asm__ __volatile__("stmxcsr %0" : "=m"(sse));
+    fmuImport::Instance instance(
+        fmu, "overflow",
+        [](const std::string&, int, const std::string&, const std::string&) {});
+    instance.setupExperiment(0.0);
+    instance.enterInitializationMode();
+    instance.exitInitializationMode();
+    fixtures::expectErrorSaying([&] { instance.doStep(0.0, 0.1); },
+                                "y = gain * DBL_MAX overflowed (gain = 10)",
+                                "the overflowing step did not throw");
+    unsigned short controlAfter;
+    __asm__ __volatile__("fnstcw %0" : "=m"(controlAfter));
+    unsigned int sseAfter;
+    __asm__ __volatile__("stmxcsr %0" : "=m"(sseAfter));
+    EXPECT_EQ(controlAfter, control) << "the caller's x87 control word changed";
+    // (MXCSR's exception masks, bits 7-12; its flags may be the caller's
+    // own, such as inexact from formatting the error's message)
+    EXPECT_EQ((sseAfter >> 7) & FE_ALL_EXCEPT, (sse >> 7) & FE_ALL_EXCEPT)
+        << "the caller's SSE traps changed";
+    EXPECT_EQ(std::fetestexcept(FE_OVERFLOW), 0)
+        << "the FMU's overflow flag leaked to the caller";
+}
+#endif
+
 TEST(FpTraps, CallersTrapsAndFlagsSurviveEveryCall)
 {
     const TrapsEnabled traps;

@@ -10,6 +10,7 @@
 #include "debug.H"
 
 #include <cctype>
+#include <cfenv>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -50,6 +51,29 @@ public:
         Foam::messageStream::level = level_;
     }
 };
+
+//- Masks the calling thread's x87 traps for good, its SSE traps left as
+//  they are. OpenFOAM's FOAM_SIGFPE enables the traps of both units, and
+//  OpenFOAM computes in double precision with SSE instructions (it has no
+//  long double arithmetic): its x87 traps guard nothing of its own.
+//  fmuImport::MaskFpTraps masks both units around the FMU calls of every
+//  evaluation, and switching the x87 unit and back (fnstenv, fldenv) is
+//  most of that; with the x87 traps masked it switches the SSE unit alone.
+//  An FMU that computes in long double is still kept from trapping
+void maskX87Traps()
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    // the exception masks are the control word's bits 0-5, in the order
+    // of the FE_ flags
+    unsigned short control;
+    __asm__ __volatile__("fnstcw %0" : "=m"(control));
+    if ((control & FE_ALL_EXCEPT) != FE_ALL_EXCEPT)
+    {
+        control |= FE_ALL_EXCEPT;
+        __asm__ __volatile__("fldcw %0" : : "m"(control));
+    }
+#endif
+}
 
 } // End anonymous namespace
 
@@ -158,6 +182,7 @@ Foam::fmuConnectorCore::fmuConnectorCore
     restoreTime_(startTime)
 {
     file_.expand();
+    maskX87Traps();
 
     // How the importer reports an FMU that crashes, hangs or exits in a
     // call in this process: in OpenFOAM's words, before the solver dies
