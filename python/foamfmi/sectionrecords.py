@@ -56,7 +56,8 @@ def read_source(data_dir):
     """Repository URL and commit named in DIR/SOURCE."""
     path = os.path.join(data_dir, "SOURCE")
     try:
-        text = open(path).read()
+        with open(path) as f:
+            text = f.read()
     except OSError as e:
         raise RecordError("cannot read %s (the data's origin): %s" % (path, e.strerror))
     url = re.search(r"Repository:\s*(\S+)", text)

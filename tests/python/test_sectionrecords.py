@@ -56,8 +56,9 @@ class SectionRecordsTest(unittest.TestCase):
         write_record(path, t, {"WM_Position": 0 * t, "WP_4": 0 * t})
         with self.assertRaisesRegex(RecordError, r"1061\.csv: WM_Position does not start from rest"):
             sectionrecords.analyse_calibration_run(path, 6)
+        with open(os.path.join(self.dir.name, "SOURCE"), "w") as f:
+            f.write("no origin\n")
         with self.assertRaisesRegex(RecordError, r"SOURCE.*'Repository: URL'"):
-            open(os.path.join(self.dir.name, "SOURCE"), "w").write("no origin\n")
             sectionrecords.read_source(self.dir.name)
 
 
