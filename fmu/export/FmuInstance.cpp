@@ -26,6 +26,14 @@ FmuInstance::FmuInstance(std::unique_ptr<Model> model, std::string instanceName,
                                                       : RealAccess::none);
     }
     deferred_ = model_->deferredOutputs();
+    for (std::size_t vr = 0; vr < realAccess_.size(); ++vr) {
+        const RealAccess a = realAccess_[vr];
+        realFlags_.push_back(static_cast<unsigned char>(
+            (a != RealAccess::none ? realVariable : 0)
+            | (a == RealAccess::input ? settableEachStep : 0)
+            | (a == RealAccess::output || a == RealAccess::local ? computed : 0)
+            | (vr - deferred_.first < deferred_.size ? deferredOutput : 0)));
+    }
     startValues();
 }
 
@@ -186,20 +194,22 @@ void FmuInstance::computeOutputs()
 void FmuInstance::getReal(const fmi2ValueReference vr[], std::size_t n,
                           fmi2Real value[])
 {
-    // In one pass without a branch per value (a connector's outputs every
-    // step); a reference to no Real variable is named by realAccess after
-    bool needsOutputs = false, needsDeferred = false, unknown = false;
-    const std::size_t size = realAccess_.size();
-    const RealAccess* const accessOf = realAccess_.data();
+    // In one pass through the references' flags without a branch per value
+    // (a connector's outputs every step); a reference to no Real variable
+    // is named by realAccess after
+    unsigned char any = 0, every = realVariable;
+    const std::size_t size = realFlags_.size();
+    const unsigned char* const flags = realFlags_.data();
     for (std::size_t i = 0; i < n; ++i) {
-        const RealAccess a = vr[i] < size ? accessOf[vr[i]] : RealAccess::none;
-        unknown |= a == RealAccess::none;
-        needsOutputs |= a == RealAccess::output || a == RealAccess::local;
-        needsDeferred |= vr[i] - deferred_.first < deferred_.size;
+        const unsigned char f = vr[i] < size ? flags[vr[i]] : 0;
+        any |= f;
+        every &= f;
     }
-    for (std::size_t i = 0; unknown && i < n; ++i) {
+    for (std::size_t i = 0; every == 0 && i < n; ++i) {
         realAccess(vr[i]);
     }
+    const bool needsOutputs = (any & computed) != 0;
+    const bool needsDeferred = (any & deferredOutput) != 0;
     if (needsOutputs && !outputsValid_) {
         computeOutputs();
     }
@@ -221,12 +231,13 @@ void FmuInstance::setReal(const fmi2ValueReference vr[], std::size_t n,
     // alone (a connector's every step) are told in one pass without a
     // branch per value; otherwise each is checked and the first that
     // cannot be set is named
-    bool inputsOnly = true;
-    const std::size_t size = realAccess_.size();
-    const RealAccess* const accessOf = realAccess_.data();
+    unsigned char every = settableEachStep;
+    const std::size_t size = realFlags_.size();
+    const unsigned char* const flags = realFlags_.data();
     for (std::size_t i = 0; i < n; ++i) {
-        inputsOnly &= vr[i] < size && accessOf[vr[i]] == RealAccess::input;
+        every &= vr[i] < size ? flags[vr[i]] : 0;
     }
+    const bool inputsOnly = every != 0;
     bool parameters = false;
     for (std::size_t i = 0; !inputsOnly && i < n; ++i) {
         const RealAccess access = realAccess(vr[i]);

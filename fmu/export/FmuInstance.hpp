@@ -134,6 +134,15 @@ private:
     std::vector<double> values_;
     //- Per value reference: the RealAccess of its variable
     std::vector<RealAccess> realAccess_;
+    //- The same as flags that fmi2GetReal and fmi2SetReal combine in one
+    //  pass over the references they are given
+    enum RealFlag : unsigned char {
+        realVariable = 1,
+        settableEachStep = 2, // an input
+        computed = 4, // an output or local
+        deferredOutput = 8 // in Model::deferredOutputs
+    };
+    std::vector<unsigned char> realFlags_;
     std::vector<std::unique_ptr<SavedState>> savedStates_;
 };
 

@@ -140,19 +140,29 @@ void Foam::fmuConnectorCore::setInputs
 )
 {
     // In the order of inputRefs_ (lookupVariables); OpenFOAM's tensor
-    // stores its components row by row, as A.R[i,j] does
+    // stores its components row by row, as A.R[i,j] does. An FMU declares
+    // all of a term's components or none (fmuImport::ConnectorVariables);
+    // each is copied on its own, as a library call (memmove) for each
+    // block would cost more than the copy
     double* value = inputValues_.data();
-    auto add = [&value](const std::vector<unsigned int>& refs, const double* v)
+    auto add = [&value](const std::vector<unsigned int>& refs, const auto& x)
     {
-        value = std::copy(v, v + refs.size(), value);
+        using Type = std::decay_t<decltype(x)>;
+        if (!refs.empty())
+        {
+            for (direction c = 0; c < pTraits<Type>::nComponents; ++c)
+            {
+                *value++ = x[c];
+            }
+        }
     };
 
     for (const auto& body : {std::make_pair(&A_, &A), std::make_pair(&B_, &B)})
     {
-        add(body.first->r, body.second->r.cdata());
-        add(body.first->R, body.second->R.cdata());
-        add(body.first->v, body.second->v.cdata());
-        add(body.first->omega, body.second->omega.cdata());
+        add(body.first->r, body.second->r);
+        add(body.first->R, body.second->R);
+        add(body.first->v, body.second->v);
+        add(body.first->omega, body.second->omega);
     }
 
     if (!inputRefs_.empty())
