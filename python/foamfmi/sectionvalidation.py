@@ -55,7 +55,7 @@ def openfoam(run):
 
 def nominal(run):
     """Whether the run has the model's inputs (no guide friction, the
-    model's mass, KG and springs)."""
+    model's mass, KG and springs, the wave's own height generated)."""
     return not sectioninputs.changed(run)
 
 
@@ -120,22 +120,27 @@ def input_contributions(runs, case, quantity):
     base, variants = sensitivity_runs(runs, case)
     contributions = []
     for item in sectioninputs.INPUTS:
-        variant = sectioninputs.pick_variant(base, variants[item.key], item.key) if base else None
+        variant = chosen_variant(base, variants, item.key)
         contributions.append(None if variant is None else
                              sectioninputs.sensitivity(base, variant, item.key, quantity)
                              * sectioninputs.standard_uncertainty(item))
-    variant = (sectioninputs.pick_variant(base, variants[sectioninputs.INCIDENT],
-                                          sectioninputs.INCIDENT) if base else None)
+    variant = chosen_variant(base, variants, sectioninputs.INCIDENT)
     contributions.append(None if variant is None else sectioninputs.incident_contribution(
-        base, variant, quantity, case["amplitude"], incident_amplitude(runs, case, base)))
+        base, variant, quantity, *incident_range(runs, case, base)))
     return contributions, uncertainty.input_uncertainty(c for c in contributions if c is not None)
 
 
-def incident_amplitude(runs, case, base):
-    """The CFD's incident amplitude of the case (m): its production
-    run's, else that of base (run, r)."""
+def chosen_variant(base, variants, key):
+    """Of sensitivity_runs' base and variants, the run of input key the
+    sensitivity takes (sectioninputs.pick_variant), or None."""
+    return sectioninputs.pick_variant(base, variants[key], key) if base else None
+
+
+def incident_range(runs, case, base):
+    """The incident amplitude's range (m): the experiment's calibrated one
+    and the CFD's (its production run's, else that of base (run, r))."""
     found = production(runs, case)
-    return (found[2] if found else base[1])["incidentAmplitude"]
+    return case["amplitude"], (found[2] if found else base[1])["incidentAmplitude"]
 
 
 def same_settings(a, b):
