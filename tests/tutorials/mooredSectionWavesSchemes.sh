@@ -1,0 +1,73 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# tutorials/mooredSectionWaves' scheme switches, -ddt and -momentum-scheme,
+# on the flume alone (-empty-flume, the generator 2.5 m before the
+# section's position, to 0.1 s: the mesh, the waves' start and the
+# solver's first steps). Checks:
+#  - a value that is not a scheme is refused before anything is run, the
+#    message naming the switch and the value;
+#  - the schemes given are those the case's system/fvSchemes holds
+#    (foamDictionary reads them through its #includeIfPresent), and the
+#    solver runs to the end time with them (Allrun saying that a run
+#    ending before the window measures no wave);
+#  - a scheme OpenFOAM does not have stops the solver with its own error
+#    naming it (the solver reads the momentum's scheme from the file
+#    Allrun writes), and Allrun with it, saying so.
+# Needs the project's OpenFOAM environment (etc/bashrc). Exits non-zero on
+# the first failure.
+#------------------------------------------------------------------------------
+. "$(dirname "$0")/tutorialTestFunctions"
+
+endTime=0.1
+flume="-empty-flume -period 0.802 -generator-distance 2.5 -end-time $endTime"
+ddt="CrankNicolson 0.9"
+momentum="Gauss linearUpwindV grad(U)"
+
+makeWorkDir
+case=$workDir/mooredSectionWaves
+cp -r "$FOAMFMI_DIR/tutorials/mooredSectionWaves" "$case" || fail "cannot copy the case"
+"$case/Allclean" > /dev/null 2>&1 || fail "Allclean failed"
+
+# refuseSwitch SWITCH VALUE: Allrun stops before the mesh, naming both
+refuseSwitch()
+{
+    if "$case/Allrun" $flume "$1" "$2" > "$case/log.refused" 2>&1
+    then
+        fail "Allrun $1 '$2' ran; expected a refusal"
+    fi
+    grep -q -- "$1: .*$2" "$case/log.refused" \
+        || fail "Allrun $1 '$2': the message does not name the switch and the value: $(tail -n 1 "$case/log.refused")"
+    [ ! -f "$case/log.blockMesh" ] || fail "Allrun $1 '$2': meshed before refusing"
+    pass "Allrun $1 '$2' refused: $(tail -n 1 "$case/log.refused")"
+}
+refuseSwitch -momentum-scheme "linearUpwindV grad(U)"
+refuseSwitch -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind"
+refuseSwitch -ddt "CrankNicolson 2"
+
+runTutorial mooredSectionWaves "$case" $flume -ddt "$ddt" -momentum-scheme "$momentum"
+# (the flume alone's time step is not cut to end at the end time)
+grep -q '^End' "$(solverLog "$case")" || fail "the solver did not finish ($(solverLog "$case"))"
+pass "the solver ran to t = $(sed -n 's/^Time = //p' "$(solverLog "$case")" | tail -n 1) s"
+grep -q "before the window .*no wave measured" "$case/log.Allrun" \
+    || fail "Allrun did not say that a run ending before the window measures no wave"
+read -r _ ddtRead < <(foamDictionary -case "$case" -entry ddtSchemes/default \
+    "$case/system/fvSchemes" 2>/dev/null | tr -d ';')
+[ "$ddtRead" = "$ddt" ] || fail "ddtSchemes/default is '$ddtRead', expected '$ddt'"
+read -r _ momentumRead < <(foamDictionary -case "$case" -entry 'divSchemes/div(rhoPhi,U)' \
+    "$case/system/fvSchemes" 2>/dev/null | tr -d ';')
+[ "$momentumRead" = "$momentum" ] \
+    || fail "divSchemes/div(rhoPhi,U) is '$momentumRead', expected '$momentum'"
+pass "the case's schemes: ddt $ddtRead, div(rhoPhi,U) $momentumRead"
+
+# A scheme OpenFOAM does not have: the solver's own error names it
+"$case/Allclean" > /dev/null 2>&1 || fail "Allclean failed"
+if "$case/Allrun" $flume -momentum-scheme "Gauss noSuchScheme" > "$case/log.Allrun" 2>&1
+then
+    fail "Allrun -momentum-scheme 'Gauss noSuchScheme' ran to the end"
+fi
+log=$(solverLog "$case")
+grep -q "noSuchScheme" "$log" \
+    || fail "the solver did not stop on the unknown scheme ($log: $(tail -n 3 "$log"))"
+grep -q "stopped at t = .*see log" "$case/log.Allrun" \
+    || fail "Allrun did not say that the solver stopped ($(tail -n 1 "$case/log.Allrun"))"
+pass "an unknown momentum scheme stops the solver: $(grep -m 1 -i "unknown" "$log"); Allrun: $(tail -n 1 "$case/log.Allrun")"
