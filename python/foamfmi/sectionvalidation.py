@@ -59,6 +59,24 @@ def nominal(run):
     return not sectioninputs.changed(run)
 
 
+def flume(run):
+    """The run's flume switches {key: value} (sectionwaves.FLUME_KEYS; empty:
+    the case's own flume)."""
+    return {key: run[key] for key in sectionwaves.FLUME_KEYS if key in run}
+
+
+def flume_label(run):
+    """The run's flume switches in words, "the case's" without any."""
+    words = {"cellsPerHeight": "%g cells a wave height", "cellsPerWavelength":
+             "%g cells a wavelength", "stepsPerPeriod": "T/%g", "ddt": "%s",
+             "momentumScheme": "%s", "inletAbsorption": "inlet absorption %s"}
+    switches = flume(run)
+    if not switches:
+        return "the case's"
+    return ", ".join(words[key] % (str(value).replace("_", " ") if isinstance(value, str)
+                                   else value) for key, value in switches.items())
+
+
 def generator(run):
     """The generator's distance before the section (m)."""
     return sectionwaves.SECTION_X - run["xIn"]
@@ -143,9 +161,11 @@ def incident_range(runs, case, base):
     return case["amplitude"], (found[2] if found else base[1])["incidentAmplitude"]
 
 
-def same_settings(a, b):
-    """Whether runs a and b differ in nothing but their OpenFOAM."""
-    return (a["period"] == b["period"] and a["height"] == b["height"]
+def same_settings(a, b, same_flume=True):
+    """Whether runs a and b differ in nothing but their OpenFOAM (and,
+    same_flume False, their flume's switches)."""
+    return ((not same_flume or flume(a) == flume(b))
+            and a["period"] == b["period"] and a["height"] == b["height"]
             and a["meshFactor"] == b["meshFactor"] and generator(a) == generator(b)
             and all(sectioninputs.value(a, i.key) == sectioninputs.value(b, i.key)
                     for i in sectioninputs.INPUTS)

@@ -39,6 +39,12 @@ SECTION_X = 0.0  # m, the section's centre (system/blockMeshDict)
 DEFAULT_PERIODS = 6  # window of a wave the experiment did not measure
 EXPERIMENT_GENERATOR = 7.0  # m, the experiment's wavemaker before the section
 SAMPLES_PER_PERIOD = 32
+# Allrun's flume switches as log.runSettings names them, logged only when
+# given (-cells-per-height, -cells-per-wavelength, -steps-per-period,
+# -ddt, -momentum-scheme, -inlet-absorption; a scheme's spaces as _):
+# without them, the case's own flume
+FLUME_KEYS = ("cellsPerHeight", "cellsPerWavelength", "stepsPerPeriod", "ddt",
+              "momentumScheme", "inletAbsorption")
 SPRINGS = {"tensionWeather": "springWeather", "tensionLee": "springLee"}
 # Gauges: their key in constant/runSettings by their name in series.dat
 GAUGES = {"separation2": "gaugeSeparation2", "separation1": "gaugeSeparation1",
@@ -83,6 +89,13 @@ def read_case(case):
     # logged only when not 1
     if "incidentScale" in logged:
         run["incidentScale"] = float(logged["incidentScale"])
+    for key in FLUME_KEYS:
+        if key in logged:
+            value = logged[key]
+            try:
+                run[key] = float(value)
+            except ValueError:
+                run[key] = value
     for name, key in GAUGES.items():
         run["gauge." + name] = dictionary.read_scalar(settings_path, key)
     run["cells"] = postprocessing.mesh_cells(os.path.join(case, "log.checkMesh"))

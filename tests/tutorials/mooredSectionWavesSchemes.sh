@@ -12,7 +12,10 @@
 #    ending before the window measures no wave);
 #  - a scheme OpenFOAM does not have stops the solver with its own error
 #    naming it (the solver reads the momentum's scheme from the file
-#    Allrun writes), and Allrun with it, saying so.
+#    Allrun writes), and Allrun with it, saying so;
+#  - raoSweep hands the flume's switches to Allrun whole (a scheme of
+#    several words, with a semicolon), in a folder named by them, and
+#    stops, keeping nothing, when Allrun refuses one.
 # Needs the project's OpenFOAM environment (etc/bashrc). Exits non-zero on
 # the first failure.
 #------------------------------------------------------------------------------
@@ -43,6 +46,25 @@ refuseSwitch()
 refuseSwitch -momentum-scheme "linearUpwindV grad(U)"
 refuseSwitch -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind"
 refuseSwitch -ddt "CrankNicolson 2"
+
+# refuseInSweep SWITCH VALUE FOLDER: raoSweep's Allrun refuses it in
+# sweep/FOLDER, and raoSweep stops without keeping a run
+refuseInSweep()
+{
+    if "$case/raoSweep" -mesh-factor 0.5 "$1" "$2" 0.802 > "$case/log.raoSweep" 2>&1
+    then
+        fail "raoSweep $1 '$2' ran; expected a refusal"
+    fi
+    grep -q -- "$1: .*$2" "$case/sweep/$3/log.Allrun" \
+        || fail "raoSweep $1 '$2': sweep/$3/log.Allrun does not refuse it: $(tail -n 1 "$case/sweep/$3/log.Allrun" 2>&1)"
+    grep -q "period 0.802 s failed" "$case/log.raoSweep" \
+        || fail "raoSweep $1 '$2' did not stop on the refusal: $(tail -n 1 "$case/log.raoSweep")"
+    [ ! -d "$case/results/$3" ] || fail "raoSweep $1 '$2': kept results/$3"
+    pass "raoSweep $1 '$2' reached Allrun in sweep/$3, refused: $(tail -n 1 "$case/sweep/$3/log.Allrun")"
+}
+refuseInSweep -ddt "CrankNicolson 2" F0.5_H0.024_T0.802_ddtCrankNicolson2
+refuseInSweep -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind" \
+    "F0.5_H0.024_T0.802_divlinear;divphi,alphaGaussupwind"
 
 runTutorial mooredSectionWaves "$case" $flume -ddt "$ddt" -momentum-scheme "$momentum"
 # (the flume alone's time step is not cut to end at the end time)
