@@ -120,3 +120,55 @@ def separate_waves(z, x, k, decay=0.0):
     a = np.column_stack([np.exp(-(1j * k + decay) * xs), np.exp(1j * k * xs)])
     c = np.linalg.lstsq(a, np.asarray(z, dtype=complex), rcond=None)[0]
     return complex(c[0]), complex(c[1])
+
+
+FreeDecay = collections.namedtuple("FreeDecay", "period damping_ratio amplitude mean rms samples")
+FreeDecay.__doc__ = """A damped oscillation fitted to a record: period, the
+damped period 2 pi/omega_d (s); damping_ratio, zeta = sigma/omega_n with
+omega_n^2 = omega_d^2 + sigma^2; amplitude at the window's start; mean, the
+level it decays to; rms of the residual; samples fitted."""
+
+
+def free_decay(times, values, t0, t1):
+    """Least-squares fit of y = m + exp(-sigma t')(a cos(omega_d t') +
+    b sin(omega_d t')), t' = t - t0, over the samples in [t0, t1]: one
+    damped mode (a free decay). The nonlinear pair (sigma, omega_d) by
+    scipy.optimize.least_squares with m, a and b solved linearly at each
+    (variable projection), started from the up-crossing period of the
+    window's first half and a damping ratio of 0.05, and from half and
+    twice that period; FitError with fewer than 10 samples or no two
+    up-crossings."""
+    from scipy.optimize import least_squares
+
+    t, y = in_window(times, values, t0, t1)
+    s = t - t0
+
+    def linear(p):
+        sigma, omega = p
+        e = np.exp(-sigma * s)
+        a = np.column_stack([np.ones_like(s), e * np.cos(omega * s), e * np.sin(omega * s)])
+        return a, np.linalg.lstsq(a, y, rcond=None)[0]
+
+    def residual(p):
+        a, c = linear(p)
+        return a @ c - y
+
+    guess, intervals = upcrossing_period(t[s <= 0.5 * (t1 - t0)], y[s <= 0.5 * (t1 - t0)], t0)
+    if intervals == 0:
+        guess, intervals = upcrossing_period(t, y, t0)
+    if intervals == 0:
+        raise FitError("no two up-crossings in %g-%g s: no oscillation to fit" % (t0, t1))
+    best = None
+    for start in (guess, 0.5 * guess, 2 * guess):
+        omega = 2 * math.pi / start
+        r = least_squares(residual, [0.05 * omega, omega],
+                          bounds=([-np.inf, 0.1 * omega], [np.inf, 10 * omega]),
+                          xtol=1e-12, ftol=1e-12, gtol=1e-12)
+        if best is None or r.cost < best.cost:
+            best = r
+    sigma, omega = best.x
+    _, c = linear(best.x)
+    return FreeDecay(period=2 * math.pi / omega,
+                     damping_ratio=sigma / math.hypot(sigma, omega),
+                     amplitude=math.hypot(c[1], c[2]), mean=float(c[0]),
+                     rms=math.sqrt(2 * best.cost / len(t)), samples=len(t))
