@@ -44,7 +44,7 @@ SAMPLES_PER_PERIOD = 32
 # -ddt, -momentum-scheme, -inlet-absorption; a scheme's spaces as _):
 # without them, the case's own flume
 FLUME_KEYS = ("cellsPerHeight", "cellsPerWavelength", "stepsPerPeriod", "ddt",
-              "momentumScheme", "inletAbsorption")
+              "momentumDdt", "momentumScheme", "inletAbsorption")
 SPRINGS = {"tensionWeather": "springWeather", "tensionLee": "springLee"}
 # Gauges: their key in constant/runSettings by their name in series.dat
 GAUGES = {"separation2": "gaugeSeparation2", "separation1": "gaugeSeparation1",
@@ -89,6 +89,9 @@ def read_case(case):
     # logged only when not 1
     if "incidentScale" in logged:
         run["incidentScale"] = float(logged["incidentScale"])
+    # OpenFOAM's own coupling (Allrun -coupling stock), logged only then
+    if "coupling" in logged:
+        run["coupling"] = logged["coupling"]
     for key in FLUME_KEYS:
         if key in logged:
             value = logged[key]

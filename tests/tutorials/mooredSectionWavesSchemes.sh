@@ -1,9 +1,9 @@
 #!/bin/bash
 #------------------------------------------------------------------------------
-# tutorials/mooredSectionWaves' scheme switches, -ddt and -momentum-scheme,
-# on the flume alone (-empty-flume, the generator 2.5 m before the
-# section's position, to 0.1 s: the mesh, the waves' start and the
-# solver's first steps). Checks:
+# tutorials/mooredSectionWaves' scheme switches, -ddt, -momentum-ddt and
+# -momentum-scheme, on the flume alone (-empty-flume, the generator 2.5 m
+# before the section's position, to 0.1 s: the mesh, the waves' start and
+# the solver's first steps), and -coupling stock. Checks:
 #  - a value that is not a scheme is refused before anything is run, the
 #    message naming the switch and the value;
 #  - the schemes given are those the case's system/fvSchemes holds
@@ -13,6 +13,9 @@
 #  - a scheme OpenFOAM does not have stops the solver with its own error
 #    naming it (the solver reads the momentum's scheme from the file
 #    Allrun writes), and Allrun with it, saying so;
+#  - -coupling stock runs the section under OpenFOAM's own rigidBodyMotion
+#    (the solver selects it, with the case's bodies and restraints, and
+#    steps to 0.02 s);
 #  - raoSweep hands the flume's switches to Allrun whole (a scheme of
 #    several words, with a semicolon), in a folder named by them, and
 #    stops, keeping nothing, when Allrun refuses one.
@@ -24,6 +27,7 @@
 endTime=0.1
 flume="-empty-flume -period 0.802 -generator-distance 2.5 -end-time $endTime"
 ddt="CrankNicolson 0.9"
+momentumDdt="CrankNicolson 0.7"
 momentum="Gauss linearUpwindV grad(U)"
 
 makeWorkDir
@@ -46,6 +50,8 @@ refuseSwitch()
 refuseSwitch -momentum-scheme "linearUpwindV grad(U)"
 refuseSwitch -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind"
 refuseSwitch -ddt "CrankNicolson 2"
+refuseSwitch -momentum-ddt "CrankNicolson 0.9 0.5"
+refuseSwitch -coupling "rigidBodyMotion"
 
 # refuseInSweep SWITCH VALUE FOLDER: raoSweep's Allrun refuses it in
 # sweep/FOLDER, and raoSweep stops without keeping a run
@@ -66,7 +72,8 @@ refuseInSweep -ddt "CrankNicolson 2" F0.5_H0.024_T0.802_ddtCrankNicolson2
 refuseInSweep -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind" \
     "F0.5_H0.024_T0.802_divlinear;divphi,alphaGaussupwind"
 
-runTutorial mooredSectionWaves "$case" $flume -ddt "$ddt" -momentum-scheme "$momentum"
+runTutorial mooredSectionWaves "$case" $flume -ddt "$ddt" -momentum-ddt "$momentumDdt" \
+    -momentum-scheme "$momentum"
 # (the flume alone's time step is not cut to end at the end time)
 grep -q '^End' "$(solverLog "$case")" || fail "the solver did not finish ($(solverLog "$case"))"
 pass "the solver ran to t = $(sed -n 's/^Time = //p' "$(solverLog "$case")" | tail -n 1) s"
@@ -75,11 +82,15 @@ grep -q "before the window .*no wave measured" "$case/log.Allrun" \
 read -r _ ddtRead < <(foamDictionary -case "$case" -entry ddtSchemes/default \
     "$case/system/fvSchemes" 2>/dev/null | tr -d ';')
 [ "$ddtRead" = "$ddt" ] || fail "ddtSchemes/default is '$ddtRead', expected '$ddt'"
+read -r _ momentumDdtRead < <(foamDictionary -case "$case" -entry 'ddtSchemes/ddt(rho,U)' \
+    "$case/system/fvSchemes" 2>/dev/null | tr -d ';')
+[ "$momentumDdtRead" = "$momentumDdt" ] \
+    || fail "ddtSchemes/ddt(rho,U) is '$momentumDdtRead', expected '$momentumDdt'"
 read -r _ momentumRead < <(foamDictionary -case "$case" -entry 'divSchemes/div(rhoPhi,U)' \
     "$case/system/fvSchemes" 2>/dev/null | tr -d ';')
 [ "$momentumRead" = "$momentum" ] \
     || fail "divSchemes/div(rhoPhi,U) is '$momentumRead', expected '$momentum'"
-pass "the case's schemes: ddt $ddtRead, div(rhoPhi,U) $momentumRead"
+pass "the case's schemes: ddt $ddtRead, ddt(rho,U) $momentumDdtRead, div(rhoPhi,U) $momentumRead"
 
 # A scheme OpenFOAM does not have: the solver's own error names it
 "$case/Allclean" > /dev/null 2>&1 || fail "Allclean failed"
@@ -93,3 +104,17 @@ grep -q "noSuchScheme" "$log" \
 grep -q "stopped at t = .*see log" "$case/log.Allrun" \
     || fail "Allrun did not say that the solver stopped ($(tail -n 1 "$case/log.Allrun"))"
 pass "an unknown momentum scheme stops the solver: $(grep -m 1 -i "unknown" "$log"); Allrun: $(tail -n 1 "$case/log.Allrun")"
+
+# OpenFOAM's own coupling for the section (-coupling stock): the solver
+# selects rigidBodyMotion, reads the case's restraints and steps
+stock=$workDir/stock
+runTutorial mooredSectionWaves "$stock" -period 0.802 -generator-distance 2.5 \
+    -end-time 0.02 -no-plot -coupling stock
+log=$(solverLog "$stock")
+grep -q "Selecting motion solver: rigidBodyMotion" "$log" \
+    || fail "-coupling stock: the solver did not select rigidBodyMotion ($log)"
+grep -q "Selecting motion solver: addedMassRigidBodyMotion" "$log" \
+    && fail "-coupling stock: the added-mass coupling was selected too ($log)"
+grep -q "springWeather" "$log" || fail "-coupling stock: no restraint springWeather in $log"
+grep -q '^End' "$log" || fail "-coupling stock: the solver did not finish ($log)"
+pass "-coupling stock: rigidBodyMotion with the case's restraints ran to t = $(sed -n 's/^Time = //p' "$log" | tail -n 1) s"
