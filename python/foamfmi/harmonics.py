@@ -138,7 +138,11 @@ def free_decay(times, values, t0, t1):
     window's first half and a damping ratio of 0.05, and from half and
     twice that period; FitError with fewer than 10 samples or no two
     up-crossings."""
-    from scipy.optimize import least_squares
+    try:
+        from scipy.optimize import least_squares
+    except ImportError as err:
+        raise ImportError("scipy not found for a free decay's fit: install Debian's "
+                          "python3-scipy (bin/setup -tests does)") from err
 
     t, y = in_window(times, values, t0, t1)
     s = t - t0
