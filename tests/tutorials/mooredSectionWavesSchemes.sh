@@ -18,7 +18,8 @@
 #    steps to 0.02 s);
 #  - raoSweep hands the flume's switches to Allrun whole (a scheme of
 #    several words, with a semicolon), in a folder named by them, and
-#    stops, keeping nothing, when Allrun refuses one.
+#    stops, keeping nothing, when Allrun refuses one;
+#  - heaveDecay refuses a variant it cannot name before running any.
 # Needs the project's OpenFOAM environment (etc/bashrc). Exits non-zero on
 # the first failure.
 #------------------------------------------------------------------------------
@@ -71,6 +72,21 @@ refuseInSweep()
 refuseInSweep -ddt "CrankNicolson 2" F0.5_H0.024_T0.802_ddtCrankNicolson2
 refuseInSweep -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind" \
     "F0.5_H0.024_T0.802_divlinear;divphi,alphaGaussupwind"
+
+# refuseInDecay VARIANT MESSAGE: heaveDecay stops before any run, saying so
+refuseInDecay()
+{
+    if "$case/heaveDecay" '' "$1" > "$case/log.heaveDecay" 2>&1
+    then
+        fail "heaveDecay '$1' ran; expected a refusal"
+    fi
+    grep -q -- "$2" "$case/log.heaveDecay" \
+        || fail "heaveDecay '$1': not refused with '$2': $(tail -n 1 "$case/log.heaveDecay")"
+    [ ! -d "$case/sweep/heaveDecay" ] || fail "heaveDecay '$1': ran a variant before refusing"
+    pass "heaveDecay '$1' refused: $(tail -n 1 "$case/log.heaveDecay")"
+}
+refuseInDecay "-ddt Euler -momentum-ddt" "-momentum-ddt needs a value"
+refuseInDecay "-guide-friction 0.5" "-guide-friction: not a flume switch"
 
 runTutorial mooredSectionWaves "$case" $flume -ddt "$ddt" -momentum-ddt "$momentumDdt" \
     -momentum-scheme "$momentum"
