@@ -66,6 +66,16 @@ class SectionWavesError(ValueError):
 
 # ---------------------------------------------------------------- a run --
 
+def ddt_label(run):
+    """A run's time scheme in words (run.dat's ddt, the case's
+    CrankNicolson 0.5 when not logged), and the momentum's when Allrun
+    -momentum-ddt gave it its own."""
+    ddt = str(run.get("ddt", "CrankNicolson_0.5")).replace("_", " ")
+    if run.get("momentumDdt"):
+        ddt += "; ddt(rho,U) " + str(run["momentumDdt"]).replace("_", " ")
+    return ddt
+
+
 def read_case(case):
     """A finished (or stopped) run of the tutorial: (run, series) as
     write_run writes them."""
