@@ -41,10 +41,11 @@ EXPERIMENT_GENERATOR = 7.0  # m, the experiment's wavemaker before the section
 SAMPLES_PER_PERIOD = 32
 # Allrun's flume switches as log.runSettings names them, logged only when
 # given (-cells-per-height, -cells-per-wavelength, -steps-per-period,
-# -ddt, -momentum-scheme, -inlet-absorption; a scheme's spaces as _):
-# without them, the case's own flume
+# -ddt, -momentum-ddt, -momentum-scheme, -phase-advection,
+# -inlet-absorption; a scheme's spaces as _): without them, the case's own
+# flume
 FLUME_KEYS = ("cellsPerHeight", "cellsPerWavelength", "stepsPerPeriod", "ddt",
-              "momentumDdt", "momentumScheme", "inletAbsorption")
+              "momentumDdt", "momentumScheme", "phaseAdvection", "inletAbsorption")
 SPRINGS = {"tensionWeather": "springWeather", "tensionLee": "springLee"}
 # Gauges: their key in constant/runSettings by their name in series.dat
 GAUGES = {"separation2": "gaugeSeparation2", "separation1": "gaugeSeparation1",
@@ -68,11 +69,14 @@ class SectionWavesError(ValueError):
 
 def ddt_label(run):
     """A run's time scheme in words (run.dat's ddt, the case's
-    CrankNicolson 0.5 when not logged), and the momentum's when Allrun
-    -momentum-ddt gave it its own."""
+    CrankNicolson 0.5 when not logged), the momentum's when Allrun
+    -momentum-ddt gave it its own, and the phase fraction's isoAdvector
+    (Allrun -phase-advection), which takes no time scheme."""
     ddt = str(run.get("ddt", "CrankNicolson_0.5")).replace("_", " ")
     if run.get("momentumDdt"):
         ddt += "; ddt(rho,U) " + str(run["momentumDdt"]).replace("_", " ")
+    if run.get("phaseAdvection", "MULES") != "MULES":
+        ddt += "; alpha by " + str(run["phaseAdvection"])
     return ddt
 
 

@@ -3,7 +3,8 @@
 # tutorials/mooredSectionWaves' scheme switches, -ddt, -momentum-ddt and
 # -momentum-scheme, on the flume alone (-empty-flume, the generator 2.5 m
 # before the section's position, to 0.1 s: the mesh, the waves' start and
-# the solver's first steps), and -coupling stock. Checks:
+# the solver's first steps), -coupling stock and -phase-advection
+# isoAdvector. Checks:
 #  - a value that is not a scheme is refused before anything is run, the
 #    message naming the switch and the value;
 #  - the schemes given are those the case's system/fvSchemes holds
@@ -16,6 +17,10 @@
 #  - -coupling stock runs the section under OpenFOAM's own rigidBodyMotion
 #    (the solver selects it, with the case's bodies and restraints, and
 #    steps to 0.02 s);
+#  - -phase-advection isoAdvector runs the section, on its moving mesh, by
+#    interIsoFoamAliasSafe (the case's controlDict names it through
+#    system/application), with the isoAdvector settings in the case's
+#    system/fvSolution, to 0.02 s;
 #  - raoSweep hands the flume's switches to Allrun whole (a scheme of
 #    several words, with a semicolon), in a folder named by them, and
 #    stops, keeping nothing, when Allrun refuses one;
@@ -53,6 +58,7 @@ refuseSwitch -momentum-scheme "Gauss linear; div(phi,alpha) Gauss upwind"
 refuseSwitch -ddt "CrankNicolson 2"
 refuseSwitch -momentum-ddt "CrankNicolson 0.9 0.5"
 refuseSwitch -coupling "rigidBodyMotion"
+refuseSwitch -phase-advection "isoadvector"
 
 # refuseInSweep SWITCH VALUE FOLDER: raoSweep's Allrun refuses it in
 # sweep/FOLDER, and raoSweep stops without keeping a run
@@ -134,3 +140,25 @@ grep -q "Selecting motion solver: addedMassRigidBodyMotion" "$log" \
 grep -q "springWeather" "$log" || fail "-coupling stock: no restraint springWeather in $log"
 grep -q '^End' "$log" || fail "-coupling stock: the solver did not finish ($log)"
 pass "-coupling stock: rigidBodyMotion with the case's restraints ran to t = $(sed -n 's/^Time = //p' "$log" | tail -n 1) s"
+
+# The phase fraction by isoAdvector (-phase-advection isoAdvector): the
+# solver the case's controlDict then names runs the section's moving mesh
+iso=$workDir/isoAdvector
+runTutorial mooredSectionWaves "$iso" -period 0.802 -generator-distance 2.5 \
+    -end-time 0.02 -no-plot -phase-advection isoAdvector
+read -r _ application < <(foamDictionary -case "$iso" -entry application \
+    "$iso/system/controlDict" 2>/dev/null | tr -d ';')
+[ "$application" = interIsoFoamAliasSafe ] \
+    || fail "-phase-advection isoAdvector: controlDict's application is '$application'"
+read -r _ isoFaceTol < <(foamDictionary -case "$iso" -entry 'solvers/alpha.water.*/isoFaceTol' \
+    "$iso/system/fvSolution" 2>/dev/null | tr -d ';')
+[ "$isoFaceTol" = 1e-10 ] \
+    || fail "-phase-advection isoAdvector: fvSolution's isoFaceTol is '$isoFaceTol'"
+log=$(solverLog "$iso")
+[ "${log##*/}" = log.interIsoFoamAliasSafe ] \
+    || fail "-phase-advection isoAdvector: the solver's log is $log"
+grep -q "isoAdvection: time consumption" "$log" \
+    || fail "-phase-advection isoAdvector: the solver did not advect by isoAdvector ($log)"
+grep -q '^End' "$log" || fail "-phase-advection isoAdvector: the solver did not finish ($log)"
+pass "-phase-advection isoAdvector: interIsoFoamAliasSafe (isoFaceTol $isoFaceTol) ran the" \
+    "section to t = $(sed -n 's/^Time = //p' "$log" | tail -n 1) s"
