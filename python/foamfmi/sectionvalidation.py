@@ -69,7 +69,8 @@ def flume_label(run):
     """The run's flume switches in words, "the case's" without any."""
     words = {"cellsPerHeight": "%g cells a wave height", "cellsPerWavelength":
              "%g cells a wavelength", "stepsPerPeriod": "T/%g", "ddt": "%s",
-             "momentumDdt": "the momentum's %s", "momentumScheme": "%s", "inletAbsorption": "inlet absorption %s"}
+             "momentumDdt": "the momentum's %s", "momentumScheme": "%s",
+             "phaseAdvection": "the phase fraction by %s", "inletAbsorption": "inlet absorption %s"}
     switches = flume(run)
     if not switches:
         return "the case's"

@@ -19,7 +19,8 @@
 #
 # The sources, beside the repository (or in $FOAMFMI_OPENFOAM_TARBALL):
 #   v2312  ../shared/openfoam-v2312/openfoam-v2312-src.tar.xz (of2312/: src
-#          with most lnInclude folders, the solver sources, wmake)
+#          with most lnInclude folders, the solver sources, wmake; a solver
+#          it lacks, interIsoFoam, from OpenFOAM-v2312.tar.xz beside it)
 #   v2506  ../shared/openfoam-v2506/OpenFOAM-v2506.tar.xz (OpenFOAM-v2506/:
 #          the whole release, no lnInclude folders)
 # unpacked into the build folder given as the argument, never into the
@@ -77,6 +78,19 @@ then
     [ -f "$tree/etc/bashrc" ] || fail "$tarball has no $treeName/etc/bashrc"
     touch "$stamp"
 fi
+
+# The solver sources the project rebuilds that the tree lacks (v2312's
+# compile-check subset has no interIsoFoam): from the whole release beside
+# the tarball, OpenFOAM-<version>.tar.xz
+release="$(dirname "$tarball")/OpenFOAM-$version.tar.xz"
+for dir in $(sed -n 's|.*$(WM_PROJECT_DIR)/\(applications/solvers/[^ ]*\).*|\1|p' \
+    $(find "$top/foam-fmi-bridge" -path '*/Make/options') | sort -u)
+do
+    [ -d "$tree/$dir" ] && continue
+    [ -f "$release" ] || fail "$version has no $dir, and $release is not there to take it from"
+    tar -xJf "$release" -C "$tree" --strip-components=1 "OpenFOAM-$version/$dir" \
+        || fail "cannot unpack $dir from $release"
+done
 
 # inOpenFOAM SCRIPT: run SCRIPT in a shell with that OpenFOAM's environment
 # and nothing of the host's OpenFOAM (OpenFOAM's etc/bashrc reads the
