@@ -79,12 +79,15 @@ then
     touch "$stamp"
 fi
 
+# The project's Make/options, which name the OpenFOAM folders it needs
+makeOptions=$(find "$top/foam-fmi-bridge" -path '*/Make/options')
+
 # The solver sources the project rebuilds that the tree lacks (v2312's
 # compile-check subset has no interIsoFoam): from the whole release beside
 # the tarball, OpenFOAM-<version>.tar.xz
 release="$(dirname "$tarball")/OpenFOAM-$version.tar.xz"
 for dir in $(sed -n 's|.*$(WM_PROJECT_DIR)/\(applications/solvers/[^ ]*\).*|\1|p' \
-    $(find "$top/foam-fmi-bridge" -path '*/Make/options') | sort -u)
+    $makeOptions | sort -u)
 do
     [ -d "$tree/$dir" ] && continue
     [ -f "$release" ] || fail "$version has no $dir, and $release is not there to take it from"
@@ -117,8 +120,7 @@ then
     touch "$tree/.lnInclude"
 fi
 for dir in OpenFOAM OSspecific/POSIX \
-    $(sed -n 's|.*-I$(LIB_SRC)/\([^ ]*\)/lnInclude.*|\1|p' \
-          $(find "$top/foam-fmi-bridge" -path '*/Make/options') | sort -u)
+    $(sed -n 's|.*-I$(LIB_SRC)/\([^ ]*\)/lnInclude.*|\1|p' $makeOptions | sort -u)
 do
     [ -d "$tree/src/$dir/lnInclude" ] && continue
     [ -d "$tree/src/$dir" ] || fail "$version has no src/$dir"
